@@ -1,0 +1,47 @@
+# Helpers shared by the top-level CMakeLists.txt.
+
+# cic_layer(NAME DIR): a static library from every .cpp below DIR.
+# Globbing keeps one layer = one folder; CONFIGURE_DEPENDS re-globs on build.
+function(cic_layer name dir)
+  file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${dir}/*.cpp)
+  if(NOT sources)
+    set(sources ${PROJECT_SOURCE_DIR}/cmake/empty.cpp)
+  endif()
+  add_library(${name} STATIC ${sources})
+  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/include ${PROJECT_SOURCE_DIR})
+  set_property(GLOBAL APPEND PROPERTY CIC_LAYERS ${name})
+endfunction()
+
+# cic_optional_feature(OPTION DESCRIPTION PACKAGE pkg [COMPONENTS ...]):
+# AUTO turns the option ON when the package is found and says what was left out.
+function(cic_optional_feature opt desc)
+  cmake_parse_arguments(A "" "PACKAGE" "COMPONENTS" ${ARGN})
+  set(wanted ${${opt}})
+  if(wanted STREQUAL "OFF")
+    set_property(GLOBAL APPEND PROPERTY CIC_SUMMARY "  ${desc}: off (${opt}=OFF)")
+    return()
+  endif()
+  if(A_COMPONENTS)
+    find_package(${A_PACKAGE} QUIET COMPONENTS ${A_COMPONENTS})
+  else()
+    find_package(${A_PACKAGE} QUIET)
+  endif()
+  string(TOUPPER ${A_PACKAGE} upper)
+  if(${A_PACKAGE}_FOUND OR ${upper}_FOUND)
+    set(${opt} ON PARENT_SCOPE)
+    set_property(GLOBAL APPEND PROPERTY CIC_SUMMARY "  ${desc}: ON")
+  elseif(wanted STREQUAL "ON")
+    message(FATAL_ERROR "${opt}=ON but ${A_PACKAGE} was not found (run scripts/install-deps.sh)")
+  else()
+    set(${opt} OFF PARENT_SCOPE)
+    set_property(GLOBAL APPEND PROPERTY CIC_SUMMARY "  ${desc}: LEFT OUT (${A_PACKAGE} not found; run scripts/install-deps.sh)")
+  endif()
+endfunction()
+
+function(cic_print_summary)
+  get_property(lines GLOBAL PROPERTY CIC_SUMMARY)
+  message(STATUS "cic ${PROJECT_VERSION} optional parts:")
+  foreach(l IN LISTS lines)
+    message(STATUS "${l}")
+  endforeach()
+endfunction()

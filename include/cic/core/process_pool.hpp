@@ -1,0 +1,58 @@
+#pragma once
+// Evaluation in separate worker processes, talking over pipes.
+// Separate processes are how cic gets bit-identical physics in parallel: ODE's
+// QuickStep uses process-global random state (see README, "Determinism").
+// A worker that crashes or hangs past the timeout is replaced; its job is
+// retried, then reported failed. The run goes on.
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cic {
+
+struct PoolOptions {
+    int workers = 1;                    // >= 1
+    std::vector<std::string> argv;      // command that starts one worker (argv[0] = executable path)
+    double timeout_seconds = 120.0;     // per job
+    int retries = 1;                    // extra attempts after a crash or hang
+};
+
+struct JobResult {
+    bool ok = false;
+    std::string output;                 // the worker's reply when ok
+    std::string error;                  // why not, when !ok
+    int attempts = 0;
+};
+
+class ProcessPool {
+public:
+    explicit ProcessPool(PoolOptions options);   // starts the workers; throws std::runtime_error
+    ~ProcessPool();                              // ends them
+    ProcessPool(const ProcessPool&) = delete;
+    ProcessPool& operator=(const ProcessPool&) = delete;
+
+    // Runs every job, results in job order. Jobs are handed to free workers in order.
+    std::vector<JobResult> run(const std::vector<std::string>& jobs);
+
+    int workers() const;
+    int restarts() const;                        // workers replaced so far
+    std::vector<int> pids() const;               // for tests (kill one)
+
+private:
+    struct Impl;
+    Impl* impl_;
+};
+
+// The worker's side: reads framed jobs from in_fd, answers each with handler(job)
+// on out_fd, until end of input. A handler exception is sent back as a job error.
+// Returns the process exit code to use.
+int serve_worker(int in_fd, int out_fd, const std::function<std::string(const std::string&)>& handler);
+
+// Runs fn(i) for i in [0, n) on `threads` threads (1 = inline). Exceptions are
+// rethrown (the first by index). For pure, deterministic per-item work.
+void parallel_for(std::size_t n, int threads, const std::function<void(std::size_t)>& fn);
+
+// Number of hardware threads, at least 1.
+int hardware_threads();
+
+} // namespace cic

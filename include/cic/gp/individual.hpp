@@ -1,0 +1,57 @@
+#pragma once
+// Individual and Population (thesis 6.3.1-6.3.2): plain data that the
+// population modifiers read and change.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cic/tree/tree.hpp"
+
+namespace cic::gp {
+
+// Whatever an experiment decodes a genotype into (e.g. a substrate network).
+struct Phenotype {
+    virtual ~Phenotype() = default;
+};
+
+struct Individual {
+    std::uint64_t id = 0;                    // unique within a run
+    tree::Forest genotype;
+    std::shared_ptr<const Phenotype> phenotype;  // optional, not saved
+    double fitness = 0.0;
+    bool evaluated = false;
+    std::vector<std::uint64_t> parents;      // ids; empty for generated ones
+    std::map<std::string, std::string> attributes;  // e.g. "illegal" -> "1"
+
+    bool has(const std::string& key) const { return attributes.count(key) != 0; }
+    std::size_t size() const { return tree::total_size(genotype); }
+    int depth() const { return tree::max_depth(genotype); }
+};
+
+using IndividualPtr = std::shared_ptr<Individual>;
+
+class Population {
+public:
+    std::vector<IndividualPtr> individuals;
+    int iteration = 0;                       // the generation number
+
+    auto begin() { return individuals.begin(); }
+    auto end() { return individuals.end(); }
+    auto begin() const { return individuals.begin(); }
+    auto end() const { return individuals.end(); }
+    std::size_t size() const { return individuals.size(); }
+    bool empty() const { return individuals.empty(); }
+    Individual& operator[](std::size_t i) { return *individuals[i]; }
+    const Individual& operator[](std::size_t i) const { return *individuals[i]; }
+
+    // Best by fitness; ties go to the smaller genotype, then the lower id.
+    const Individual& best() const;
+};
+
+// Order used everywhere for "better": higher fitness, then smaller size, then lower id.
+bool better(const Individual& a, const Individual& b);
+
+} // namespace cic::gp

@@ -1,0 +1,33 @@
+#pragma once
+// Variation and selection (thesis 5.1.2-5.1.4, 7.3.1). Forest operators apply
+// the tree operator tree by tree.
+#include <span>
+#include <utility>
+
+#include "cic/core/rng.hpp"
+#include "cic/gp/config.hpp"
+#include "cic/gp/generators.hpp"
+#include "cic/gp/individual.hpp"
+
+namespace cic::gp {
+
+// Picks a node: functions with probability 0.9 when the tree has any (Koza), else uniform.
+std::size_t pick_node(Rng& rng, const tree::Tree& t);
+
+// Subtree mutation: a random node is replaced by a new Grow subtree of depth <= max_sub_depth.
+tree::Tree mutate(Rng& rng, const tree::Tree& t, const TreeGenerator& gen, int max_sub_depth);
+tree::Forest mutate(Rng& rng, const tree::Forest& f, const TreeGenerator& gen, int max_sub_depth);
+
+// One-point subtree crossover: swaps random subtrees; returns both children.
+std::pair<tree::Tree, tree::Tree> crossover(Rng& rng, const tree::Tree& a, const tree::Tree& b);
+std::pair<tree::Forest, tree::Forest> crossover(Rng& rng, const tree::Forest& a, const tree::Forest& b);
+
+// Tournament of k with lexicographic parsimony (on equal fitness the smaller
+// genotype wins). Returns an index into pop. Throws on k < 1 or empty pop.
+std::size_t tournament(Rng& rng, std::span<const IndividualPtr> pop, int k, bool parsimony);
+// Roulette wheel. Fitness is shifted by (1e-12 - min fitness) when any is <= 0,
+// so the worst keeps a tiny chance and negative fitness works (documented).
+std::size_t roulette(Rng& rng, std::span<const IndividualPtr> pop);
+std::size_t select(Rng& rng, std::span<const IndividualPtr> pop, const GpConfig& cfg);
+
+} // namespace cic::gp

@@ -1,0 +1,53 @@
+#pragma once
+// The complete, typed settings of one run: the plain config structs of every
+// layer plus the experiment and control sections. Read, written, schema'd and
+// documented from one table (settings_table.hpp).
+#include <cstdint>
+#include <string>
+
+#include "cic/gp/config.hpp"
+#include "cic/nn/config.hpp"
+#include "cic/sim/config.hpp"
+#include "experiments/symreg/config.hpp"
+
+namespace cic::io {
+
+enum class ExperimentType { Symreg, HyperGP };
+
+struct ExperimentConfig {
+    ExperimentType type = ExperimentType::Symreg;
+    std::uint64_t seed = 1;
+    std::string output_directory = "runs";
+    int workers = 0;                 // 0 = one per core
+    int checkpoint_interval = 1;     // generations between population files
+    double worker_timeout = 120.0;   // s before a hung worker is replaced
+    std::string name;                // run name; output folder is output_directory/name-NNN
+};
+
+struct ControlConfig {
+    int maximum_iterations = 50;
+    double minimum_fitness = 50.0;
+    std::string population_load_from;    // populationXmlLoadFrom
+    bool plot = false;                   // useMatlabPlot -> our gnuplot output
+    bool autonomous = true;              // isAutonomousExperiment; 0 shows the best at the end
+};
+
+struct RobotConfig {
+    int robot_type = 1;                  // 0, 1, 2 (R0, R1, R2)
+    std::string robot_file;              // overrides robot_type when set
+    bool generate_povray = false;        // generatePovrayFiles
+};
+
+struct Settings {
+    ExperimentConfig experiment;
+    gp::GpConfig gp;
+    gp::BloatConfig bloat;
+    sim::SimConfig sim;
+    RobotConfig robot;
+    ControlConfig control;
+    nn::NeuralConfig neural;
+    symreg::SymregConfig symreg;
+    std::string source_file;             // where they were read from (empty = defaults)
+};
+
+} // namespace cic::io

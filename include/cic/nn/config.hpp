@@ -1,0 +1,36 @@
+#pragma once
+// Plain settings of the substrate, network and neural controller.
+#include <string>
+#include <vector>
+
+namespace cic::nn {
+
+// Synapse types of thesis fig. 6.8. IH and HO act at once; HH, OO and OH one step later.
+enum class SynapseType { InputHidden = 0, HiddenOutput = 1, HiddenHidden = 2, OutputOutput = 3, OutputHidden = 4 };
+inline constexpr int kSynapseTypes = 5;
+
+enum class WeightRule { Raw, Scaled };          // raw CPPF value, or SharpNEAT-style rescale to +-max_weight
+enum class NeuronModel { Tanh, Integrating };   // thesis eq. 7.2-7.3
+enum class OscillationPenalty { None, Frequency, CommandChange };
+
+struct NeuralConfig {
+    double threshold = 0.2;                 // synopsisThreshold: |w| < threshold -> no synapse
+    bool middle_legs = false;               // useMiddleLegs (robot choice; kept here as in the thesis)
+    int sample_average_count = 1;           // sampleAverageCount
+    std::vector<bool> synapse_enabled = {true, true, true, true, true};   // by SynapseType
+    // Forest map: tree index per synapse type (used when the genotype has > 1 tree).
+    // Default for 1 tree: all 0. Default for n trees: type i -> tree (i mod n).
+    std::vector<int> forest_map;            // empty = default
+    WeightRule weight_rule = WeightRule::Raw;
+    double max_weight = 3.0;                // for Scaled
+    NeuronModel neuron = NeuronModel::Tanh;
+    bool bias_input = false;
+    bool clock_inputs = false;              // sin/cos clock inputs
+    double clock_period = 1.0;              // s
+    bool extra_cppf_inputs = false;         // layer index and distance as extra CPPF variables
+    OscillationPenalty penalty = OscillationPenalty::None;
+    double penalty_max_frequency = 2.0;     // Hz, for Frequency
+    double penalty_weight = 1.0;            // for CommandChange
+};
+
+} // namespace cic::nn

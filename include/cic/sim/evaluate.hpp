@@ -1,0 +1,39 @@
+#pragma once
+// One evaluation: build a world for the robot, run the controller from
+// sample_from to sample_to, and compute fitness (thesis eq. 7.1).
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cic/sim/config.hpp"
+#include "cic/sim/controller.hpp"
+#include "cic/sim/recording.hpp"
+#include "cic/sim/robot.hpp"
+
+namespace cic::sim {
+
+struct EvalOptions {
+    double record_fps = 0.0;        // > 0: record frames at this rate
+    bool record_trace = false;      // record a TraceRow per control step
+};
+
+struct EvalResult {
+    double fitness = 0.0;           // |t_p - s_p| + (t_z - s_z), or failure_fitness
+    bool failed = false;            // physics blow-up
+    std::string failure;            // why, when failed
+    std::array<double, 3> start{};  // centre position at delayed_start
+    std::array<double, 3> end{};    // centre position at sample_to
+    double simulated_seconds = 0.0;
+    long steps = 0;                 // physics steps taken
+    std::optional<Recording> recording;
+    std::vector<TraceRow> trace;
+};
+
+// Deterministic: resets ODE's global random state (dRandSetSeed) before
+// building the world, and the world uses its own self-threaded implementation.
+// Throws std::invalid_argument for invalid config (e.g. step <= 0).
+EvalResult evaluate(const RobotSpec& robot, Controller& controller, const SimConfig& cfg,
+                    const EvalOptions& options = {});
+
+} // namespace cic::sim

@@ -1,0 +1,3 @@
+#include "cic/app/cli.hpp"
+
+int main(int argc, char** argv) { return cic::app::main(argc, argv); }
