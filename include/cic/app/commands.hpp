@@ -1,0 +1,24 @@
+#pragma once
+// Each subcommand lives in its own file and registers itself on the CLI11 app.
+// The callback set on the subcommand stores the exit code in `exit_code`.
+#include <CLI/CLI.hpp>
+
+namespace cic::app {
+
+struct CommandContext {
+    int exit_code = 0;
+    bool quiet = false;
+    bool verbose = false;
+};
+
+void add_settings_command(CLI::App& app, CommandContext& ctx);   // cmd_settings.cpp
+void add_simulate_command(CLI::App& app, CommandContext& ctx);   // cmd_simulate.cpp
+void add_worker_command(CLI::App& app, CommandContext& ctx);     // cmd_worker.cpp
+void add_render_command(CLI::App& app, CommandContext& ctx);     // cmd_render.cpp
+void add_plot_command(CLI::App& app, CommandContext& ctx);       // cmd_plot.cpp
+void add_trace_command(CLI::App& app, CommandContext& ctx);      // cmd_trace.cpp
+#ifdef CIC_HAVE_VIEWER
+void add_view_command(CLI::App& app, CommandContext& ctx);       // src/viz/cmd_view.cpp
+#endif
+
+} // namespace cic::app

@@ -1,0 +1,6 @@
+// TEMPORARY placeholder so the binary links while the real command is written.
+#include "cic/app/commands.hpp"
+
+namespace cic::app {
+void add_trace_command(CLI::App&, CommandContext&) {}
+} // namespace cic::app
