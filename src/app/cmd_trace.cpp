@@ -1,6 +1,52 @@
-// TEMPORARY placeholder so the binary links while the real command is written.
+// `cic trace`: per control step raw outputs, commands, angles and centre of a replayed individual.
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+
+#include "cic/app/command_guard.hpp"
 #include "cic/app/commands.hpp"
+#include "cic/app/plot.hpp"
+#include "cic/app/preset_replay.hpp"
+#include "cic/app/trace_csv.hpp"
 
 namespace cic::app {
-void add_trace_command(CLI::App&, CommandContext&) {}
+
+void add_trace_command(CLI::App& app, CommandContext& ctx) {
+    struct Options {
+        ReplaySource source;
+        std::string out = "trace.csv";
+        std::string plot;
+    };
+    auto opts = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand(
+        "trace", "Write the network trace of an individual's replay as CSV "
+                 "(t, out_<joint>, cmd_<joint>, angle_<joint>, cx, cy, cz)");
+    add_replay_options(*cmd, opts->source);
+    cmd->add_option("--out", opts->out, "CSV file to write")->capture_default_str();
+    cmd->add_option("--plot", opts->plot, "also draw it into this .svg or .png (like cic plot --trace)");
+    cmd->callback([opts, &ctx] {
+        run_guarded(ctx, "trace", [&] {
+            const auto items = load_replay(opts->source, 1, 0.0, true);
+            const ReplayItem& item = items.at(0);
+            if (item.trace.empty()) throw std::runtime_error("the replay recorded no trace rows");
+            // Without raw outputs (a controller that does not report them) the commands stand in.
+            std::vector<std::vector<double>> raw = item.raw_outputs;
+            if (raw.empty())
+                for (const auto& row : item.trace) raw.push_back(row.desired);
+            write_trace_csv(opts->out, make_trace(item.trace, raw), joint_names_of(item));
+            if (!ctx.quiet)
+                std::cerr << fmt::format("{}: fitness {:.6g}; wrote {} rows to {}\n", item.label,
+                                         item.replayed_fitness, item.trace.size(), opts->out);
+            if (!opts->plot.empty()) {
+                TracePlotOptions plot;
+                plot.title = item.label;
+                plot_trace(opts->out, opts->plot, plot);
+                if (!ctx.quiet) std::cerr << "plotted " << opts->plot << '\n';
+            }
+            return 0;
+        });
+    });
+}
+
 } // namespace cic::app

@@ -1,6 +1,29 @@
-// TEMPORARY placeholder so the binary links while the real command is written.
+// `cic worker --settings FILE`: serves evaluation jobs on stdin/stdout for a
+// ProcessPool in the parent process (framed, see core/process_pool.hpp).
+#include <unistd.h>
+
 #include "cic/app/commands.hpp"
+#include "cic/app/worker_jobs.hpp"
+#include "cic/core/process_pool.hpp"
 
 namespace cic::app {
-void add_worker_command(CLI::App&, CommandContext&) {}
+
+void add_worker_command(CLI::App& app, CommandContext& ctx) {
+    auto context = std::make_shared<WorkerContext>();
+    CLI::App* cmd = app.add_subcommand("worker", "Serve evaluation jobs on stdin/stdout (started by cic itself)");
+    cmd->add_option("--settings", context->settings_file, "Settings file of the run");
+    cmd->group("");   // internal: hidden from --help
+    cmd->callback([context, &ctx] {
+        // Frames go to the original stdout; anything else printed to stdout
+        // (by a library, say) goes to stderr instead of corrupting the stream.
+        const int out = ::dup(1);
+        ::dup2(2, 1);
+        const auto kinds = make_worker_job_kinds(*context);
+        ctx.exit_code = serve_worker(0, out, [&kinds](const std::string& job) {
+            return dispatch_worker_job(kinds, job);
+        });
+        ::close(out);
+    });
+}
+
 } // namespace cic::app

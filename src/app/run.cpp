@@ -1,10 +1,122 @@
-// TEMPORARY placeholder: the evolution loop lands here (lead engineer).
+// The main job: settings -> experiment -> evolution loop, with statistics,
+// checkpoints, progress and Ctrl-C handling around it.
 #include "cic/app/run.hpp"
 
-#include <stdexcept>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "cic/core/error.hpp"
+#include "cic/core/process_pool.hpp"
+#include "cic/io/population_xml.hpp"
+#include "cic/io/stats_csv.hpp"
+#include "cic/io/xml.hpp"
+#include "experiments/experiment.hpp"
 
 namespace cic::app {
-int run_experiment(const io::Settings&, const RunOptions&) {
-    throw std::logic_error("run_experiment: not built yet");
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+
+extern "C" void on_sigint(int) {
+    g_interrupted.store(true);
+    std::signal(SIGINT, SIG_DFL);   // a second Ctrl-C ends the process at once
 }
+
+// Restores the previous SIGINT handler when the run ends.
+struct SigintGuard {
+    using Handler = void (*)(int);
+    Handler previous;
+    SigintGuard() : previous(std::signal(SIGINT, on_sigint)) { g_interrupted = false; }
+    ~SigintGuard() { std::signal(SIGINT, previous); }
+};
+
+std::string population_name(int generation) { return fmt::format("gen-{:04d}.xml", generation); }
+
+} // namespace
+
+int run_experiment(const io::Settings& s, const RunOptions& opt) {
+    namespace fs = std::filesystem;
+    const fs::path base_dir = s.source_file.empty() ? fs::current_path() : fs::path(s.source_file).parent_path();
+    const int workers = s.experiment.workers > 0 ? s.experiment.workers : hardware_threads();
+
+    std::ofstream log(opt.run_dir / "run.log", std::ios::app);
+    auto say = [&](const std::string& line, bool always = false) {
+        log << line << '\n' << std::flush;
+        if (always || !opt.quiet) std::fprintf(stdout, "%s\n", line.c_str()), std::fflush(stdout);
+    };
+
+    const tree::PrimitiveSet ps(s.gp.primitives);
+    experiments::Context ctx{s, base_dir, opt.run_dir / "settings.xml", opt.worker_executable, workers};
+    auto experiment = experiments::make_experiment(ctx);
+
+    io::PopulationFile header = io::describe(s);
+    gp::EvolutionState state;
+    state.seed = s.experiment.seed;
+    state.rng = Rng(s.experiment.seed);
+    std::optional<gp::Population> start;
+    if (!s.control.population_load_from.empty()) {
+        fs::path from = s.control.population_load_from;
+        if (from.is_relative() && !fs::exists(from)) from = base_dir / from;
+        io::PopulationFile loaded = io::load_population(from);
+        io::check_compatible(loaded, s, from.string());
+        if (loaded.settings_digest != header.settings_digest)
+            say(fmt::format("note: {} was made with other settings (digest {} vs {}); continuing with these settings",
+                            from.string(), loaded.settings_digest, header.settings_digest));
+        state = loaded.state;   // the saved RNG state: a resume continues the same run
+        start = std::move(loaded.population);
+        say(fmt::format("resuming from {} at generation {} (seed {})", from.string(), start->iteration, state.seed));
+    }
+
+    say(fmt::format("cic {}: {} experiment, seed {}, {} worker{}, output {}", CIC_VERSION,
+                    s.experiment.type == io::ExperimentType::HyperGP ? "hypergp" : "symreg", state.seed, workers,
+                    workers == 1 ? "" : "s", opt.run_dir.string()));
+
+    io::StatsWriter stats(opt.run_dir / "stats.csv");
+    fs::create_directories(opt.run_dir / "populations");
+
+    gp::StopConditions stop{s.control.maximum_iterations, s.control.minimum_fitness};
+    gp::EvolutionHooks hooks;
+    hooks.on_generation = [&](const gp::GenerationRecord& r) {
+        stats.write(r);
+        say(fmt::format("gen {:>4}/{}  best {:.6g}  mean {:.6g}  depth {:.2f}/{}  size {:.1f}  limit {}  evals {}  {:.1f}s",
+                        r.generation, r.max_generations - 1, r.best, r.mean, r.mean_depth, r.max_depth, r.mean_size,
+                        r.limit, r.evaluations, r.wall_seconds));
+    };
+    hooks.on_checkpoint = [&](const gp::Population& pop, const gp::EvolutionState& st, bool last) {
+        const int interval = std::max(1, s.experiment.checkpoint_interval);
+        if (!last && pop.iteration % interval != 0) return;
+        header.population = pop;
+        header.state = st;
+        const std::string text = io::to_xml(header);
+        io::xml::write_file_atomically(opt.run_dir / "populations" / population_name(pop.iteration), text);
+        io::xml::write_file_atomically(opt.run_dir / "population.xml", text);
+    };
+    SigintGuard sigint;
+    hooks.stop_requested = &g_interrupted;
+
+    auto result = gp::evolve(s.gp, s.bloat, stop, ps, experiment->evaluator(), state, std::move(start), hooks);
+
+    const gp::Individual& best = result.population.best();
+    const std::string summary = fmt::format(
+        "stopped: {} at generation {}\nbest: id {} fitness {:.17g} depth {} size {} {}\nevaluations: {}\n"
+        "best tree{}: {}\n",
+        gp::to_string(result.reason), result.population.iteration, best.id, best.fitness, best.depth(), best.size(),
+        experiment->describe(best), result.state.evaluations, best.genotype.size() > 1 ? "s" : "",
+        [&] {
+            std::string t;
+            for (const auto& tr : best.genotype) t += (t.empty() ? "" : " | ") + tr.to_string();
+            return t;
+        }());
+    io::xml::write_file_atomically(opt.run_dir / "summary.txt", summary);
+    say(summary, true);
+    if (result.reason == gp::StopReason::Interrupted) {
+        say("interrupted: population saved to " + (opt.run_dir / "population.xml").string(), true);
+        return 130;
+    }
+    return 0;
+}
+
 } // namespace cic::app

@@ -28,6 +28,9 @@ Rng Rng::stream(std::uint64_t seed, std::uint64_t a, std::uint64_t b) {
     return Rng(mix64(mix64(seed ^ mix64(a + 0x632be59bd9b4e019ULL)) ^ mix64(b + 0x8cb92ba72f3d8dd7ULL)));
 }
 
+// Lemire's method needs a 128-bit product; __extension__ keeps -Wpedantic quiet.
+__extension__ typedef unsigned __int128 u128;
+
 static inline std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
 
 std::uint64_t Rng::next() {
@@ -49,12 +52,12 @@ double Rng::uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
 std::uint64_t Rng::below(std::uint64_t n) {
     if (n == 0) throw std::invalid_argument("Rng::below: n must be positive");
     // Lemire's nearly-divisionless method.
-    unsigned __int128 m = static_cast<unsigned __int128>(next()) * n;
+    u128 m = static_cast<u128>(next()) * n;
     auto low = static_cast<std::uint64_t>(m);
     if (low < n) {
         const std::uint64_t threshold = (0 - n) % n;
         while (low < threshold) {
-            m = static_cast<unsigned __int128>(next()) * n;
+            m = static_cast<u128>(next()) * n;
             low = static_cast<std::uint64_t>(m);
         }
     }

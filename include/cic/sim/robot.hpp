@@ -4,6 +4,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace cic::sim {
@@ -27,6 +28,13 @@ struct Module {
     std::string name;                     // optional label ("leg0.hip")
 };
 
+// What is wrong with a robot: the module at fault (-1 = the robot as a whole)
+// and a one-line message. Lets file readers point at the module's line.
+struct RobotProblem {
+    int module = -1;
+    std::string message;
+};
+
 struct RobotSpec {
     std::string name;
     std::vector<Module> modules;
@@ -42,6 +50,9 @@ struct RobotSpec {
     // not a tree rooted at the centre), centre out of range or attached,
     // preferred axis not X or Y, no modules.
     void validate() const;
+
+    // The first problem validate() would report, or nothing when valid.
+    std::optional<RobotProblem> find_problem() const;
 };
 
 Cell neighbour(Cell c, Dir d);

@@ -1,0 +1,33 @@
+#pragma once
+// What the run loop needs from an experiment: an evaluator for genotypes and a
+// way to describe results. Experiments are chosen by <Experiment><type>.
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "cic/gp/evolution.hpp"
+#include "cic/io/settings.hpp"
+
+namespace cic::experiments {
+
+struct Context {
+    const io::Settings& settings;
+    std::filesystem::path base_dir;          // relative paths in settings resolve against this
+    std::filesystem::path settings_file;     // effective settings (worker processes read it)
+    std::string worker_executable;           // the cic binary, for worker processes
+    int workers = 1;                         // resolved (>= 1)
+};
+
+class Experiment {
+public:
+    virtual ~Experiment() = default;
+    virtual gp::Evaluator& evaluator() = 0;
+    // One line about an individual for logs and summary.txt (e.g. hits).
+    virtual std::string describe(const gp::Individual& ind) const = 0;
+    // Whether the best individual solved the task (symreg: every point a hit).
+    virtual bool success(const gp::Individual&) const { return false; }
+};
+
+std::unique_ptr<Experiment> make_experiment(const Context& ctx);
+
+} // namespace cic::experiments

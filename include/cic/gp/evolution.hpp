@@ -1,0 +1,155 @@
+#pragma once
+// The generational loop (thesis fig. 5.2) as a chain of population modifiers:
+// initialise | load -> evaluate -> [statistics -> checkpoint -> breed -> evaluate
+// -> bloat control]*. It knows no XML, ODE or CLI: experiments plug in an
+// Evaluator, and observers receive a typed record per generation.
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "cic/core/rng.hpp"
+#include "cic/gp/bloat.hpp"
+#include "cic/gp/config.hpp"
+#include "cic/gp/generators.hpp"
+#include "cic/gp/individual.hpp"
+
+namespace cic::gp {
+
+// Gives every individual in `todo` a fitness (and sets evaluated = true). Must be
+// a pure function of each genotype, so results do not depend on order or workers.
+class Evaluator {
+public:
+    virtual ~Evaluator() = default;
+    virtual void evaluate(std::span<const IndividualPtr> todo) = 0;
+};
+
+// Everything that, with the population, fixes the rest of a run. Saved in every
+// population file so that a resume continues bit for bit.
+struct EvolutionState {
+    Rng rng;
+    std::uint64_t seed = 1;
+    std::uint64_t next_id = 1;
+    long evaluations = 0;
+    BloatState bloat;
+};
+
+// One line of stats.csv and of the progress display.
+struct GenerationRecord {
+    int generation = 0;
+    int max_generations = 0;
+    double best = 0, mean = 0, median = 0;
+    double mean_depth = 0;
+    int max_depth = 0;
+    double mean_size = 0;
+    std::size_t max_size = 0;
+    int limit = 0;                  // dynamic depth limit (0 when bloat control is off)
+    int illegal = 0;
+    long evaluations = 0;           // cumulative
+    double wall_seconds = 0;        // since this session started
+    double generation_seconds = 0;  // this generation alone
+    std::uint64_t best_id = 0;
+};
+
+GenerationRecord summarise(const Population& pop, const EvolutionState& st);
+
+struct StopConditions {
+    int maximum_iterations = 50;    // generations evaluated, counting generation 0
+    double minimum_fitness = 50.0;  // stop once the best reaches this
+};
+
+class PopulationModifier {
+public:
+    virtual ~PopulationModifier() = default;
+    virtual std::string name() const = 0;
+    virtual void apply(Population& pop, EvolutionState& st) = 0;
+};
+
+// Random initial population (the configured generator), unique if asked.
+class Initialise final : public PopulationModifier {
+public:
+    Initialise(const GpConfig& cfg, const tree::PrimitiveSet& ps);
+    std::string name() const override { return "initialise"; }
+    void apply(Population& pop, EvolutionState& st) override;
+private:
+    const GpConfig& cfg_;
+    TreeGenerator gen_;
+};
+
+// Evaluates every individual not yet evaluated.
+class Evaluate final : public PopulationModifier {
+public:
+    explicit Evaluate(Evaluator& e) : eval_(e) {}
+    std::string name() const override { return "evaluate"; }
+    void apply(Population& pop, EvolutionState& st) override;
+private:
+    Evaluator& eval_;
+};
+
+// Builds the next generation: elitism, then selection + crossover / mutation /
+// reproduction; children carry their parents' ids. Children are not evaluated.
+class Breed final : public PopulationModifier {
+public:
+    Breed(const GpConfig& cfg, const tree::PrimitiveSet& ps);
+    std::string name() const override { return "breed"; }
+    void apply(Population& pop, EvolutionState& st) override;
+    // The population bred from (for the bloat filter's parent look-up).
+    const Population& parents() const { return parents_; }
+    // preventDuplicates after bloat control: breeds again into every slot that
+    // repeats an earlier genotype. Returns the slots refilled (not yet evaluated).
+    std::vector<std::size_t> replace_duplicates(Population& pop, EvolutionState& st);
+private:
+    std::vector<IndividualPtr> breed_event(EvolutionState& st, std::unordered_set<std::uint64_t>& seen,
+                                           std::size_t room);
+    const GpConfig& cfg_;
+    TreeGenerator gen_;
+    Population parents_;
+};
+
+// Dynamic Limits filter over freshly evaluated children (thesis 5.2): a child
+// that breaks its limit without beating the best is replaced by a copy of its
+// first parent. Also keeps the hard depth cap when bloat control is off.
+class BloatControl final : public PopulationModifier {
+public:
+    BloatControl(const GpConfig& gp, const BloatConfig& cfg, const Breed& breed);
+    std::string name() const override { return "bloat-control"; }
+    void apply(Population& pop, EvolutionState& st) override;   // filter all + end_generation
+    void initialise(const Population& evaluated, EvolutionState& st);
+    // Checks the children in `slots`; a rejected one becomes a copy of its first parent.
+    void filter(Population& pop, EvolutionState& st, std::span<const std::size_t> slots);
+    // Heavy variants may lower the limit; marks individuals over it illegal.
+    void end_generation(Population& pop, EvolutionState& st);
+private:
+    const GpConfig& gp_;
+    const BloatConfig& cfg_;
+    const Breed& breed_;
+};
+
+struct EvolutionHooks {
+    std::function<void(const GenerationRecord&)> on_generation;
+    // Called after each generation's record; `last` is true for the final one.
+    std::function<void(const Population&, const EvolutionState&, bool last)> on_checkpoint;
+    const std::atomic<bool>* stop_requested = nullptr;   // e.g. set by SIGINT
+};
+
+enum class StopReason { MaximumIterations, MinimumFitness, Interrupted };
+std::string to_string(StopReason r);
+
+struct EvolutionResult {
+    Population population;
+    EvolutionState state;
+    StopReason reason = StopReason::MaximumIterations;
+};
+
+// Runs the loop. If `start` is given (a loaded population, evaluated, with its
+// state), it continues from there; otherwise it initialises and evaluates.
+EvolutionResult evolve(const GpConfig& gp, const BloatConfig& bloat, const StopConditions& stop,
+                       const tree::PrimitiveSet& ps, Evaluator& evaluator, EvolutionState state,
+                       std::optional<Population> start, const EvolutionHooks& hooks);
+
+} // namespace cic::gp

@@ -1,0 +1,42 @@
+#pragma once
+// Population files: every individual with its trees as text, plus all the
+// state a run needs to continue bit for bit (seed, RNG state, generation,
+// bloat control, id counter). Human-readable and editable by hand.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cic/gp/evolution.hpp"
+#include "cic/io/settings.hpp"
+
+namespace cic::io {
+
+struct PopulationFile {
+    std::string experiment;               // "symreg" | "hypergp"
+    std::string settings_digest;          // digest of the settings that shape the search
+    int variables = 0;                    // genotype shape the file was made with
+    std::vector<std::string> functions;
+    int trees = 1;
+    gp::Population population;
+    gp::EvolutionState state;
+};
+
+// The shape fields and digest of the given settings, with an empty population.
+PopulationFile describe(const Settings& s);
+
+std::string to_xml(const PopulationFile& p);
+// Written atomically: nothing is ever half-written.
+void save_population(const std::filesystem::path& path, const PopulationFile& p);
+// Throws InputError "FILE:LINE: ..." for anything malformed, truncated or inconsistent.
+PopulationFile load_population(const std::filesystem::path& path);
+PopulationFile parse_population(std::string_view text, const std::string& name);
+
+// Refuses a population made with another experiment type, variable count,
+// function set or forest size, naming both values. `file` is for the message.
+void check_compatible(const PopulationFile& loaded, const Settings& s, const std::string& file);
+
+// A short hex digest of the settings that change what a run computes
+// (everything but seed, output, workers, stop conditions and the load path).
+std::string settings_digest(const Settings& s);
+
+} // namespace cic::io

@@ -1,0 +1,27 @@
+#pragma once
+// stats.csv: one row per generation, flushed as it is written so a crashed
+// or interrupted run keeps every finished generation.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cic/gp/evolution.hpp"
+
+namespace cic::io {
+
+// The column order of stats.csv (plots and sweeps read it by these names).
+inline constexpr const char* kStatsColumns =
+    "generation,best,mean,median,mean_depth,max_depth,mean_size,max_size,limit,illegal,evaluations,wall_seconds";
+
+class StatsWriter {
+public:
+    explicit StatsWriter(const std::filesystem::path& path);   // throws std::runtime_error
+    void write(const gp::GenerationRecord& r);
+private:
+    std::filesystem::path path_;
+    std::ofstream out_;
+};
+
+std::string to_csv_row(const gp::GenerationRecord& r);
+
+} // namespace cic::io

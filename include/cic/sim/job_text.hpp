@@ -1,0 +1,42 @@
+#pragma once
+// Plain-text forms of a robot, a SimConfig and an evaluation result, for
+// sending evaluations to worker processes. Numbers are written as hexfloats
+// so that they round-trip bit for bit.
+#include <istream>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "cic/sim/config.hpp"
+#include "cic/sim/controller.hpp"
+#include "cic/sim/evaluate.hpp"
+#include "cic/sim/robot.hpp"
+
+namespace cic::sim {
+
+// Each reader consumes exactly what the matching writer wrote and throws
+// std::invalid_argument on malformed text.
+void write_robot_text(std::ostream& out, const RobotSpec& robot);
+RobotSpec read_robot_text(std::istream& in);
+void write_config_text(std::ostream& out, const SimConfig& cfg);
+SimConfig read_config_text(std::istream& in);
+
+std::string hexfloat(double v);        // "%a"
+double parse_hexfloat(const std::string& s);   // also accepts decimal, "inf"
+
+// The reply of an evaluation job: fitness (exact), failed flag, failure text.
+struct EvalReply {
+    double fitness = 0.0;
+    bool failed = false;
+    std::string failure;
+};
+std::string format_eval_reply(const EvalResult& r);
+EvalReply parse_eval_reply(const std::string& text);
+
+// Job kind "sine": the first line is "sine", then robot, config and joints.
+std::string make_sine_job(const RobotSpec& robot, const SimConfig& cfg,
+                          const std::vector<SineJoint>& joints);
+// Runs a "sine" job body (the text after the first line); returns the reply.
+std::string run_sine_job(const std::string& body);
+
+} // namespace cic::sim

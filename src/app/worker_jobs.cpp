@@ -1,0 +1,39 @@
+// The table of worker job kinds (see worker_jobs.hpp).
+#include "cic/app/worker_jobs.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+#include "cic/sim/job_text.hpp"
+
+namespace cic::app {
+
+namespace {
+
+// Test-only: "sleep" + seconds; lets tests make a job that hangs past a timeout.
+std::string sleep_job(const std::string& body) {
+    const double seconds = std::stod(body);
+    std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
+    return "slept";
+}
+
+} // namespace
+
+std::map<std::string, JobHandler> make_worker_job_kinds(const WorkerContext& /*context*/) {
+    std::map<std::string, JobHandler> kinds;
+    kinds["sine"] = &sim::run_sine_job;   // robot + SimConfig + sine joints -> fitness reply
+    kinds["sleep"] = &sleep_job;
+    return kinds;
+}
+
+std::string dispatch_worker_job(const std::map<std::string, JobHandler>& kinds, const std::string& job) {
+    const std::size_t eol = job.find('\n');
+    const std::string kind = job.substr(0, eol);
+    const std::string body = eol == std::string::npos ? std::string() : job.substr(eol + 1);
+    auto it = kinds.find(kind);
+    if (it == kinds.end()) throw std::invalid_argument("worker: unknown job kind '" + kind + "'");
+    return it->second(body);
+}
+
+} // namespace cic::app

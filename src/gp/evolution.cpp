@@ -1,0 +1,310 @@
+#include "cic/gp/evolution.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "cic/gp/operators.hpp"
+
+namespace cic::gp {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+IndividualPtr make_child(EvolutionState& st, tree::Forest genotype, std::vector<std::uint64_t> parents) {
+    auto c = std::make_shared<Individual>();
+    c->id = st.next_id++;
+    c->genotype = std::move(genotype);
+    c->parents = std::move(parents);
+    return c;
+}
+
+// A copy that stands in for a rejected child: same genotype and fitness, a new id.
+IndividualPtr copy_of(EvolutionState& st, const Individual& parent) {
+    auto c = std::make_shared<Individual>(parent);
+    c->id = st.next_id++;
+    c->parents = {parent.id};
+    c->attributes.erase("illegal");
+    return c;
+}
+
+int generator_depth(const GpConfig& cfg) { return cfg.max_init_depth; }
+
+} // namespace
+
+std::string to_string(StopReason r) {
+    switch (r) {
+    case StopReason::MaximumIterations: return "maximumIterations reached";
+    case StopReason::MinimumFitness: return "minimumFitness reached";
+    case StopReason::Interrupted: return "interrupted";
+    }
+    return "?";
+}
+
+GenerationRecord summarise(const Population& pop, const EvolutionState& st) {
+    GenerationRecord r;
+    r.generation = pop.iteration;
+    r.limit = st.bloat.limit;
+    r.evaluations = st.evaluations;
+    if (pop.empty()) return r;
+    std::vector<double> f;
+    f.reserve(pop.size());
+    double depth_sum = 0, size_sum = 0;
+    for (const auto& ind : pop) {
+        f.push_back(ind->fitness);
+        const int d = ind->depth();
+        const std::size_t s = ind->size();
+        depth_sum += d;
+        size_sum += static_cast<double>(s);
+        r.max_depth = std::max(r.max_depth, d);
+        r.max_size = std::max(r.max_size, s);
+        if (ind->has("illegal")) ++r.illegal;
+    }
+    const auto n = static_cast<double>(pop.size());
+    r.mean = std::accumulate(f.begin(), f.end(), 0.0) / n;
+    r.mean_depth = depth_sum / n;
+    r.mean_size = size_sum / n;
+    std::sort(f.begin(), f.end());
+    const std::size_t m = f.size() / 2;
+    r.median = f.size() % 2 ? f[m] : 0.5 * (f[m - 1] + f[m]);
+    const Individual& best = pop.best();
+    r.best = best.fitness;
+    r.best_id = best.id;
+    return r;
+}
+
+// ---------------------------------------------------------------- Initialise
+
+Initialise::Initialise(const GpConfig& cfg, const tree::PrimitiveSet& ps)
+    : cfg_(cfg), gen_(ps, cfg.init_method, cfg.expected_tree_size, cfg.min_init_depth, cfg.max_init_depth) {}
+
+void Initialise::apply(Population& pop, EvolutionState& st) {
+    pop.individuals.clear();
+    pop.iteration = 0;
+    std::unordered_set<std::uint64_t> seen;
+    const auto n = static_cast<std::size_t>(cfg_.population_size);
+    for (std::size_t slot = 0; slot < n; ++slot) {
+        tree::Forest f;
+        for (int attempt = 0;; ++attempt) {
+            f.clear();
+            for (int t = 0; t < cfg_.trees_per_genotype; ++t) f.push_back(gen_.generate(st.rng, slot, n));
+            if (!cfg_.prevent_duplicates || seen.insert(tree::hash(f)).second) break;
+            if (attempt >= cfg_.duplicate_retries) break;   // bounded: accept a duplicate
+        }
+        auto ind = make_child(st, std::move(f), {});
+        ind->fitness = cfg_.default_fitness;
+        pop.individuals.push_back(std::move(ind));
+    }
+}
+
+// ------------------------------------------------------------------ Evaluate
+
+void Evaluate::apply(Population& pop, EvolutionState& st) {
+    std::vector<IndividualPtr> todo;
+    for (const auto& ind : pop)
+        if (!ind->evaluated) todo.push_back(ind);
+    if (todo.empty()) return;
+    eval_.evaluate(todo);
+    for (const auto& ind : todo)
+        if (!ind->evaluated) throw std::logic_error("evaluator left an individual unevaluated");
+    st.evaluations += static_cast<long>(todo.size());
+}
+
+// --------------------------------------------------------------------- Breed
+
+Breed::Breed(const GpConfig& cfg, const tree::PrimitiveSet& ps)
+    : cfg_(cfg), gen_(ps, InitMethod::Grow, cfg.expected_tree_size, 1, generator_depth(cfg)) {}
+
+std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered_set<std::uint64_t>& seen,
+                                              std::size_t room) {
+    const std::span<const IndividualPtr> parents(parents_.individuals);
+    std::vector<IndividualPtr> out;
+    // One breeding event, retried while it only yields duplicates (bounded).
+    for (int attempt = 0; out.empty(); ++attempt) {
+        const bool force = attempt >= cfg_.duplicate_retries;
+        auto admit = [&](tree::Forest f, std::vector<std::uint64_t> ids) {
+            if (out.size() >= room) return;
+            const auto h = tree::hash(f);
+            if (cfg_.prevent_duplicates && !force && seen.count(h)) return;
+            seen.insert(h);
+            out.push_back(make_child(st, std::move(f), std::move(ids)));
+        };
+        const double r = st.rng.uniform();
+        const Individual& p1 = *parents[select(st.rng, parents, cfg_)];
+        if (r < cfg_.crossover_rate) {
+            const Individual& p2 = *parents[select(st.rng, parents, cfg_)];
+            auto [a, b] = crossover(st.rng, p1.genotype, p2.genotype);
+            admit(std::move(a), {p1.id, p2.id});
+            admit(std::move(b), {p2.id, p1.id});
+        } else if (r < cfg_.crossover_rate + cfg_.mutation_rate) {
+            admit(mutate(st.rng, p1.genotype, gen_, cfg_.max_mutation_depth), {p1.id});
+        } else {
+            // Reproduction: an unchanged copy keeps its known fitness.
+            const auto h = tree::hash(p1.genotype);
+            if (cfg_.prevent_duplicates && !force && seen.count(h)) continue;
+            seen.insert(h);
+            out.push_back(copy_of(st, p1));
+        }
+    }
+    return out;
+}
+
+void Breed::apply(Population& pop, EvolutionState& st) {
+    parents_ = pop;
+    const auto n = static_cast<std::size_t>(cfg_.population_size);
+    Population next;
+    next.iteration = pop.iteration + 1;
+    std::unordered_set<std::uint64_t> seen;
+
+    // Elitism: the best survive unchanged (shared, already evaluated).
+    std::vector<IndividualPtr> ranked = parents_.individuals;
+    std::sort(ranked.begin(), ranked.end(), [](const IndividualPtr& a, const IndividualPtr& b) { return better(*a, *b); });
+    for (std::size_t e = 0; e < static_cast<std::size_t>(std::max(0, cfg_.elitism)) && e < ranked.size(); ++e) {
+        next.individuals.push_back(ranked[e]);
+        seen.insert(tree::hash(ranked[e]->genotype));
+    }
+    while (next.size() < n)
+        for (auto& c : breed_event(st, seen, n - next.size())) next.individuals.push_back(std::move(c));
+    pop = std::move(next);
+}
+
+std::vector<std::size_t> Breed::replace_duplicates(Population& pop, EvolutionState& st) {
+    std::vector<std::size_t> slots;
+    if (!cfg_.prevent_duplicates) return slots;
+    std::unordered_set<std::uint64_t> seen;
+    for (std::size_t i = 0; i < pop.size(); ++i)
+        if (!seen.insert(tree::hash(pop[i].genotype)).second) slots.push_back(i);
+    for (auto i : slots) pop.individuals[i] = breed_event(st, seen, 1).front();
+    return slots;
+}
+
+// -------------------------------------------------------------- BloatControl
+
+BloatControl::BloatControl(const GpConfig& gp, const BloatConfig& cfg, const Breed& breed)
+    : gp_(gp), cfg_(cfg), breed_(breed) {}
+
+void BloatControl::initialise(const Population& evaluated, EvolutionState& st) {
+    if (!cfg_.enabled) return;
+    DynamicLimits dl(cfg_.variant, gp_.max_init_depth);
+    dl.initialise(evaluated);
+    st.bloat = dl.state();
+}
+
+void BloatControl::filter(Population& pop, EvolutionState& st, std::span<const std::size_t> slots) {
+    std::unordered_map<std::uint64_t, const Individual*> by_id;
+    for (const auto& p : breed_.parents()) by_id.emplace(p->id, p.get());
+
+    std::optional<DynamicLimits> dl;
+    if (cfg_.enabled) {
+        dl.emplace(cfg_.variant, gp_.max_init_depth);
+        dl->set_state(st.bloat);
+    }
+    for (const std::size_t i : slots) {
+        auto& ind = pop.individuals[i];
+        if (ind->parents.empty()) continue;
+        const auto it1 = by_id.find(ind->parents[0]);
+        if (it1 == by_id.end()) continue;   // an elite carried over
+        if (ind->parents.size() == 1 && ind->genotype == it1->second->genotype) continue;  // a copy
+        const Individual* p2 = nullptr;
+        if (ind->parents.size() > 1) {
+            const auto it2 = by_id.find(ind->parents[1]);
+            if (it2 != by_id.end()) p2 = it2->second;
+        }
+        bool ok = ind->depth() <= gp_.max_tree_depth;
+        if (ok && dl) ok = dl->accept(*ind, *it1->second, p2);
+        if (!ok) ind = copy_of(st, *it1->second);
+    }
+    if (dl) st.bloat = dl->state();
+}
+
+void BloatControl::apply(Population& pop, EvolutionState& st) {
+    std::vector<std::size_t> all(pop.size());
+    std::iota(all.begin(), all.end(), std::size_t{0});
+    filter(pop, st, all);
+    end_generation(pop, st);
+}
+
+void BloatControl::end_generation(Population& pop, EvolutionState& st) {
+    if (!cfg_.enabled) return;
+    DynamicLimits dl(cfg_.variant, gp_.max_init_depth);
+    dl.set_state(st.bloat);
+    dl.end_generation(pop);
+    st.bloat = dl.state();
+}
+
+// -------------------------------------------------------------------- evolve
+
+EvolutionResult evolve(const GpConfig& gp, const BloatConfig& bloat, const StopConditions& stop,
+                       const tree::PrimitiveSet& ps, Evaluator& evaluator, EvolutionState state,
+                       std::optional<Population> start, const EvolutionHooks& hooks) {
+    if (stop.maximum_iterations < 1) throw std::invalid_argument("maximumIterations must be >= 1");
+    const auto session_start = Clock::now();
+    auto wall = [&] { return std::chrono::duration<double>(Clock::now() - session_start).count(); };
+
+    Initialise init(gp, ps);
+    Evaluate evaluate(evaluator);
+    Breed breed(gp, ps);
+    BloatControl control(gp, bloat, breed);
+
+    EvolutionResult result;
+    Population pop;
+    auto gen_start = Clock::now();
+    if (start) {
+        pop = std::move(*start);
+        evaluate.apply(pop, state);   // no-op for a saved, evaluated population
+    } else {
+        init.apply(pop, state);
+        evaluate.apply(pop, state);
+        control.initialise(pop, state);
+        control.end_generation(pop, state);
+    }
+
+    auto report = [&](bool fresh) {
+        GenerationRecord rec = summarise(pop, state);
+        rec.max_generations = stop.maximum_iterations;
+        rec.wall_seconds = wall();
+        rec.generation_seconds = std::chrono::duration<double>(Clock::now() - gen_start).count();
+        if (fresh && hooks.on_generation) hooks.on_generation(rec);
+        return rec;
+    };
+
+    GenerationRecord rec = report(!start.has_value());
+    bool first = true;
+    for (;;) {
+        StopReason reason{};
+        bool done = true;
+        if (rec.best >= stop.minimum_fitness) reason = StopReason::MinimumFitness;
+        else if (pop.iteration + 1 >= stop.maximum_iterations) reason = StopReason::MaximumIterations;
+        else if (hooks.stop_requested && hooks.stop_requested->load()) reason = StopReason::Interrupted;
+        else done = false;
+        // A resumed population was saved already; save it again only if it is also the last.
+        const bool fresh = !(first && start.has_value());
+        if (hooks.on_checkpoint && (fresh || done)) hooks.on_checkpoint(pop, state, done);
+        first = false;
+        if (done) {
+            result.reason = reason;
+            break;
+        }
+        gen_start = Clock::now();
+        breed.apply(pop, state);
+        evaluate.apply(pop, state);
+        std::vector<std::size_t> all(pop.size());
+        std::iota(all.begin(), all.end(), std::size_t{0});
+        control.filter(pop, state, all);
+        // Rejected children became parent copies: breed again where that left duplicates.
+        for (int round = 0; round < gp.duplicate_retries; ++round) {
+            const auto slots = breed.replace_duplicates(pop, state);
+            if (slots.empty()) break;
+            evaluate.apply(pop, state);
+            control.filter(pop, state, slots);
+        }
+        control.end_generation(pop, state);
+        rec = report(true);
+    }
+    result.population = std::move(pop);
+    result.state = std::move(state);
+    return result;
+}
+
+} // namespace cic::gp

@@ -1,0 +1,261 @@
+#include "cic/io/population_xml.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "cic/io/xml.hpp"
+
+namespace cic::io {
+namespace {
+
+constexpr const char* kFormat = "cic-population";
+constexpr int kVersion = 1;
+
+std::string exact(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+std::string hash_text(std::uint64_t h) {
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+
+std::string experiment_name(ExperimentType t) { return t == ExperimentType::HyperGP ? "hypergp" : "symreg"; }
+
+std::vector<std::string> function_names(const Settings& s) {
+    std::vector<std::string> out;
+    for (auto op : s.gp.primitives.functions) out.emplace_back(tree::name(op));
+    return out;
+}
+
+std::string join(const std::vector<std::string>& v) {
+    std::string out;
+    for (const auto& x : v) out += (out.empty() ? "" : " ") + x;
+    return out;
+}
+
+template <class T>
+T number(const xml::Node& n, std::string_view attr, std::string_view text) {
+    T v{};
+    const char* b = text.data();
+    const char* e = b + text.size();
+    std::from_chars_result r{};
+    if constexpr (std::is_floating_point_v<T>) {
+        // from_chars for double is exact; also accept inf/nan spellings we never write.
+        r = std::from_chars(b, e, v);
+    } else {
+        r = std::from_chars(b, e, v);
+    }
+    if (text.empty() || r.ec != std::errc() || r.ptr != e)
+        throw n.error("<" + std::string(n.name()) + "> attribute " + std::string(attr) + "=\"" + std::string(text) +
+                      "\" is not a valid number");
+    return v;
+}
+
+template <class T>
+T required(const xml::Node& n, std::string_view attr) {
+    auto a = n.attribute(attr);
+    if (!a) throw n.error("<" + std::string(n.name()) + "> is missing attribute " + std::string(attr));
+    return number<T>(n, attr, *a);
+}
+
+std::string required_text(const xml::Node& n, std::string_view attr) {
+    auto a = n.attribute(attr);
+    if (!a) throw n.error("<" + std::string(n.name()) + "> is missing attribute " + std::string(attr));
+    return *a;
+}
+
+gp::IndividualPtr read_individual(const xml::Node& n, int trees) {
+    auto ind = std::make_shared<gp::Individual>();
+    ind->id = required<std::uint64_t>(n, "id");
+    ind->fitness = required<double>(n, "fitness");
+    ind->evaluated = required<int>(n, "evaluated") != 0;
+    for (const auto& c : n.children()) {
+        const auto name = c.name();
+        if (name == "tree") {
+            try {
+                ind->genotype.push_back(tree::Tree::parse(c.text()));
+            } catch (const InputError& e) {
+                throw c.error("individual " + std::to_string(ind->id) + ": bad tree: " + e.message());
+            } catch (const std::exception& e) {
+                throw c.error("individual " + std::to_string(ind->id) + ": bad tree: " + e.what());
+            }
+        } else if (name == "parents") {
+            std::istringstream in(c.text());
+            std::string tok;
+            while (in >> tok) ind->parents.push_back(number<std::uint64_t>(c, "parents", tok));
+        } else if (name == "attribute") {
+            ind->attributes[required_text(c, "key")] = c.text();
+        } else {
+            throw c.error("unknown element <" + std::string(name) + "> in <individual>; allowed: tree, parents, attribute");
+        }
+    }
+    if (static_cast<int>(ind->genotype.size()) != trees)
+        throw n.error("individual " + std::to_string(ind->id) + " has " + std::to_string(ind->genotype.size()) +
+                      " trees, the file header says " + std::to_string(trees));
+    // depth and size are there for people and tools; the hash tells a hand edit
+    // apart, and an edited individual is evaluated again instead of keeping a stale fitness.
+    if (auto h = n.attribute("hash"); h && *h != hash_text(tree::hash(ind->genotype))) {
+        ind->evaluated = false;
+        ind->attributes["edited"] = "1";
+    }
+    return ind;
+}
+
+} // namespace
+
+std::string settings_digest(const Settings& s);
+
+PopulationFile describe(const Settings& s) {
+    PopulationFile p;
+    p.experiment = experiment_name(s.experiment.type);
+    p.settings_digest = settings_digest(s);
+    p.variables = s.gp.primitives.variable_count;
+    p.functions = function_names(s);
+    p.trees = s.gp.trees_per_genotype;
+    p.state.seed = s.experiment.seed;
+    return p;
+}
+
+std::string to_xml(const PopulationFile& p) {
+    auto doc = xml::Document::create("population");
+    auto root = doc.root();
+    root.set_attribute("format", kFormat);
+    root.set_attribute("version", std::to_string(kVersion));
+    root.set_attribute("experiment", p.experiment);
+    root.set_attribute("settingsDigest", p.settings_digest);
+    root.set_attribute("generation", std::to_string(p.population.iteration));
+    auto shape = root.add_element("genotype");
+    shape.set_attribute("variables", std::to_string(p.variables));
+    shape.set_attribute("functions", join(p.functions));
+    shape.set_attribute("trees", std::to_string(p.trees));
+    auto rng = root.add_element("rng");
+    rng.set_attribute("seed", std::to_string(p.state.seed));
+    rng.set_attribute("state", p.state.rng.state_text());
+    auto counters = root.add_element("counters");
+    counters.set_attribute("nextId", std::to_string(p.state.next_id));
+    counters.set_attribute("evaluations", std::to_string(p.state.evaluations));
+    auto bloat = root.add_element("bloat");
+    bloat.set_attribute("limit", std::to_string(p.state.bloat.limit));
+    bloat.set_attribute("initialMax", std::to_string(p.state.bloat.initial_max));
+    bloat.set_attribute("bestFitness", exact(p.state.bloat.best_fitness));
+    auto list = root.add_element("individuals");
+    list.set_attribute("count", std::to_string(p.population.size()));
+    for (const auto& ind : p.population) {
+        auto n = list.add_element("individual");
+        n.set_attribute("id", std::to_string(ind->id));
+        n.set_attribute("fitness", exact(ind->fitness));
+        n.set_attribute("evaluated", ind->evaluated ? "1" : "0");
+        n.set_attribute("depth", std::to_string(ind->depth()));
+        n.set_attribute("size", std::to_string(ind->size()));
+        n.set_attribute("hash", hash_text(tree::hash(ind->genotype)));
+        if (!ind->parents.empty()) {
+            std::string ids;
+            for (auto id : ind->parents) ids += (ids.empty() ? "" : " ") + std::to_string(id);
+            n.add_child("parents", ids);
+        }
+        for (const auto& [k, v] : ind->attributes) n.add_child("attribute", v).set_attribute("key", k);
+        for (const auto& t : ind->genotype) n.add_child("tree", t.to_string());
+    }
+    return doc.to_string();
+}
+
+void save_population(const std::filesystem::path& path, const PopulationFile& p) {
+    xml::write_file_atomically(path, to_xml(p));
+}
+
+PopulationFile load_population(const std::filesystem::path& path) {
+    return parse_population(xml::read_file(path), path.string());
+}
+
+PopulationFile parse_population(std::string_view text, const std::string& name) {
+    auto doc = xml::Document::parse_string(text, name);
+    const auto root = doc.root();
+    if (root.name() != "population" || root.attribute("format").value_or("") != kFormat)
+        throw root.error("not a cic population file (expected <population format=\"cic-population\">)");
+    if (required<int>(root, "version") != kVersion)
+        throw root.error("population file version " + *root.attribute("version") + " is not supported (this cic reads " +
+                         std::to_string(kVersion) + ")");
+    PopulationFile p;
+    p.experiment = required_text(root, "experiment");
+    p.settings_digest = root.attribute("settingsDigest").value_or("");
+    p.population.iteration = required<int>(root, "generation");
+    bool have_rng = false, have_shape = false, have_list = false;
+    std::size_t declared = 0;
+    xml::Node list_node;
+    for (const auto& c : root.children()) {
+        const auto nm = c.name();
+        if (nm == "genotype") {
+            have_shape = true;
+            p.variables = required<int>(c, "variables");
+            p.trees = required<int>(c, "trees");
+            std::istringstream in(required_text(c, "functions"));
+            std::string f;
+            while (in >> f) p.functions.push_back(f);
+        } else if (nm == "rng") {
+            have_rng = true;
+            p.state.seed = required<std::uint64_t>(c, "seed");
+            try {
+                p.state.rng.set_state(Rng::parse_state(required_text(c, "state")));
+            } catch (const std::invalid_argument& e) {
+                throw c.error(e.what());
+            }
+        } else if (nm == "counters") {
+            p.state.next_id = required<std::uint64_t>(c, "nextId");
+            p.state.evaluations = required<long>(c, "evaluations");
+        } else if (nm == "bloat") {
+            p.state.bloat.limit = required<int>(c, "limit");
+            p.state.bloat.initial_max = required<int>(c, "initialMax");
+            p.state.bloat.best_fitness = required<double>(c, "bestFitness");
+        } else if (nm == "individuals") {
+            have_list = true;
+            list_node = c;
+            declared = required<std::size_t>(c, "count");
+            for (const auto& n : c.children()) {
+                if (n.name() != "individual") throw n.error("unknown element <" + std::string(n.name()) + "> in <individuals>");
+                p.population.individuals.push_back(read_individual(n, p.trees));
+            }
+        } else {
+            throw c.error("unknown element <" + std::string(nm) + "> in <population>; allowed: genotype, rng, counters, bloat, individuals");
+        }
+    }
+    if (!have_shape) throw root.error("missing <genotype> element");
+    if (!have_rng) throw root.error("missing <rng> element (seed and RNG state)");
+    if (!have_list) throw root.error("missing <individuals> element");
+    if (declared != p.population.size())
+        throw list_node.error("<individuals count=\"" + std::to_string(declared) + "\"> but " +
+                              std::to_string(p.population.size()) + " individuals follow (truncated file?)");
+    if (p.population.empty()) throw list_node.error("the population is empty");
+    std::uint64_t max_id = 0;
+    for (const auto& ind : p.population) max_id = std::max(max_id, ind->id);
+    if (p.state.next_id <= max_id) p.state.next_id = max_id + 1;
+    return p;
+}
+
+void check_compatible(const PopulationFile& loaded, const Settings& s, const std::string& file) {
+    const PopulationFile want = describe(s);
+    auto refuse = [&](const std::string& what, const std::string& have, const std::string& need) {
+        throw InputError("population was made with " + what + " " + have + " but the settings say " + need +
+                         "; use settings that match the population, or start a new population", file);
+    };
+    if (loaded.experiment != want.experiment) refuse("experiment", loaded.experiment, want.experiment);
+    if (loaded.variables != want.variables)
+        refuse("terminalVariableCount", std::to_string(loaded.variables), std::to_string(want.variables));
+    if (loaded.trees != want.trees)
+        refuse("numberOfTreesInForestGenotype", std::to_string(loaded.trees), std::to_string(want.trees));
+    if (loaded.functions != want.functions) refuse("functions", "'" + join(loaded.functions) + "'", "'" + join(want.functions) + "'");
+    for (const auto& ind : loaded.population)
+        for (const auto& t : ind->genotype)
+            for (const auto& node : t.nodes()) {
+                if (node.op == tree::Op::Var && node.var >= want.variables)
+                    throw InputError("individual " + std::to_string(ind->id) + " uses variable x" + std::to_string(node.var) +
+                                     " but terminalVariableCount is " + std::to_string(want.variables), file);
+            }
+}
+
+} // namespace cic::io

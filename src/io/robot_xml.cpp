@@ -1,0 +1,121 @@
+// Reading and writing robot files (format in robot_xml.hpp and docs/simulator.md).
+#include "cic/io/robot_xml.hpp"
+
+#include <charconv>
+#include <map>
+
+#include "cic/io/xml.hpp"
+
+namespace cic::io {
+
+namespace {
+
+int int_attribute(const xml::Node& n, const char* attr) {
+    auto v = n.attribute(attr);
+    if (!v) throw n.error(std::string("<module> needs attribute ") + attr);
+    const std::string s = xml::trim(*v);
+    int out = 0;
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    if (ec != std::errc() || p != s.data() + s.size() || s.empty())
+        throw n.error(std::string("<module> attribute ") + attr + "=\"" + *v + "\" is not an integer");
+    return out;
+}
+
+sim::RobotSpec read_robot(const xml::Document& doc) {
+    const xml::Node root = doc.root();
+    if (root.name() != "robot")
+        throw root.error("expected root element <robot>, got <" + std::string(root.name()) + ">");
+    sim::RobotSpec r;
+    r.name = root.attribute("name").value_or("");
+    const std::string pref = xml::trim(root.attribute("preferred").value_or(""));
+    auto axis = sim::axis_from_name(pref);
+    if (!axis || (*axis != sim::Axis::X && *axis != sim::Axis::Y))
+        throw root.error("<robot> attribute preferred=\"" + pref + "\" must be x or y");
+    r.preferred = *axis;
+
+    std::vector<int> lines;
+    std::map<std::string, int> by_name;
+    for (const xml::Node& n : root.children()) {
+        if (n.name() != "module")
+            throw n.error("unexpected element <" + std::string(n.name()) + "> in <robot> (only <module>)");
+        sim::Module m;
+        m.name = n.attribute("name").value_or("");
+        m.cell = {int_attribute(n, "x"), int_attribute(n, "y"), int_attribute(n, "z")};
+        const std::string a = xml::trim(n.attribute("axis").value_or(""));
+        auto ax = sim::axis_from_name(a);
+        if (!ax) throw n.error("unknown axis \"" + a + "\" (expected x, y, z or fixed)");
+        m.axis = *ax;
+        const std::string d = xml::trim(n.attribute("attach").value_or(""));
+        auto dir = sim::dir_from_name(d);
+        if (!dir) throw n.error("unknown attach \"" + d + "\" (expected +x, -x, +y, -y, +z, -z or none)");
+        m.attach = *dir;
+        if (!m.name.empty() && !by_name.emplace(m.name, static_cast<int>(r.modules.size())).second)
+            throw n.error("duplicate module name \"" + m.name + "\"");
+        r.modules.push_back(m);
+        lines.push_back(n.line());
+    }
+
+    auto centre = root.attribute("centre");
+    if (!centre) throw root.error("no centre: <robot> needs attribute centre (a module name)");
+    const std::string c = xml::trim(*centre);
+    if (auto it = by_name.find(c); it != by_name.end()) {
+        r.centre = it->second;
+    } else {
+        int idx = -1;
+        auto [p, ec] = std::from_chars(c.data(), c.data() + c.size(), idx);
+        if (ec != std::errc() || p != c.data() + c.size() || idx < 0 ||
+            idx >= static_cast<int>(r.modules.size()))
+            throw root.error("no centre: centre=\"" + c + "\" names no module");
+        r.centre = idx;
+    }
+
+    if (auto problem = r.find_problem()) {
+        const bool at_module = problem->module >= 0 && problem->module < static_cast<int>(lines.size());
+        throw InputError("invalid robot: " + problem->message, doc.file(),
+                         at_module ? lines[static_cast<std::size_t>(problem->module)] : root.line());
+    }
+    return r;
+}
+
+} // namespace
+
+sim::RobotSpec read_robot_file(const std::filesystem::path& path) {
+    return read_robot(xml::Document::load_file(path));
+}
+
+sim::RobotSpec parse_robot_xml(std::string_view text, const std::string& name) {
+    return read_robot(xml::Document::parse_string(text, name));
+}
+
+std::string robot_to_xml(const sim::RobotSpec& robot) {
+    robot.validate();
+    xml::Document doc = xml::Document::create("robot");
+    xml::Node root = doc.root();
+    root.set_attribute("name", robot.name);
+    const sim::Module& centre = robot.modules[static_cast<std::size_t>(robot.centre)];
+    root.set_attribute("centre", centre.name.empty() ? std::to_string(robot.centre) : centre.name);
+    root.set_attribute("preferred", sim::to_string(robot.preferred));
+    for (const sim::Module& m : robot.modules) {
+        xml::Node n = root.add_element("module");
+        if (!m.name.empty()) n.set_attribute("name", m.name);
+        n.set_attribute("x", std::to_string(m.cell.x));
+        n.set_attribute("y", std::to_string(m.cell.y));
+        n.set_attribute("z", std::to_string(m.cell.z));
+        n.set_attribute("axis", sim::to_string(m.axis));
+        n.set_attribute("attach", sim::to_string(m.attach));
+    }
+    return doc.to_string();
+}
+
+void write_robot_file(const sim::RobotSpec& robot, const std::filesystem::path& path) {
+    xml::write_file_atomically(path, robot_to_xml(robot));
+}
+
+sim::RobotSpec load_robot(const std::string& preset_or_file, bool middle_legs) {
+    const std::string& s = preset_or_file;
+    if (s.size() == 2 && (s[0] == 'R' || s[0] == 'r') && s[1] >= '0' && s[1] <= '2')
+        return sim::preset(s[1] - '0', middle_legs);
+    return read_robot_file(s);
+}
+
+} // namespace cic::io

@@ -1,0 +1,567 @@
+// The single table of settings keys (see settings_table.hpp). Thesis names
+// (Appendix B) are kept verbatim, including their mixed naming styles.
+#include "cic/io/settings_table.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+#include "settings_values.hpp"
+
+namespace cic::io {
+namespace {
+
+using detail::format_double;
+using detail::join;
+using detail::split_items;
+
+constexpr double kHuge = std::numeric_limits<double>::max();
+
+// FIELD(gp.population_size) -> an accessor returning a reference into Settings.
+#define FIELD(member) [](Settings& s) -> decltype(auto) { return (s.member); }
+
+template <class F>
+auto& field(F ref, const Settings& s) { return ref(const_cast<Settings&>(s)); }
+
+SettingKey row(std::string section, std::string key, ValueType type, std::string doc) {
+    SettingKey k{};
+    k.section = std::move(section);
+    k.key = std::move(key);
+    k.type = type;
+    k.doc = std::move(doc);
+    return k;
+}
+
+template <class F>
+SettingKey bool_row(std::string sec, std::string key, std::string doc, F ref) {
+    auto k = row(std::move(sec), std::move(key), ValueType::Bool, std::move(doc));
+    k.get = [ref](const Settings& s) { return std::string(field(ref, s) ? "1" : "0"); };
+    k.set = [ref](Settings& s, std::string_view t) { ref(s) = detail::parse_bool(t); };
+    return k;
+}
+
+template <class F>
+SettingKey int_row(std::string sec, std::string key, long long lo, long long hi, std::string doc, F ref) {
+    auto k = row(std::move(sec), std::move(key), ValueType::Int, std::move(doc));
+    k.min = static_cast<double>(lo);
+    k.max = static_cast<double>(hi);
+    SettingKey bounds = k;
+    k.get = [ref](const Settings& s) { return std::to_string(field(ref, s)); };
+    k.set = [ref, bounds](Settings& s, std::string_view t) {
+        ref(s) = static_cast<int>(detail::parse_integer(bounds, t));
+    };
+    return k;
+}
+
+struct Bounds {
+    double min = -kHuge, max = kHuge;
+    bool min_exclusive = false, allow_inf = false;
+};
+constexpr Bounds kAnyFinite{};
+constexpr Bounds kPositive{0.0, kHuge, true, false};
+constexpr Bounds kNonNegative{0.0, kHuge, false, false};
+constexpr Bounds kUnit{0.0, 1.0, false, false};
+
+template <class F>
+SettingKey double_row(std::string sec, std::string key, Bounds b, std::string doc, F ref) {
+    auto k = row(std::move(sec), std::move(key), ValueType::Double, std::move(doc));
+    k.min = b.min;
+    k.max = b.max;
+    k.min_exclusive = b.min_exclusive;
+    k.allow_inf = b.allow_inf;
+    SettingKey bounds = k;
+    k.get = [ref](const Settings& s) { return format_double(field(ref, s)); };
+    k.set = [ref, bounds](Settings& s, std::string_view t) { ref(s) = detail::parse_number(bounds, t); };
+    return k;
+}
+
+template <class F>
+SettingKey string_row(std::string sec, std::string key, ValueType type, bool may_be_empty, std::string doc,
+                      F ref) {
+    auto k = row(std::move(sec), std::move(key), type, std::move(doc));
+    k.min_items = may_be_empty ? 0 : 1;
+    k.get = [ref](const Settings& s) { return std::string(field(ref, s)); };
+    k.set = [ref](Settings& s, std::string_view t) { ref(s) = std::string(t); };
+    return k;
+}
+
+template <class E, class F>
+SettingKey enum_row(std::string sec, std::string key, std::vector<std::pair<E, std::vector<std::string>>> choices,
+                    std::string doc, F ref) {
+    auto k = row(std::move(sec), std::move(key), ValueType::Enum, std::move(doc));
+    std::vector<E> values;
+    for (auto& [v, spellings] : choices) {
+        values.push_back(v);
+        k.choices.push_back(spellings);
+    }
+    SettingKey bounds = k;
+    k.get = [ref, values, bounds](const Settings& s) {
+        auto it = std::find(values.begin(), values.end(), field(ref, s));
+        if (it == values.end()) throw std::invalid_argument("settings: enum value without a name");
+        return bounds.choices[static_cast<std::size_t>(it - values.begin())].front();
+    };
+    k.set = [ref, values, bounds](Settings& s, std::string_view t) {
+        ref(s) = values[detail::parse_choice(bounds, t)];
+    };
+    return k;
+}
+
+template <class F>
+SettingKey double_list_row(std::string sec, std::string key, Bounds b, std::size_t min_items, std::string doc,
+                           F ref) {
+    auto k = row(std::move(sec), std::move(key), ValueType::DoubleList, std::move(doc));
+    k.min = b.min;
+    k.max = b.max;
+    k.min_exclusive = b.min_exclusive;
+    k.min_items = min_items;
+    SettingKey bounds = k;
+    k.get = [ref](const Settings& s) {
+        std::vector<std::string> items;
+        for (double v : field(ref, s)) items.push_back(format_double(v));
+        return join(items);
+    };
+    k.set = [ref, bounds](Settings& s, std::string_view t) {
+        std::vector<double> values;
+        for (auto item : split_items(t)) values.push_back(detail::parse_number(bounds, item));
+        ref(s) = std::move(values);
+    };
+    return k;
+}
+
+std::vector<std::string> function_names() {
+    std::vector<std::string> names;
+    for (auto op : tree::canonical_functions()) names.emplace_back(tree::name(op));
+    return names;
+}
+
+const std::vector<std::string> kSynapseNames{"ih", "ho", "hh", "oo", "oh"};   // by nn::SynapseType
+
+// Rows with their own conversions: names <-> Ops, counts, synapse flags.
+SettingKey functions_row() {
+    auto k = row("GP", "functions", ValueType::NameList,
+                 "Function set by name (overrides functionCount); see docs/primitives.md");
+    for (auto& n : function_names()) k.choices.push_back({n});
+    k.get = [](const Settings& s) {
+        std::vector<std::string> names;
+        for (auto op : s.gp.primitives.functions) names.emplace_back(tree::name(op));
+        return join(names);
+    };
+    k.set = [](Settings& s, std::string_view t) {
+        std::vector<tree::Op> ops;
+        for (auto item : split_items(t)) {
+            auto op = tree::function_from_name(item);
+            if (!op) throw ValueError("unknown function '" + std::string(item) + "'");
+            if (std::find(ops.begin(), ops.end(), *op) != ops.end())
+                throw ValueError("function '" + std::string(item) + "' listed twice");
+            ops.push_back(*op);
+        }
+        s.gp.primitives.functions = std::move(ops);
+    };
+    return k;
+}
+
+SettingKey function_count_row() {
+    auto k = row("GP", "functionCount", ValueType::Int,
+                 "Thesis form of the function set: the first N of the canonical list "
+                 "(add mul atan sin gauss sub div ...); must match the length of functions when both are given");
+    k.min = 1;
+    k.max = static_cast<double>(tree::canonical_functions().size());
+    SettingKey bounds = k;
+    k.get = [](const Settings& s) { return std::to_string(s.gp.primitives.functions.size()); };
+    k.set = [bounds](Settings& s, std::string_view t) {
+        auto n = static_cast<std::size_t>(detail::parse_integer(bounds, t));
+        auto all = tree::canonical_functions();
+        s.gp.primitives.functions.assign(all.begin(), all.begin() + static_cast<long>(n));
+    };
+    return k;
+}
+
+SettingKey consts_count_row() {
+    auto k = row("GP", "terminalConstsCount", ValueType::Int,
+                 "Thesis form of the constants: the first N of the canonical list (1 -1 0 2 -2 0.5 ...); "
+                 "must match the length of terminalConsts when both are given");
+    k.min = 0;
+    k.max = static_cast<double>(tree::canonical_constants().size());
+    SettingKey bounds = k;
+    k.get = [](const Settings& s) { return std::to_string(s.gp.primitives.constants.size()); };
+    k.set = [bounds](Settings& s, std::string_view t) {
+        auto n = static_cast<std::size_t>(detail::parse_integer(bounds, t));
+        auto all = tree::canonical_constants();
+        s.gp.primitives.constants.assign(all.begin(), all.begin() + static_cast<long>(n));
+    };
+    return k;
+}
+
+SettingKey function_probabilities_row() {
+    auto k = double_list_row("GP", "functionProbabilities", kPositive, 1,
+                             "Relative weight of each function for PTC1, in the order of functions; "
+                             "one number = the same weight for all",
+                             FIELD(gp.primitives.function_weights));
+    k.get = [](const Settings& s) {
+        const auto& p = s.gp.primitives;
+        std::vector<std::string> items;
+        for (double w : p.function_weights) items.push_back(format_double(w));
+        if (items.empty()) items.assign(p.functions.size(), "1");
+        return join(items);
+    };
+    auto parse = k.set;
+    k.set = [parse](Settings& s, std::string_view t) {
+        parse(s, t);
+        auto& w = s.gp.primitives.function_weights;
+        if (w.size() == 1) w.assign(std::max<std::size_t>(1, s.gp.primitives.functions.size()), w.front());
+    };
+    return k;
+}
+
+SettingKey synapse_types_row() {
+    auto k = row("Neural", "synapseTypes", ValueType::NameList,
+                 "Synapse types the substrate builds: ih (input-hidden), ho, hh, oo, oh (thesis fig. 6.8)");
+    for (auto& n : kSynapseNames) k.choices.push_back({n});
+    k.get = [](const Settings& s) {
+        std::vector<std::string> names;
+        for (std::size_t i = 0; i < kSynapseNames.size() && i < s.neural.synapse_enabled.size(); ++i)
+            if (s.neural.synapse_enabled[i]) names.push_back(kSynapseNames[i]);
+        return join(names);
+    };
+    k.set = [](Settings& s, std::string_view t) {
+        std::vector<bool> on(kSynapseNames.size(), false);
+        for (auto item : split_items(t)) {
+            auto it = std::find(kSynapseNames.begin(), kSynapseNames.end(), item);
+            if (it == kSynapseNames.end()) throw ValueError("unknown synapse type '" + std::string(item) + "'");
+            auto i = static_cast<std::size_t>(it - kSynapseNames.begin());
+            if (on[i]) throw ValueError("synapse type '" + std::string(item) + "' listed twice");
+            on[i] = true;
+        }
+        s.neural.synapse_enabled = on;
+    };
+    return k;
+}
+
+SettingKey forest_map_row() {
+    auto k = row("Neural", "forestMap", ValueType::IntList,
+                 "Tree index per synapse type (ih ho hh oo oh) when the genotype has several trees; "
+                 "empty = type i uses tree i mod numberOfTreesInForestGenotype");
+    k.min = 0;
+    k.max = 15;
+    k.min_items = 0;
+    k.max_items = kSynapseNames.size();
+    SettingKey bounds = k;
+    k.get = [](const Settings& s) {
+        std::vector<std::string> items;
+        for (int v : s.neural.forest_map) items.push_back(std::to_string(v));
+        return join(items);
+    };
+    k.set = [bounds](Settings& s, std::string_view t) {
+        std::vector<int> v;
+        for (auto item : split_items(t)) v.push_back(static_cast<int>(detail::parse_integer(bounds, item)));
+        s.neural.forest_map = std::move(v);
+    };
+    return k;
+}
+
+std::vector<SettingKey> build_table() {
+    using gp::BloatVariant;
+    using gp::InitMethod;
+    using gp::SelectionType;
+    std::vector<SettingKey> t;
+    // ---- Experiment (ours)
+    t.push_back(enum_row<ExperimentType>("Experiment", "type",
+                                         {{ExperimentType::Symreg, {"symreg"}}, {ExperimentType::HyperGP, {"hypergp"}}},
+                                         "Which experiment runs: symbolic regression or HyperGP robot control",
+                                         FIELD(experiment.type)));
+    {
+        auto k = row("Experiment", "seed", ValueType::UInt64, "Master random seed; the same seed gives the same run");
+        k.min = 0;
+        k.get = [](const Settings& s) { return std::to_string(s.experiment.seed); };
+        k.set = [](Settings& s, std::string_view v) { s.experiment.seed = detail::parse_uint64(v); };
+        t.push_back(std::move(k));
+    }
+    t.push_back(string_row("Experiment", "outputDirectory", ValueType::String, false,
+                           "Folder that receives the run folders NAME-NNN (relative to the current folder)", FIELD(experiment.output_directory)));
+    t.push_back(string_row("Experiment", "name", ValueType::String, true,
+                           "Run name (run folder prefix); empty = the settings file's name", FIELD(experiment.name)));
+    t.push_back(int_row("Experiment", "workers", 0, 4096, "Evaluation worker processes; 0 = one per core",
+                        FIELD(experiment.workers)));
+    t.push_back(int_row("Experiment", "checkpointInterval", 1, 1000000,
+                        "Generations between population checkpoint files", FIELD(experiment.checkpoint_interval)));
+    t.push_back(double_row("Experiment", "workerTimeout", kPositive,
+                           "Seconds before a hung worker is replaced", FIELD(experiment.worker_timeout)));
+    // ---- GP (thesis Appendix B)
+    t.push_back(double_row("GP", "defaultFitness", kAnyFinite, "Fitness of individuals before they are evaluated",
+                           FIELD(gp.default_fitness)));
+    t.push_back(int_row("GP", "generatedPopulationSize", 2, 10000000, "Individuals in each generation",
+                        FIELD(gp.population_size)));
+    t.push_back(double_row("GP", "expectedGeneratedTreeSize", {1.0, 1e6},
+                           "Expected tree size for PTC1 initialisation (thesis 6.3.4.4)", FIELD(gp.expected_tree_size)));
+    t.push_back(int_row("GP", "maximumGeneratedTreeDepth", 0, 20, "Maximum depth of generated trees",
+                        FIELD(gp.max_init_depth)));
+    t.push_back(int_row("GP", "minimumGeneratedTreeDepth", 0, 20, "Minimum depth of generated trees",
+                        FIELD(gp.min_init_depth)));
+    t.push_back(enum_row<InitMethod>("GP", "initMethod",
+                                     {{InitMethod::Ptc1, {"ptc1"}}, {InitMethod::Grow, {"grow"}},
+                                      {InitMethod::Full, {"full"}}, {InitMethod::RampedHalfAndHalf, {"rhh"}}},
+                                     "Tree initialisation: PTC1, grow, full or ramped half-and-half",
+                                     FIELD(gp.init_method)));
+    t.push_back(int_row("GP", "terminalVariableCount", 0, 64,
+                        "Variables x0..x{N-1} among the terminals (HyperGP: 4, x1 y1 x2 y2)",
+                        FIELD(gp.primitives.variable_count)));
+    t.push_back(function_count_row());
+    t.push_back(functions_row());
+    t.push_back(function_probabilities_row());
+    t.push_back(consts_count_row());
+    t.push_back(double_list_row("GP", "terminalConsts", kAnyFinite, 0,
+                                "Constant terminals by value (overrides terminalConstsCount)",
+                                FIELD(gp.primitives.constants)));
+    t.push_back(bool_row("GP", "ephemeralConstants", "Add ephemeral random constants drawn from [ephemeralMin, ephemeralMax]",
+                         FIELD(gp.primitives.ephemeral)));
+    t.push_back(double_row("GP", "ephemeralMin", kAnyFinite, "Lower bound of ephemeral constants",
+                           FIELD(gp.primitives.ephemeral_min)));
+    t.push_back(double_row("GP", "ephemeralMax", kAnyFinite, "Upper bound of ephemeral constants",
+                           FIELD(gp.primitives.ephemeral_max)));
+    t.push_back(double_row("GP", "variableWeight", kPositive, "Relative weight of each variable terminal",
+                           FIELD(gp.primitives.variable_weight)));
+    t.push_back(double_row("GP", "constantWeight", kPositive, "Relative weight of each constant terminal",
+                           FIELD(gp.primitives.constant_weight)));
+    t.push_back(enum_row<SelectionType>("GP", "selection_type",
+                                        {{SelectionType::Tournament, {"0", "tournament"}},
+                                         {SelectionType::Roulette, {"1", "roulette"}}},
+                                        "Selection: 0 tournament, 1 roulette", FIELD(gp.selection)));
+    t.push_back(int_row("GP", "tournament_size", 1, 10000000, "Individuals per tournament",
+                        FIELD(gp.tournament_size)));
+    t.push_back(bool_row("GP", "tournamentSelection",
+                         "On equal fitness prefer the smaller tree (lexicographic parsimony pressure)",
+                         FIELD(gp.lexicographic_parsimony)));
+    t.push_back(int_row("GP", "numberOfTreesInForestGenotype", 1, 16, "Trees per genotype (thesis 7.3.1)",
+                        FIELD(gp.trees_per_genotype)));
+    t.push_back(bool_row("GP", "preventDuplicates", "Generated trees are unique", FIELD(gp.prevent_duplicates)));
+    t.push_back(int_row("GP", "duplicateRetries", 0, 1000000,
+                        "Attempts to generate a unique tree before a duplicate is accepted",
+                        FIELD(gp.duplicate_retries)));
+    t.push_back(double_row("GP", "crossoverRate", kUnit, "Probability that a child comes from crossover",
+                           FIELD(gp.crossover_rate)));
+    t.push_back(double_row("GP", "mutationRate", kUnit,
+                           "Probability that a child comes from mutation (the rest is reproduction)",
+                           FIELD(gp.mutation_rate)));
+    t.push_back(int_row("GP", "elitism", 0, 10000000, "Best individuals copied unchanged into the next generation",
+                        FIELD(gp.elitism)));
+    t.push_back(int_row("GP", "maximumMutationDepth", 0, 20, "Maximum depth of subtrees grown by mutation",
+                        FIELD(gp.max_mutation_depth)));
+    t.push_back(int_row("GP", "maximumTreeDepth", 1, 100, "Hard depth limit of offspring when bloat control is off",
+                        FIELD(gp.max_tree_depth)));
+    // ---- Simulator
+    t.push_back(double_row("Simulator", "sample_from", kNonNegative, "Simulation start time, s", FIELD(sim.sample_from)));
+    t.push_back(double_row("Simulator", "sample_step", kPositive,
+                           "Control step, s: how often the network computes new outputs (thesis 7.2.3)",
+                           FIELD(sim.sample_step)));
+    t.push_back(double_row("Simulator", "sample_to", kPositive, "Simulation stop time, s", FIELD(sim.sample_to)));
+    t.push_back(double_row("Simulator", "delayed_start", kNonNegative,
+                           "Time at which the start position is taken for the fitness, s (thesis 7.1.2)",
+                           FIELD(sim.delayed_start)));
+    t.push_back(int_row("Simulator", "robot_type", 0, 2, "Robot: 0 R0, 1 R1, 2 R2 (thesis 7.1.1)",
+                        FIELD(robot.robot_type)));
+    t.push_back(string_row("Simulator", "robotFile", ValueType::Path, true,
+                           "Robot description XML; overrides robot_type when set", FIELD(robot.robot_file)));
+    t.push_back(int_row("Simulator", "extraTimeStepDivider", 1, 10000,
+                        "Physics substeps per control step (physics dt = sample_step / divider)",
+                        FIELD(sim.step_divider)));
+    t.push_back(bool_row("Simulator", "generatePovrayFiles", "Write POV-Ray scenes of the best individual's run",
+                         FIELD(robot.generate_povray)));
+    t.push_back(double_row("Simulator", "gravity", {0.0, 1000.0}, "Gravity, m/s^2 (pointing down)", FIELD(sim.gravity)));
+    t.push_back(double_row("Simulator", "erp", kUnit, "ODE error reduction parameter", FIELD(sim.erp)));
+    t.push_back(double_row("Simulator", "cfm", kUnit, "ODE constraint force mixing", FIELD(sim.cfm)));
+    t.push_back(int_row("Simulator", "quickStepIterations", 1, 10000, "ODE QuickStep iterations",
+                        FIELD(sim.quickstep_iterations)));
+    t.push_back(double_row("Simulator", "friction", {0.0, kHuge, false, true}, "Contact friction mu; inf = infinite",
+                           FIELD(sim.friction)));
+    t.push_back(double_row("Simulator", "softCfm", kUnit, "Contact softness (ODE soft CFM)", FIELD(sim.soft_cfm)));
+    t.push_back(double_row("Simulator", "bounce", kUnit, "Contact restitution", FIELD(sim.bounce)));
+    t.push_back(int_row("Simulator", "maxContacts", 1, 64, "Contact points per colliding geom pair",
+                        FIELD(sim.max_contacts)));
+    t.push_back(double_row("Simulator", "jointGain", {-1e6, 1e6},
+                           "Joint P-controller gain: velocity = gain * (angle - desired)", FIELD(sim.joint_gain)));
+    t.push_back(double_row("Simulator", "maxMotorForce", kPositive, "Maximum joint motor force, N", FIELD(sim.max_motor_force)));
+    t.push_back(double_row("Simulator", "blowupBound", kPositive,
+                           "A position or velocity beyond this counts as a physics blow-up", FIELD(sim.blowup_bound)));
+    t.push_back(double_row("Simulator", "failureFitness", kAnyFinite, "Fitness given to a failed (blown-up) evaluation",
+                           FIELD(sim.failure_fitness)));
+    // ---- Control
+    t.push_back(int_row("Control", "maximumIterations", 0, 10000000, "Maximum number of generations",
+                        FIELD(control.maximum_iterations)));
+    t.push_back(double_row("Control", "minimumFitness", {-kHuge, kHuge, false, true},
+                           "Stop early once the best fitness reaches this (inf = never)", FIELD(control.minimum_fitness)));
+    t.push_back(string_row("Control", "populationXmlLoadFrom", ValueType::Path, true,
+                           "Start from this population file instead of a new one (empty = generate)",
+                           FIELD(control.population_load_from)));
+    t.push_back(bool_row("Control", "useMatlabPlot", "Write statistics plots (gnuplot; replaces the thesis's Matlab plots)",
+                         FIELD(control.plot)));
+    t.push_back(bool_row("Control", "isAutonomousExperiment", "1 = never open the viewer; 0 = show the best at the end",
+                         FIELD(control.autonomous)));
+    // ---- BloatControl
+    t.push_back(bool_row("BloatControl", "useBloatControl", "Use Dynamic Limits bloat control (thesis 5.2)",
+                         FIELD(bloat.enabled)));
+    t.push_back(enum_row<BloatVariant>("BloatControl", "bloatControlVariant",
+                                       {{BloatVariant::Simple, {"0", "simple"}},
+                                        {BloatVariant::Heavy, {"1", "heavy"}},
+                                        {BloatVariant::VeryHeavy, {"2", "veryHeavy"}}},
+                                       "Dynamic Limits variant: 0 simple, 1 heavy, 2 very heavy", FIELD(bloat.variant)));
+    // ---- Neural
+    t.push_back(double_row("Neural", "synopsisThreshold", kNonNegative,
+                           "Synapses with |weight| below this are left out of the substrate", FIELD(neural.threshold)));
+    t.push_back(bool_row("Neural", "useMiddleLegs", "Use the 6-leg variant of the robot (0 = 4 legs)",
+                         FIELD(neural.middle_legs)));
+    t.push_back(int_row("Neural", "sampleAverageCount", 1, 1000, "Consecutive sample averaging (thesis 7.3.2.1)",
+                        FIELD(neural.sample_average_count)));
+    t.push_back(synapse_types_row());
+    t.push_back(forest_map_row());
+    t.push_back(enum_row<nn::WeightRule>("Neural", "weightRule",
+                                         {{nn::WeightRule::Raw, {"raw"}}, {nn::WeightRule::Scaled, {"scaled"}}},
+                                         "Synapse weight: raw CPPF output, or rescaled to +-maxWeight",
+                                         FIELD(neural.weight_rule)));
+    t.push_back(double_row("Neural", "maxWeight", kPositive, "Largest |weight| for weightRule scaled",
+                           FIELD(neural.max_weight)));
+    t.push_back(enum_row<nn::NeuronModel>("Neural", "neuronModel",
+                                          {{nn::NeuronModel::Tanh, {"tanh"}}, {nn::NeuronModel::Integrating, {"integrating"}}},
+                                          "Neuron model (thesis eq. 7.2-7.3)", FIELD(neural.neuron)));
+    t.push_back(bool_row("Neural", "biasInput", "Add a constant bias input neuron", FIELD(neural.bias_input)));
+    t.push_back(bool_row("Neural", "clockInputs", "Add sin/cos clock input neurons", FIELD(neural.clock_inputs)));
+    t.push_back(double_row("Neural", "clockPeriod", kPositive, "Period of the clock inputs, s", FIELD(neural.clock_period)));
+    t.push_back(bool_row("Neural", "extraCppfInputs", "Give the CPPF layer index and distance as extra inputs",
+                         FIELD(neural.extra_cppf_inputs)));
+    t.push_back(enum_row<nn::OscillationPenalty>("Neural", "oscillationPenalty",
+                                                 {{nn::OscillationPenalty::None, {"none"}},
+                                                  {nn::OscillationPenalty::Frequency, {"frequency"}},
+                                                  {nn::OscillationPenalty::CommandChange, {"commandChange"}}},
+                                                 "Fitness penalty for jittery control", FIELD(neural.penalty)));
+    t.push_back(double_row("Neural", "penaltyMaxFrequency", kPositive,
+                           "Command frequency above which the frequency penalty applies, Hz",
+                           FIELD(neural.penalty_max_frequency)));
+    t.push_back(double_row("Neural", "penaltyWeight", kNonNegative, "Weight of the command-change penalty",
+                           FIELD(neural.penalty_weight)));
+    // ---- SymbolicRegression
+    t.push_back(string_row("SymbolicRegression", "target", ValueType::String, false,
+                           "Benchmark name (koza-1 ...) or an expression over x0, x1, ...", FIELD(symreg.target)));
+    t.push_back(string_row("SymbolicRegression", "dataFile", ValueType::Path, true,
+                           "CSV with a header; the last column is the target (overrides target)",
+                           FIELD(symreg.data_file)));
+    t.push_back(int_row("SymbolicRegression", "samples", 1, 10000000, "Equidistant sample points in [rangeMin, rangeMax]",
+                        FIELD(symreg.samples)));
+    t.push_back(double_row("SymbolicRegression", "rangeMin", kAnyFinite, "Lower end of the sampled range",
+                           FIELD(symreg.range_min)));
+    t.push_back(double_row("SymbolicRegression", "rangeMax", kAnyFinite, "Upper end of the sampled range",
+                           FIELD(symreg.range_max)));
+    t.push_back(bool_row("SymbolicRegression", "benchmarkSampling",
+                         "Use the named benchmark's own training points instead of samples/range",
+                         FIELD(symreg.benchmark_sampling)));
+    t.push_back(double_row("SymbolicRegression", "hitTolerance", kNonNegative,
+                           "A point is a hit when |error| <= this", FIELD(symreg.hit_tolerance)));
+    return t;
+}
+
+#undef FIELD
+
+} // namespace
+
+std::string_view type_name(ValueType t) {
+    switch (t) {
+    case ValueType::Bool: return "bool";
+    case ValueType::Int: return "int";
+    case ValueType::UInt64: return "uint64";
+    case ValueType::Double: return "number";
+    case ValueType::String: return "text";
+    case ValueType::Path: return "path";
+    case ValueType::Enum: return "name";
+    case ValueType::NameList: return "names";
+    case ValueType::DoubleList: return "numbers";
+    case ValueType::IntList: return "integers";
+    }
+    return "?";
+}
+
+const std::vector<std::string>& settings_sections() {
+    static const std::vector<std::string> s{"Experiment", "GP",     "Simulator",          "Control",
+                                            "BloatControl", "Neural", "SymbolicRegression"};
+    return s;
+}
+
+const std::vector<SettingKey>& settings_table() {
+    static const std::vector<SettingKey> table = build_table();
+    return table;
+}
+
+const SettingKey* find_setting(std::string_view section, std::string_view key) {
+    for (const auto& k : settings_table())
+        if (k.section == section && k.key == key) return &k;
+    return nullptr;
+}
+
+namespace {
+std::string bounds_text(const SettingKey& k, std::string_view what) {
+    bool integer = k.type == ValueType::Int || k.type == ValueType::IntList;
+    auto format_double = [integer](double v) {
+        return integer ? std::to_string(static_cast<long long>(v)) : detail::format_double(v);
+    };
+    bool has_min = k.min > -kHuge, has_max = k.max < kHuge;
+    std::string s(what);
+    if (has_min && has_max)
+        s += std::string(" in ") + (k.min_exclusive ? "(" : "[") + format_double(k.min) + ", " + format_double(k.max) + "]";
+    else if (has_min)
+        s += (k.min_exclusive ? " > " : " >= ") + format_double(k.min);
+    else if (has_max)
+        s += " <= " + format_double(k.max);
+    else if (k.type == ValueType::Double || k.type == ValueType::DoubleList)
+        s = "any finite " + std::string(what);
+    if (k.allow_inf) s += " or inf";
+    return s;
+}
+
+std::string choices_text(const SettingKey& k) {
+    std::vector<std::string> items;
+    for (const auto& c : k.choices) items.push_back(join(c, "|"));
+    return join(items, ", ");
+}
+} // namespace
+
+std::string describe_allowed(const SettingKey& k) {
+    switch (k.type) {
+    case ValueType::Bool: return "0 or 1";
+    case ValueType::Int: return bounds_text(k, "integer");
+    case ValueType::UInt64: return "integer in [0, 18446744073709551615]";
+    case ValueType::Double: return bounds_text(k, "number");
+    case ValueType::String: return k.min_items == 0 ? "text (may be empty)" : "non-empty text";
+    case ValueType::Path: return k.min_items == 0 ? "file path (empty = none)" : "non-empty path";
+    case ValueType::Enum: return "one of: " + choices_text(k);
+    case ValueType::NameList:
+        return "space-separated distinct names from: " + choices_text(k);
+    case ValueType::DoubleList:
+        return "space-separated list of " + bounds_text(k, "numbers") + (k.min_items == 0 ? " (may be empty)" : "");
+    case ValueType::IntList: {
+        std::string s = "space-separated list of " + bounds_text(k, "integers");
+        if (k.max_items < std::numeric_limits<std::size_t>::max())
+            s += ", at most " + std::to_string(k.max_items);
+        return s + (k.min_items == 0 ? " (may be empty)" : "");
+    }
+    }
+    return {};
+}
+
+std::string default_text(const SettingKey& k) {
+    static const Settings defaults{};
+    return k.get(defaults);
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                        std::tolower(static_cast<unsigned char>(b[j - 1]));
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (same ? 0 : 1)});
+        }
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+} // namespace cic::io

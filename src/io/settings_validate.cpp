@@ -1,0 +1,90 @@
+// Cross-field checks of Settings, run once after all layers are applied.
+// Single-key checks (type, range) happen in the table's setters.
+#include "cic/core/error.hpp"
+#include "cic/io/settings_table.hpp"
+#include "settings_values.hpp"
+
+namespace cic::io::detail {
+namespace {
+
+// Builds "<Sec> a = 1 must be <= b = 2" errors located at the first of the
+// named keys the user actually wrote (else at the settings file).
+class Checker {
+public:
+    Checker(const Settings& s, const Locations& locs) : s_(s), locs_(locs) {}
+
+    void require(bool ok, const std::vector<const char*>& keys, const std::string& why) const {
+        if (ok) return;
+        Location where{s_.source_file, 0};
+        for (const char* k : keys)
+            if (auto it = locs_.find(k); it != locs_.end()) {
+                where = it->second;
+                break;
+            }
+        std::string msg;
+        for (std::size_t i = 0; i < keys.size(); ++i) {
+            std::string_view full = keys[i];
+            auto dot = full.find('.');
+            const SettingKey* k = find_setting(full.substr(0, dot), full.substr(dot + 1));
+            msg += (i ? ", " : "") + std::string("<") + std::string(full.substr(0, dot)) + "> " +
+                   std::string(full.substr(dot + 1)) + " = \"" + (k ? k->get(s_) : "?") + "\"";
+        }
+        throw InputError(msg + ": " + why, where.file, where.line);
+    }
+
+private:
+    const Settings& s_;
+    const Locations& locs_;
+};
+
+} // namespace
+
+void validate(const Settings& s, const Locations& locs) {
+    Checker c(s, locs);
+    const auto& gp = s.gp;
+    const auto& p = gp.primitives;
+    c.require(gp.min_init_depth <= gp.max_init_depth,
+              {"GP.minimumGeneratedTreeDepth", "GP.maximumGeneratedTreeDepth"},
+              "the minimum depth must not exceed the maximum depth");
+    c.require(gp.max_init_depth <= gp.max_tree_depth, {"GP.maximumGeneratedTreeDepth", "GP.maximumTreeDepth"},
+              "generated trees must fit the hard depth limit");
+    c.require(gp.crossover_rate + gp.mutation_rate <= 1.0 + 1e-12, {"GP.crossoverRate", "GP.mutationRate"},
+              "crossover and mutation rates must sum to at most 1");
+    c.require(gp.tournament_size <= gp.population_size, {"GP.tournament_size", "GP.generatedPopulationSize"},
+              "the tournament cannot be larger than the population");
+    c.require(gp.elitism < gp.population_size, {"GP.elitism", "GP.generatedPopulationSize"},
+              "elitism must leave room for offspring (elitism < population size)");
+    c.require(p.function_weights.empty() || p.function_weights.size() == p.functions.size(),
+              {"GP.functionProbabilities", "GP.functions"}, "give one weight per function (or a single weight for all)");
+    c.require(!p.ephemeral || p.ephemeral_min < p.ephemeral_max, {"GP.ephemeralMin", "GP.ephemeralMax"},
+              "the ephemeral constant range is empty");
+    c.require(p.variable_count > 0 || !p.constants.empty() || p.ephemeral,
+              {"GP.terminalVariableCount", "GP.terminalConsts", "GP.ephemeralConstants"},
+              "trees need at least one terminal (a variable, a constant or ephemeral constants)");
+
+    const auto& sim = s.sim;
+    c.require(sim.sample_from < sim.sample_to, {"Simulator.sample_from", "Simulator.sample_to"},
+              "the simulation must start before it stops");
+    c.require(sim.sample_from <= sim.delayed_start && sim.delayed_start < sim.sample_to,
+              {"Simulator.delayed_start", "Simulator.sample_from", "Simulator.sample_to"},
+              "delayed_start must lie in [sample_from, sample_to)");
+    c.require(sim.sample_step <= sim.sample_to - sim.sample_from,
+              {"Simulator.sample_step", "Simulator.sample_from", "Simulator.sample_to"},
+              "the control step is longer than the simulated time");
+
+    const auto& nn = s.neural;
+    c.require(nn.forest_map.empty() || nn.forest_map.size() == static_cast<std::size_t>(nn::kSynapseTypes),
+              {"Neural.forestMap"}, "give one tree index per synapse type (5) or none");
+    for (int t : nn.forest_map)
+        c.require(t < gp.trees_per_genotype, {"Neural.forestMap", "GP.numberOfTreesInForestGenotype"},
+                  "a tree index is past the last tree of the genotype");
+
+    c.require(s.symreg.range_min < s.symreg.range_max,
+              {"SymbolicRegression.rangeMin", "SymbolicRegression.rangeMax"}, "the sampled range is empty");
+
+    const auto& name = s.experiment.name;
+    c.require(name.find('/') == std::string::npos && name != "." && name != "..", {"Experiment.name"},
+              "the run name becomes a folder name and cannot contain '/'");
+}
+
+} // namespace cic::io::detail

@@ -1,0 +1,37 @@
+#pragma once
+// Text <-> value conversions shared by the settings table and reader (private to src/io).
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cic/io/settings_table.hpp"
+
+namespace cic::io::detail {
+
+// Shortest text that reads back to exactly v; "inf" / "-inf" for infinities.
+std::string format_double(double v);
+std::string join(const std::vector<std::string>& items, std::string_view sep = " ");
+// Splits on whitespace; rejects commas with a hint (lists are space-separated).
+std::vector<std::string_view> split_items(std::string_view text);
+
+bool parse_bool(std::string_view text);
+long long parse_integer(const SettingKey& k, std::string_view text);        // checks k's range
+std::uint64_t parse_uint64(std::string_view text);
+double parse_number(const SettingKey& k, std::string_view text);            // checks k's range
+// Index of the choice whose spellings contain text; throws ValueError otherwise.
+std::size_t parse_choice(const SettingKey& k, std::string_view text);
+
+// Where each key got its value ("Section.key" -> file, line), so cross-field
+// errors can point at the line the user wrote.
+struct Location {
+    std::string file;
+    int line = 0;
+};
+using Locations = std::map<std::string, Location>;
+
+// Cross-field checks; messages point at `locations` where known (settings_validate.cpp).
+void validate(const Settings& s, const Locations& locations);
+
+} // namespace cic::io::detail

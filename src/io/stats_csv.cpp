@@ -1,0 +1,26 @@
+#include "cic/io/stats_csv.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace cic::io {
+
+std::string to_csv_row(const gp::GenerationRecord& r) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, "%d,%.17g,%.17g,%.17g,%.6g,%d,%.6g,%zu,%d,%d,%ld,%.3f", r.generation, r.best, r.mean,
+                  r.median, r.mean_depth, r.max_depth, r.mean_size, r.max_size, r.limit, r.illegal, r.evaluations,
+                  r.wall_seconds);
+    return buf;
+}
+
+StatsWriter::StatsWriter(const std::filesystem::path& path) : path_(path), out_(path) {
+    if (!out_) throw std::runtime_error(path.string() + ": cannot write statistics file");
+    out_ << kStatsColumns << '\n' << std::flush;
+}
+
+void StatsWriter::write(const gp::GenerationRecord& r) {
+    out_ << to_csv_row(r) << '\n' << std::flush;
+    if (!out_) throw std::runtime_error(path_.string() + ": write failed (disk full?)");
+}
+
+} // namespace cic::io

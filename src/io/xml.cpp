@@ -1,0 +1,294 @@
+#include "cic/io/xml.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+#include <libxml/xmlerror.h>
+#include <libxml/xmlschemas.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace cic::io::xml {
+namespace {
+
+const xmlChar* X(const char* s) { return reinterpret_cast<const xmlChar*>(s); }
+const char* C(const xmlChar* s) { return reinterpret_cast<const char*>(s); }
+
+// Collects libxml2's structured errors as "FILE:LINE: message" lines.
+struct ErrorSink {
+    std::string fallback_file;
+    std::vector<std::string> lines;
+    int first_line = 0;
+};
+
+#if LIBXML_VERSION >= 21200
+void collect(void* user, const xmlError* e) {
+#else
+void collect(void* user, xmlErrorPtr e) {
+#endif
+    auto* sink = static_cast<ErrorSink*>(user);
+    if (e == nullptr || e->level == XML_ERR_WARNING) return;
+    std::string msg = e->message ? trim(e->message) : std::string("unknown XML error");
+    std::string file = e->file ? e->file : sink->fallback_file;
+    if (sink->lines.empty()) sink->first_line = e->line;
+    sink->lines.push_back(file + (e->line > 0 ? ":" + std::to_string(e->line) : std::string()) +
+                          ": " + msg);
+}
+
+// Installs the sink for the duration of one libxml2 call (libxml2 keeps the
+// handler per thread, so this is safe with threads).
+class ScopedErrors {
+public:
+    explicit ScopedErrors(ErrorSink& sink) { xmlSetStructuredErrorFunc(&sink, collect); }
+    ~ScopedErrors() { xmlSetStructuredErrorFunc(nullptr, nullptr); }
+    ScopedErrors(const ScopedErrors&) = delete;
+    ScopedErrors& operator=(const ScopedErrors&) = delete;
+};
+
+const std::string kNoFile;
+
+} // namespace
+
+std::string trim(std::string_view s) {
+    const char* ws = " \t\r\n\v\f";
+    auto b = s.find_first_not_of(ws);
+    if (b == std::string_view::npos) return {};
+    auto e = s.find_last_not_of(ws);
+    return std::string(s.substr(b, e - b + 1));
+}
+
+// ---------------------------------------------------------------- Node
+
+std::string_view Node::name() const { return C(node_->name); }
+
+int Node::line() const { return static_cast<int>(xmlGetLineNo(node_)); }
+
+const std::string& Node::file() const {
+    if (node_ && node_->doc && node_->doc->_private)
+        return *static_cast<const std::string*>(node_->doc->_private);
+    return kNoFile;
+}
+
+std::string Node::text() const {
+    xmlChar* content = xmlNodeGetContent(node_);
+    std::string s = content ? trim(C(content)) : std::string();
+    xmlFree(content);
+    return s;
+}
+
+std::optional<std::string> Node::attribute(std::string_view attr) const {
+    std::string a(attr);
+    xmlChar* v = xmlGetProp(node_, X(a.c_str()));
+    if (!v) return std::nullopt;
+    std::string s = C(v);
+    xmlFree(v);
+    return s;
+}
+
+std::vector<Node> Node::children() const {
+    std::vector<Node> out;
+    for (xmlNode* c = node_->children; c; c = c->next)
+        if (c->type == XML_ELEMENT_NODE) out.emplace_back(c);
+    return out;
+}
+
+Node Node::child(std::string_view element) const {
+    for (xmlNode* c = node_->children; c; c = c->next)
+        if (c->type == XML_ELEMENT_NODE && element == C(c->name)) return Node(c);
+    return Node();
+}
+
+bool Node::has_element_children() const {
+    for (xmlNode* c = node_->children; c; c = c->next)
+        if (c->type == XML_ELEMENT_NODE) return true;
+    return false;
+}
+
+InputError Node::error(const std::string& message) const {
+    return InputError(message, file(), node_ ? line() : 0);
+}
+
+Node Node::add_child(std::string_view element, std::string_view text) {
+    std::string e(element), t(text);
+    return Node(xmlNewTextChild(node_, nullptr, X(e.c_str()), X(t.c_str())));
+}
+
+Node Node::add_element(std::string_view element) {
+    std::string e(element);
+    return Node(xmlNewChild(node_, nullptr, X(e.c_str()), nullptr));
+}
+
+void Node::set_attribute(std::string_view attr, std::string_view value) {
+    std::string a(attr), v(value);
+    xmlSetProp(node_, X(a.c_str()), X(v.c_str()));
+}
+
+void Node::add_comment(std::string_view comment) {
+    std::string c(comment);
+    for (auto p = c.find("--"); p != std::string::npos; p = c.find("--", p)) c.replace(p, 2, "- ");
+    if (!c.empty() && c.back() == '-') c += ' ';
+    xmlAddChild(node_, xmlNewComment(X(c.c_str())));
+}
+
+// ---------------------------------------------------------------- Document
+
+Document::Document(_xmlDoc* doc, std::string file)
+    : doc_(doc), file_(std::make_unique<std::string>(std::move(file))) {
+    doc_->_private = file_.get();
+}
+
+Document::Document(Document&& o) noexcept : doc_(o.doc_), file_(std::move(o.file_)) {
+    o.doc_ = nullptr;
+}
+
+Document& Document::operator=(Document&& o) noexcept {
+    if (this != &o) {
+        if (doc_) xmlFreeDoc(doc_);
+        doc_ = o.doc_;
+        file_ = std::move(o.file_);
+        o.doc_ = nullptr;
+    }
+    return *this;
+}
+
+Document::~Document() {
+    if (doc_) xmlFreeDoc(doc_);
+}
+
+Node Document::root() const { return Node(xmlDocGetRootElement(doc_)); }
+
+std::string read_file(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError("cannot read: is a directory", path.string());
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(std::string("cannot read: ") + std::strerror(errno), path.string());
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) throw InputError("cannot read: I/O error", path.string());
+    return ss.str();
+}
+
+Document Document::load_file(const std::filesystem::path& path) {
+    return parse_string(read_file(path), path.string());
+}
+
+Document Document::parse_string(std::string_view text, const std::string& name) {
+    if (trim(text).empty()) throw InputError("empty file: expected an XML document", name);
+    ErrorSink sink{name, {}, 0};
+    xmlDoc* doc = nullptr;
+    {
+        ScopedErrors guard(sink);
+        doc = xmlReadMemory(text.data(), static_cast<int>(text.size()), name.c_str(), nullptr,
+                            XML_PARSE_NONET | XML_PARSE_BIG_LINES);
+    }
+    if (!doc || !sink.lines.empty()) {
+        if (doc) xmlFreeDoc(doc);
+        if (sink.lines.empty()) throw InputError("malformed XML", name);
+        // The first error is the cause; later ones are usually consequences.
+        std::string msg = sink.lines.front();
+        auto colon = msg.find(": ");
+        throw InputError("malformed XML: " + msg.substr(colon + 2), name, sink.first_line);
+    }
+    if (!xmlDocGetRootElement(doc)) {
+        xmlFreeDoc(doc);
+        throw InputError("no root element", name);
+    }
+    return Document(doc, name);
+}
+
+Document Document::create(std::string_view root_element) {
+    xmlDoc* doc = xmlNewDoc(X("1.0"));
+    std::string r(root_element);
+    xmlDocSetRootElement(doc, xmlNewDocNode(doc, nullptr, X(r.c_str()), nullptr));
+    return Document(doc, std::string());
+}
+
+std::string Document::to_string() const {
+    xmlChar* buf = nullptr;
+    int size = 0;
+    xmlDocDumpFormatMemoryEnc(doc_, &buf, &size, "UTF-8", 1);
+    if (!buf) throw std::runtime_error("cannot serialise XML document");
+    std::string s(C(buf), static_cast<std::size_t>(size));
+    xmlFree(buf);
+    return s;
+}
+
+void Document::save_atomically(const std::filesystem::path& path) const {
+    write_file_atomically(path, to_string());
+}
+
+std::vector<std::string> Document::validate(const std::filesystem::path& xsd) const {
+    std::string xsd_name = xsd.string();
+    ErrorSink sink{xsd_name, {}, 0};
+    ScopedErrors guard(sink);
+    std::unique_ptr<xmlSchemaParserCtxt, decltype(&xmlSchemaFreeParserCtxt)> pctx(
+        xmlSchemaNewParserCtxt(xsd_name.c_str()), xmlSchemaFreeParserCtxt);
+    std::unique_ptr<xmlSchema, decltype(&xmlSchemaFree)> schema(
+        pctx ? xmlSchemaParse(pctx.get()) : nullptr, xmlSchemaFree);
+    if (!schema) {
+        std::string why = sink.lines.empty() ? std::string("cannot load schema") : sink.lines.front();
+        throw InputError("invalid XML schema: " + why, xsd_name);
+    }
+    sink.lines.clear();
+    sink.fallback_file = file();
+    std::unique_ptr<xmlSchemaValidCtxt, decltype(&xmlSchemaFreeValidCtxt)> vctx(
+        xmlSchemaNewValidCtxt(schema.get()), xmlSchemaFreeValidCtxt);
+    xmlSchemaSetValidStructuredErrors(vctx.get(), collect, &sink);
+    int rc = xmlSchemaValidateDoc(vctx.get(), doc_);
+    if (rc != 0 && sink.lines.empty()) sink.lines.push_back(file() + ": does not match the schema");
+    return sink.lines;
+}
+
+// ---------------------------------------------------------------- files
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view text) {
+    auto fail = [&](const std::string& what, const std::filesystem::path& p) {
+        throw std::runtime_error("cannot write " + p.string() + ": " + what + ": " +
+                                 std::strerror(errno));
+    };
+    std::filesystem::path tmp = path;
+    tmp += ".tmp-" + std::to_string(::getpid());
+    int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) fail("open", tmp);
+    const char* p = text.data();
+    std::size_t left = text.size();
+    while (left > 0) {
+        ssize_t n = ::write(fd, p, left);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            int saved = errno;
+            ::close(fd);
+            ::unlink(tmp.c_str());
+            errno = saved;
+            fail("write", tmp);
+        }
+        p += n;
+        left -= static_cast<std::size_t>(n);
+    }
+    bool synced = ::fsync(fd) == 0;
+    int saved = errno;
+    if (::close(fd) != 0 && synced) {
+        synced = false;
+        saved = errno;
+    }
+    if (!synced) {
+        ::unlink(tmp.c_str());
+        errno = saved;
+        fail("fsync", tmp);
+    }
+    if (::rename(tmp.c_str(), path.c_str()) != 0) {
+        int saved = errno;
+        ::unlink(tmp.c_str());
+        errno = saved;
+        fail("rename", path);
+    }
+}
+
+} // namespace cic::io::xml

@@ -1,0 +1,198 @@
+// Text forms for worker jobs (see job_text.hpp).
+#include "cic/sim/job_text.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace cic::sim {
+
+namespace {
+
+[[noreturn]] void bad(const std::string& what) {
+    throw std::invalid_argument("job text: " + what);
+}
+
+std::string expect_word(std::istream& in, const char* word) {
+    std::string w;
+    if (!(in >> w) || w != word) bad(std::string("expected '") + word + "', got '" + w + "'");
+    return w;
+}
+
+double read_double(std::istream& in) {
+    std::string w;
+    if (!(in >> w)) bad("expected a number");
+    return parse_hexfloat(w);
+}
+
+long read_int(std::istream& in) {
+    long v = 0;
+    if (!(in >> v)) bad("expected an integer");
+    return v;
+}
+
+// SimConfig fields by name, in one table.
+template <class F>
+void for_each_field(SimConfig& c, F f) {
+    f("sample_from", c.sample_from);
+    f("sample_step", c.sample_step);
+    f("sample_to", c.sample_to);
+    f("delayed_start", c.delayed_start);
+    f("step_divider", c.step_divider);
+    f("gravity", c.gravity);
+    f("erp", c.erp);
+    f("cfm", c.cfm);
+    f("quickstep_iterations", c.quickstep_iterations);
+    f("friction", c.friction);
+    f("soft_cfm", c.soft_cfm);
+    f("bounce", c.bounce);
+    f("max_contacts", c.max_contacts);
+    f("joint_gain", c.joint_gain);
+    f("max_motor_force", c.max_motor_force);
+    f("blowup_bound", c.blowup_bound);
+    f("failure_fitness", c.failure_fitness);
+}
+
+} // namespace
+
+std::string hexfloat(double v) {
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    if (std::isnan(v)) return "nan";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%a", v);
+    return buf;
+}
+
+double parse_hexfloat(const std::string& s) {
+    if (s == "inf") return std::numeric_limits<double>::infinity();
+    if (s == "-inf") return -std::numeric_limits<double>::infinity();
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (s.empty() || end != s.c_str() + s.size()) bad("not a number: '" + s + "'");
+    return v;
+}
+
+void write_robot_text(std::ostream& out, const RobotSpec& r) {
+    auto one_line = [](const std::string& s) {
+        if (s.find('\n') != std::string::npos) bad("a robot or module name spans lines: '" + s + "'");
+    };
+    one_line(r.name);
+    for (const Module& m : r.modules) one_line(m.name);
+    out << "robot " << r.modules.size() << ' ' << r.centre << ' ' << to_string(r.preferred) << ' '
+        << r.name << '\n';
+    for (const Module& m : r.modules)
+        out << "module " << m.cell.x << ' ' << m.cell.y << ' ' << m.cell.z << ' ' << to_string(m.axis)
+            << ' ' << to_string(m.attach) << ' ' << m.name << '\n';
+}
+
+RobotSpec read_robot_text(std::istream& in) {
+    RobotSpec r;
+    expect_word(in, "robot");
+    const long n = read_int(in);
+    if (n < 0 || n > 1000000) bad("bad module count");
+    r.centre = static_cast<int>(read_int(in));
+    std::string w;
+    in >> w;
+    auto pref = axis_from_name(w);
+    if (!pref) bad("bad preferred axis '" + w + "'");
+    r.preferred = *pref;
+    if (in.peek() == ' ') in.get();
+    std::getline(in, r.name);
+    for (long i = 0; i < n; ++i) {
+        expect_word(in, "module");
+        Module m;
+        m.cell.x = static_cast<int>(read_int(in));
+        m.cell.y = static_cast<int>(read_int(in));
+        m.cell.z = static_cast<int>(read_int(in));
+        std::string a, d;
+        in >> a >> d;
+        auto axis = axis_from_name(a);
+        auto dir = dir_from_name(d);
+        if (!axis || !dir) bad("bad module axis or attach '" + a + "' '" + d + "'");
+        m.axis = *axis;
+        m.attach = *dir;
+        if (in.peek() == ' ') in.get();
+        std::getline(in, m.name);
+        r.modules.push_back(m);
+    }
+    return r;
+}
+
+void write_config_text(std::ostream& out, const SimConfig& cfg) {
+    SimConfig c = cfg;
+    out << "config\n";
+    for_each_field(c, [&](const char* name, auto& v) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, double>)
+            out << name << ' ' << hexfloat(v) << '\n';
+        else
+            out << name << ' ' << v << '\n';
+    });
+    out << "end\n";
+}
+
+SimConfig read_config_text(std::istream& in) {
+    SimConfig c;
+    expect_word(in, "config");
+    for_each_field(c, [&](const char* name, auto& v) {
+        expect_word(in, name);
+        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, double>)
+            v = read_double(in);
+        else
+            v = static_cast<int>(read_int(in));
+    });
+    expect_word(in, "end");
+    return c;
+}
+
+std::string format_eval_reply(const EvalResult& r) {
+    std::ostringstream out;
+    out << "fitness " << hexfloat(r.fitness) << "\nfailed " << (r.failed ? 1 : 0) << '\n'
+        << r.failure;
+    return out.str();
+}
+
+EvalReply parse_eval_reply(const std::string& text) {
+    std::istringstream in(text);
+    EvalReply e;
+    expect_word(in, "fitness");
+    e.fitness = read_double(in);
+    expect_word(in, "failed");
+    e.failed = read_int(in) != 0;
+    in.get();
+    std::getline(in, e.failure, '\0');
+    return e;
+}
+
+std::string make_sine_job(const RobotSpec& robot, const SimConfig& cfg,
+                          const std::vector<SineJoint>& joints) {
+    std::ostringstream out;
+    out << "sine\n";
+    write_robot_text(out, robot);
+    write_config_text(out, cfg);
+    out << "joints " << joints.size() << '\n';
+    for (const SineJoint& j : joints)
+        out << hexfloat(j.amplitude) << ' ' << hexfloat(j.frequency) << ' ' << hexfloat(j.phase) << '\n';
+    return out.str();
+}
+
+std::string run_sine_job(const std::string& body) {
+    std::istringstream in(body);
+    const RobotSpec robot = read_robot_text(in);
+    const SimConfig cfg = read_config_text(in);
+    expect_word(in, "joints");
+    const long n = read_int(in);
+    if (n < 1 || n > 100000) bad("bad joint count");
+    std::vector<SineJoint> joints(static_cast<std::size_t>(n));
+    for (SineJoint& j : joints) {
+        j.amplitude = read_double(in);
+        j.frequency = read_double(in);
+        j.phase = read_double(in);
+    }
+    SineController controller(std::move(joints));
+    return format_eval_reply(evaluate(robot, controller, cfg));
+}
+
+} // namespace cic::sim

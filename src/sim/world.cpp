@@ -1,0 +1,154 @@
+// Building and stepping one robot world (see docs/simulator.md for the model).
+#include "src/sim/world.hpp"
+
+#include <cmath>
+#include <mutex>
+#include <stdexcept>
+
+namespace cic::sim {
+
+void ensure_ode_initialised() {
+    static std::once_flag once;
+    std::call_once(once, [] { dInitODE2(0); });
+    dAllocateODEDataForThread(dAllocateMaskAll);
+}
+
+World::World(const Layout& layout, const SimConfig& cfg) : layout_(layout) {
+    ensure_ode_initialised();
+    max_contacts_ = cfg.max_contacts;
+    scratch_.resize(static_cast<std::size_t>(max_contacts_));
+    dSurfaceParameters& s = contact_template_.surface;
+    s.mode = dContactApprox1 | dContactSoftCFM | dContactBounce;
+    s.mu = std::isinf(cfg.friction) ? dInfinity : cfg.friction;
+    s.soft_cfm = cfg.soft_cfm;
+    s.bounce = cfg.bounce;
+    s.bounce_vel = 0.1;   // minimum impact speed for a bounce (m/s)
+
+    // Constructed step by step; the destructor copes with a partial world.
+    try {
+        world_ = dWorldCreate();
+        threading_ = dThreadingAllocateSelfThreadedImplementation();
+        if (!world_ || !threading_) throw std::runtime_error("ODE: cannot create a world");
+        dWorldSetStepThreadingImplementation(world_, dThreadingImplementationGetFunctions(threading_),
+                                             threading_);
+        dWorldSetGravity(world_, 0, 0, -cfg.gravity);
+        dWorldSetERP(world_, cfg.erp);
+        dWorldSetCFM(world_, cfg.cfm);
+        dWorldSetQuickStepNumIterations(world_, cfg.quickstep_iterations);
+        robot_space_ = dSimpleSpaceCreate(nullptr);
+        dSpaceSetCleanup(robot_space_, 1);
+        ground_ = dCreatePlane(nullptr, 0, 0, 1, 0);
+        contact_group_ = dJointGroupCreate(0);
+
+        for (int b = 0; b < layout.body_count; ++b) {
+            dBodyID body = dBodyCreate(world_);
+            bodies_.push_back(body);
+            const Vec3& c = layout.body_com[b];
+            dBodySetPosition(body, c[0], c[1], c[2]);
+        }
+        // Combined mass per body: each box's mass moved to its offset from the centre of mass.
+        std::vector<dMass> mass(bodies_.size());
+        for (auto& m : mass) dMassSetZero(&m);
+        for (const LayoutGeom& g : layout.geoms) {
+            dMass part;
+            dMassSetBoxTotal(&part, g.mass, g.size[0], g.size[1], g.size[2]);
+            const Vec3& c = layout.body_com[g.body];
+            dMassTranslate(&part, g.centre[0] - c[0], g.centre[1] - c[1], g.centre[2] - c[2]);
+            dMassAdd(&mass[g.body], &part);
+
+            dGeomID geom = dCreateBox(robot_space_, g.size[0], g.size[1], g.size[2]);
+            geoms_.push_back(geom);
+            dGeomSetBody(geom, bodies_[g.body]);
+            dGeomSetOffsetPosition(geom, g.centre[0] - c[0], g.centre[1] - c[1], g.centre[2] - c[2]);
+        }
+        for (std::size_t b = 0; b < bodies_.size(); ++b) {
+            // The centre of mass is the body origin by construction; clear rounding leftovers.
+            dMassTranslate(&mass[b], -mass[b].c[0], -mass[b].c[1], -mass[b].c[2]);
+            dBodySetMass(bodies_[b], &mass[b]);
+        }
+        for (const LayoutJoint& lj : layout.joints) {
+            dJointID j = dJointCreateHinge(world_, nullptr);
+            joints_.push_back(j);
+            dJointAttach(j, bodies_[lj.chassis_body], bodies_[lj.panel_body]);
+            dJointSetHingeAnchor(j, lj.anchor[0], lj.anchor[1], lj.anchor[2]);
+            const Vec3 a = axis_vector(lj.axis);
+            dJointSetHingeAxis(j, a[0], a[1], a[2]);
+            dJointSetHingeParam(j, dParamLoStop, -kHingeLimit);
+            dJointSetHingeParam(j, dParamHiStop, kHingeLimit);
+            dJointSetHingeParam(j, dParamFMax, cfg.max_motor_force);
+            dJointSetHingeParam(j, dParamVel, 0.0);
+        }
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+World::~World() { release(); }
+
+void World::release() {
+    if (contact_group_) dJointGroupDestroy(contact_group_);
+    contact_group_ = nullptr;
+    if (robot_space_) dSpaceDestroy(robot_space_);   // destroys the robot geoms (cleanup on)
+    robot_space_ = nullptr;
+    if (ground_) dGeomDestroy(ground_);
+    ground_ = nullptr;
+    if (world_) {
+        dWorldSetStepThreadingImplementation(world_, nullptr, nullptr);
+        dWorldDestroy(world_);                        // destroys bodies and hinges
+    }
+    world_ = nullptr;
+    if (threading_) dThreadingFreeImplementation(threading_);
+    threading_ = nullptr;
+}
+
+void World::near_callback(void* data, dGeomID a, dGeomID b) {
+    auto* self = static_cast<World*>(data);
+    const int n = dCollide(a, b, self->max_contacts_, &self->scratch_[0].geom, sizeof(dContact));
+    dBodyID ba = dGeomGetBody(a), bb = dGeomGetBody(b);
+    for (int i = 0; i < n; ++i) {
+        dContact c = self->contact_template_;
+        c.geom = self->scratch_[static_cast<std::size_t>(i)].geom;
+        dJointID j = dJointCreateContact(self->world_, self->contact_group_, &c);
+        dJointAttach(j, ba, bb);
+    }
+    self->contacts_ += n;
+}
+
+void World::step(double dt) {
+    contacts_ = 0;
+    // Robot geoms only meet the ground: no collisions inside the robot.
+    dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::near_callback);
+    dWorldQuickStep(world_, dt);
+    dJointGroupEmpty(contact_group_);
+}
+
+std::string World::check(double bound) const {
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const dReal* p = dBodyGetPosition(bodies_[b]);
+        const dReal* v = dBodyGetLinearVel(bodies_[b]);
+        const dReal* w = dBodyGetAngularVel(bodies_[b]);
+        for (int k = 0; k < 3; ++k) {
+            if (!(std::fabs(p[k]) <= bound)) return "body " + std::to_string(b) + " position out of bounds or NaN";
+            if (!(std::fabs(v[k]) <= bound) || !(std::fabs(w[k]) <= bound))
+                return "body " + std::to_string(b) + " velocity out of bounds or NaN";
+        }
+    }
+    return {};
+}
+
+Vec3 World::geom_position(int geom) const {
+    const dReal* p = dGeomGetPosition(geoms_[static_cast<std::size_t>(geom)]);
+    return {p[0], p[1], p[2]};
+}
+
+Pose World::body_pose(int body) const {
+    const dReal* p = dBodyGetPosition(bodies_[static_cast<std::size_t>(body)]);
+    const dReal* q = dBodyGetQuaternion(bodies_[static_cast<std::size_t>(body)]);
+    Pose pose;
+    pose.pos = {p[0], p[1], p[2]};
+    pose.quat = {q[0], q[1], q[2], q[3]};
+    return pose;
+}
+
+} // namespace cic::sim

@@ -1,0 +1,63 @@
+#pragma once
+// Private to cic_sim: one ODE world holding one robot on a flat ground plane.
+// Owns world, spaces, contact group, bodies, joints and its own threading
+// implementation (ODE's default one is shared by all worlds), released in the
+// right order by the destructor.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ode/ode.h>
+
+#include "cic/sim/config.hpp"
+#include "cic/sim/layout.hpp"
+#include "cic/sim/recording.hpp"
+
+namespace cic::sim {
+
+// Once per process (thread-safe): dInitODE2. Then per call: ODE data for the calling thread.
+void ensure_ode_initialised();
+
+class World {
+public:
+    World(const Layout& layout, const SimConfig& cfg);
+    ~World();
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+
+    std::size_t joint_count() const { return joints_.size(); }
+    double joint_angle(std::size_t j) const { return dJointGetHingeAngle(joints_[j]); }
+    void set_joint_velocity(std::size_t j, double v) { dJointSetHingeParam(joints_[j], dParamVel, v); }
+
+    // One physics step of dt: collide against the ground, QuickStep, drop contacts.
+    void step(double dt);
+
+    // Empty when every body is finite and within `bound`; otherwise why not.
+    std::string check(double bound) const;
+
+    Vec3 geom_position(int geom) const;    // world position of a layout geom's centre
+    Pose body_pose(int body) const;
+    int body_count() const { return static_cast<int>(bodies_.size()); }
+    int last_contacts() const { return contacts_; }
+
+private:
+    void release();
+    static void near_callback(void* data, dGeomID a, dGeomID b);
+
+    const Layout& layout_;
+    dContact contact_template_{};
+    int max_contacts_ = 4;
+    int contacts_ = 0;
+
+    dThreadingImplementationID threading_ = nullptr;
+    dWorldID world_ = nullptr;
+    dSpaceID robot_space_ = nullptr;
+    dGeomID ground_ = nullptr;
+    dJointGroupID contact_group_ = nullptr;
+    std::vector<dBodyID> bodies_;
+    std::vector<dGeomID> geoms_;
+    std::vector<dJointID> joints_;
+    std::vector<dContact> scratch_;
+};
+
+} // namespace cic::sim

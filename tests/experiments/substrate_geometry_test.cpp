@@ -1,0 +1,69 @@
+// Robot description -> substrate geometry.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "cic/core/error.hpp"
+#include "experiments/hypergp/substrate_geometry.hpp"
+
+using cic::nn::Point;
+using cic::sim::Axis;
+using cic::sim::Dir;
+
+namespace {
+
+// Centre at (0,0), an arm of two hinged modules along +x, a fixed module at (0,1).
+cic::sim::RobotSpec small_robot() {
+    cic::sim::RobotSpec r;
+    r.name = "small";
+    r.modules = {{{0, 0, 0}, Axis::Fixed, Dir::None, "centre"},
+                 {{1, 0, 0}, Axis::Y, Dir::NegX, "arm.0"},
+                 {{0, 1, 0}, Axis::Fixed, Dir::NegY, "head"},
+                 {{2, 0, 0}, Axis::Z, Dir::NegX, "arm.1"}};
+    return r;
+}
+
+} // namespace
+
+TEST(SubstrateGeometry, ModulesNormalisedOverTheBoundingBox) {
+    const auto g = cic::hypergp::substrate_geometry(small_robot());
+    // x in [0, 2] -> -1, 0, 1; y in [0, 1] -> -1, 1. Joints in actuated() order.
+    EXPECT_EQ(g.joints, (std::vector<Point>{{0, -1}, {1, -1}}));
+    EXPECT_EQ(g.hidden, (std::vector<Point>{{-1, -1}, {0, -1}, {-1, 1}, {1, -1}}));
+}
+
+TEST(SubstrateGeometry, DegenerateAxisMapsToZero) {
+    auto r = small_robot();
+    r.modules.erase(r.modules.begin() + 2);   // drop the head: a straight line along x
+    const auto g = cic::hypergp::substrate_geometry(r);
+    EXPECT_EQ(g.joints, (std::vector<Point>{{0, 0}, {1, 0}}));
+    EXPECT_EQ(g.hidden, (std::vector<Point>{{-1, 0}, {0, 0}, {1, 0}}));
+}
+
+TEST(SubstrateGeometry, ThesisR1HasOneNeuronPerJointAndPerModule) {
+    for (bool six : {false, true}) {
+        const auto robot = cic::sim::preset(1, six);
+        const auto g = cic::hypergp::substrate_geometry(robot);
+        EXPECT_EQ(g.joints.size(), robot.actuated().size());
+        EXPECT_EQ(g.joints.size(), six ? 18u : 12u);
+        EXPECT_EQ(g.hidden.size(), robot.modules.size());
+        // The robot is mirror-symmetric in x, and so is its substrate.
+        for (const auto& p : g.hidden) {
+            EXPECT_GE(p.x, -1.0);
+            EXPECT_LE(p.x, 1.0);
+            EXPECT_GE(p.y, -1.0);
+            EXPECT_LE(p.y, 1.0);
+            EXPECT_NE(std::find(g.hidden.begin(), g.hidden.end(), Point{-p.x, p.y}), g.hidden.end());
+        }
+    }
+}
+
+TEST(SubstrateGeometry, BadRobotsThrow) {
+    auto r = small_robot();
+    for (auto& m : r.modules) m.axis = Axis::Fixed;
+    EXPECT_THROW(cic::hypergp::substrate_geometry(r), std::invalid_argument);
+    r = small_robot();
+    r.modules[3].cell = r.modules[1].cell;   // overlapping cells
+    EXPECT_THROW(cic::hypergp::substrate_geometry(r), cic::InputError);
+}

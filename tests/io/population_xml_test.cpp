@@ -1,0 +1,144 @@
+// Population files: round trip, hand edits, and refusal of broken or foreign files.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "cic/io/population_xml.hpp"
+#include "cic/io/xml.hpp"
+
+namespace cic::io {
+namespace {
+
+PopulationFile sample() {
+    PopulationFile p;
+    p.experiment = "symreg";
+    p.settings_digest = "abc123";
+    p.variables = 2;
+    p.functions = {"add", "mul", "sin"};
+    p.trees = 2;
+    p.population.iteration = 7;
+    p.state.seed = 99;
+    p.state.rng = Rng(5);
+    p.state.rng.next();
+    p.state.next_id = 40;
+    p.state.evaluations = 321;
+    p.state.bloat = {6, 5, -0.125};
+    for (int i = 0; i < 3; ++i) {
+        auto ind = std::make_shared<gp::Individual>();
+        ind->id = 30 + static_cast<std::uint64_t>(i);
+        ind->genotype = {tree::Tree::parse("(add x0 (mul x1 0.10000000000000001))"),
+                         tree::Tree::parse("(sin -1)")};
+        ind->fitness = -1.0 / 3.0 * (i + 1);
+        ind->evaluated = true;
+        ind->parents = {3, 4};
+        if (i == 1) ind->attributes["illegal"] = "1";
+        p.population.individuals.push_back(ind);
+    }
+    return p;
+}
+
+TEST(PopulationXml, RoundTripsExactly) {
+    const auto p = sample();
+    const std::string text = to_xml(p);
+    const auto q = parse_population(text, "p.xml");
+    EXPECT_EQ(to_xml(q), text);
+    EXPECT_EQ(q.state.rng.state(), p.state.rng.state());
+    EXPECT_EQ(q.population[0].fitness, p.population[0].fitness);   // bit-exact doubles
+    EXPECT_EQ(q.population[1].attributes.at("illegal"), "1");
+    EXPECT_EQ(q.state.bloat.best_fitness, -0.125);
+    EXPECT_EQ(q.population.iteration, 7);
+}
+
+TEST(PopulationXml, HandEditedTreeLoadsAndIsEvaluatedAgain) {
+    std::string text = to_xml(sample());
+    const std::string from = "<tree>(sin -1)</tree>";
+    text.replace(text.find(from), from.size(), "<tree>(sin (add x1 2.5))</tree>");
+    const auto q = parse_population(text, "edited.xml");
+    EXPECT_EQ(q.population[0].genotype[1].to_string(), "(sin (add x1 2.5))");
+    EXPECT_FALSE(q.population[0].evaluated);   // its stored fitness belonged to the old tree
+    EXPECT_TRUE(q.population[0].has("edited"));
+    EXPECT_TRUE(q.population[1].evaluated);    // untouched individuals keep theirs
+}
+
+TEST(PopulationXml, TruncatedFileIsRefusedWithItsLine) {
+    const std::string text = to_xml(sample());
+    const std::string cut = text.substr(0, text.size() * 2 / 3);
+    try {
+        parse_population(cut, "cut.xml");
+        FAIL() << "expected an error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), "cut.xml");
+        EXPECT_GT(e.line(), 0) << e.what();
+    }
+}
+
+TEST(PopulationXml, CorruptTreeIsRefusedWithItsLine) {
+    std::string text = to_xml(sample());
+    const std::string from = "<tree>(sin -1)</tree>";
+    text.replace(text.find(from), from.size(), "<tree>(sin -1</tree>");
+    try {
+        parse_population(text, "bad.xml");
+        FAIL() << "expected an error";
+    } catch (const InputError& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("bad.xml:"), std::string::npos) << m;
+        EXPECT_NE(m.find("bad tree"), std::string::npos) << m;
+        EXPECT_GT(e.line(), 1);
+    }
+}
+
+TEST(PopulationXml, CountMismatchAndBadNumbersAreRefused) {
+    std::string text = to_xml(sample());
+    auto pos = text.find("count=\"3\"");
+    ASSERT_NE(pos, std::string::npos);
+    std::string t1 = text;
+    t1.replace(pos, 9, "count=\"4\"");
+    EXPECT_THROW(parse_population(t1, "a.xml"), InputError);
+    std::string t2 = text;
+    pos = t2.find("fitness=\"");
+    t2.replace(pos, 9, "fitness=\"x");
+    EXPECT_THROW(parse_population(t2, "b.xml"), InputError);
+    EXPECT_THROW(parse_population("<settings/>", "c.xml"), InputError);
+}
+
+TEST(PopulationXml, SaveIsAtomicAndLeavesNoTemporaries) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("cic-pop-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const auto p = sample();
+    save_population(dir / "population.xml", p);
+    save_population(dir / "population.xml", p);
+    int files = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++files;
+    EXPECT_EQ(files, 1);
+    EXPECT_EQ(to_xml(load_population(dir / "population.xml")), to_xml(p));
+    fs::remove_all(dir);
+}
+
+TEST(PopulationXml, IncompatibleSettingsAreRefused) {
+    Settings s;
+    s.experiment.type = ExperimentType::Symreg;
+    s.gp.primitives.variable_count = 4;
+    auto p = describe(s);
+    p.population = sample().population;
+    p.trees = 2;
+    try {
+        check_compatible(p, s, "pop.xml");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("numberOfTreesInForestGenotype"), std::string::npos) << e.what();
+    }
+    p.trees = 1;
+    p.variables = 1;
+    try {
+        check_compatible(p, s, "pop.xml");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("terminalVariableCount 1"), std::string::npos) << e.what();
+    }
+}
+
+} // namespace
+} // namespace cic::io

@@ -1,0 +1,151 @@
+// Every class of bad settings input gets one clear line naming where and what.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "cic/io/settings_io.hpp"
+
+using namespace cic::io;
+
+namespace {
+
+std::string error_of(const std::string& xml) {
+    try {
+        read_settings_string(xml, "bad.xml");
+    } catch (const cic::InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+std::string override_error(const std::vector<std::string>& sets) {
+    try {
+        load_settings({}, sets);
+    } catch (const cic::InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+std::string gp(const std::string& body) { return "<settings>\n<GP>\n" + body + "\n</GP>\n</settings>\n"; }
+
+#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
+
+} // namespace
+
+TEST(SettingsErrors, MalformedXmlNamesFileAndLine) {
+    auto m = error_of("<settings>\n<GP>\n<tournament_size>5</tournament_sizes>\n</GP>\n</settings>\n");
+    EXPECT_HAS(m, "bad.xml:3: malformed XML: Opening and ending tag mismatch");
+}
+
+TEST(SettingsErrors, UnknownKeySuggestsTheNearest) {
+    auto m = error_of(gp("<tournamentSize>5</tournamentSize>"));
+    EXPECT_HAS(m, "bad.xml:3: unknown key <GP> tournamentSize; did you mean tournament_size?");
+    m = error_of(gp("<populationSize>5</populationSize>"));
+    EXPECT_HAS(m, "did you mean generatedPopulationSize?");
+    m = error_of(gp("<sample_step>0.5</sample_step>"));
+    EXPECT_HAS(m, "'sample_step' belongs in <Simulator>");
+    m = error_of(gp("<zzzzqqq>1</zzzzqqq>"));
+    EXPECT_HAS(m, "cic settings --defaults");
+}
+
+TEST(SettingsErrors, UnknownSectionSuggestsTheNearest) {
+    auto m = error_of("<settings>\n<Simulater><sample_to>3</sample_to></Simulater>\n</settings>");
+    EXPECT_HAS(m, "bad.xml:2: unknown section <Simulater>; did you mean <Simulator>?");
+}
+
+TEST(SettingsErrors, WrongTypeNamesSectionKeyValueAndAllowed) {
+    auto m = error_of(gp("<generatedPopulationSize>fifty</generatedPopulationSize>"));
+    EXPECT_HAS(m, "bad.xml:3: <GP> generatedPopulationSize = \"fifty\": not an integer "
+                  "(allowed: integer in [2, 10000000])");
+    m = error_of(gp("<generatedPopulationSize>50.5</generatedPopulationSize>"));
+    EXPECT_HAS(m, "not a whole number");
+    m = error_of(gp("<preventDuplicates>yes</preventDuplicates>"));
+    EXPECT_HAS(m, "<GP> preventDuplicates = \"yes\": not a boolean (allowed: 0 or 1)");
+    m = error_of(gp("<defaultFitness>nan</defaultFitness>"));
+    EXPECT_HAS(m, "not a number");
+    m = error_of(gp("<selection_type>best</selection_type>"));
+    EXPECT_HAS(m, "allowed: one of: 0|tournament, 1|roulette");
+    m = error_of(gp("<functions>add, mul</functions>"));
+    EXPECT_HAS(m, "separated by spaces");
+    m = error_of(gp("<functions>add mull</functions>"));
+    EXPECT_HAS(m, "unknown function 'mull'");
+}
+
+TEST(SettingsErrors, OutOfRange) {
+    auto m = error_of(gp("<tournament_size>0</tournament_size>"));
+    EXPECT_HAS(m, "bad.xml:3: <GP> tournament_size = \"0\": out of range (allowed: integer in [1, 10000000])");
+    m = error_of("<settings><Simulator>\n<sample_step>-1</sample_step></Simulator></settings>");
+    EXPECT_HAS(m, "bad.xml:2: <Simulator> sample_step = \"-1\": out of range (allowed: number > 0)");
+    m = error_of("<settings><Simulator><sample_step>inf</sample_step></Simulator></settings>");
+    EXPECT_HAS(m, "infinity is not allowed");
+    m = error_of(gp("<generatedPopulationSize>99999999999999999999</generatedPopulationSize>"));
+    EXPECT_HAS(m, "out of range");
+}
+
+TEST(SettingsErrors, EmptyValues) {
+    auto m = error_of(gp("<tournament_size>  </tournament_size>"));
+    EXPECT_HAS(m, "bad.xml:3: <GP> tournament_size = \"\": empty value");
+    EXPECT_EQ(error_of(gp("<terminalConsts/>")), "(no error)");   // no constants is meaningful
+}
+
+TEST(SettingsErrors, DuplicatesAndNesting) {
+    auto m = error_of(gp("<elitism>1</elitism>\n<elitism>2</elitism>"));
+    EXPECT_HAS(m, "bad.xml:4: <GP> elitism is given twice (first at line 3)");
+    m = error_of(gp("<elitism><x/></elitism>"));
+    EXPECT_HAS(m, "expected a value, found nested elements");
+}
+
+TEST(SettingsErrors, CrossFieldChecksPointAtTheLine) {
+    auto m = error_of(gp("<maximumGeneratedTreeDepth>3</maximumGeneratedTreeDepth>\n"
+                         "<minimumGeneratedTreeDepth>5</minimumGeneratedTreeDepth>"));
+    EXPECT_HAS(m, "bad.xml:4: <GP> minimumGeneratedTreeDepth = \"5\", <GP> maximumGeneratedTreeDepth = \"3\": "
+                  "the minimum depth must not exceed the maximum depth");
+    m = error_of(gp("<crossoverRate>0.8</crossoverRate><mutationRate>0.3</mutationRate>"));
+    EXPECT_HAS(m, "sum to at most 1");
+    m = error_of(gp("<generatedPopulationSize>4</generatedPopulationSize>"));
+    EXPECT_HAS(m, "tournament cannot be larger than the population");
+    m = error_of(gp("<functionCount>3</functionCount><functionProbabilities>1 2</functionProbabilities>"));
+    EXPECT_HAS(m, "one weight per function");
+    m = error_of(gp("<functionCount>3</functionCount><functions>add mul</functions>"));
+    EXPECT_HAS(m, "<GP> functionCount = \"3\" does not match the 2 names in functions");
+    m = error_of("<settings><Simulator><delayed_start>20</delayed_start></Simulator></settings>");
+    EXPECT_HAS(m, "delayed_start must lie in [sample_from, sample_to)");
+    m = error_of(gp("<elitism>50</elitism>"));
+    EXPECT_HAS(m, "elitism < population size");
+}
+
+TEST(SettingsErrors, OverridesNameTheirSource) {
+    EXPECT_HAS(override_error({"GP.tournament_size"}), "--set: expected Section.key=value");
+    EXPECT_HAS(override_error({"GP.tournament_size=x"}), "--set: <GP> tournament_size = \"x\": not an integer");
+    EXPECT_HAS(override_error({"Gp.elitism=1"}), "--set: unknown section <Gp>; did you mean <GP>?");
+    EXPECT_HAS(override_error({"GP.elitsm=1"}), "--set: unknown key <GP> elitsm; did you mean elitism?");
+    EXPECT_HAS(override_error({"GP.minimumGeneratedTreeDepth=9"}), "--set: <GP> minimumGeneratedTreeDepth");
+}
+
+TEST(SettingsErrors, MissingAndUnreadableFiles) {
+    try {
+        read_settings("/nonexistent/settings.xml");
+        FAIL();
+    } catch (const cic::InputError& e) {
+        EXPECT_HAS(std::string(e.what()), "/nonexistent/settings.xml: cannot read: No such file or directory");
+    }
+    auto dir = std::filesystem::temp_directory_path() / ("cic-settings-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "empty.xml") << "";
+    EXPECT_THROW(read_settings(dir / "empty.xml"), cic::InputError);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(SettingsRead, RelativeInputPathsResolveAgainstTheFile) {
+    auto dir = std::filesystem::temp_directory_path() / ("cic-settings-rel-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "s.xml") << "<settings><Simulator><robotFile>robots/r.xml</robotFile></Simulator>"
+                                    "<Experiment><outputDirectory>out</outputDirectory></Experiment></settings>";
+    Settings s = read_settings(dir / "s.xml");
+    EXPECT_EQ(s.robot.robot_file, (std::filesystem::absolute(dir) / "robots/r.xml").lexically_normal().string());
+    EXPECT_EQ(s.experiment.output_directory, "out");   // outputs stay relative to the current folder
+    std::filesystem::remove_all(dir);
+}

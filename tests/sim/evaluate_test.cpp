@@ -1,0 +1,159 @@
+// Evaluations: standing still, walking, determinism, blow-ups, recording.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+#include "cic/core/rng.hpp"
+#include "cic/sim/evaluate.hpp"
+#include "cic/sim/layout.hpp"
+
+using namespace cic::sim;
+
+namespace {
+
+SimConfig short_config(double seconds = 3.0) {
+    SimConfig c;
+    c.sample_to = seconds;
+    c.delayed_start = 1.0;
+    return c;
+}
+
+std::uint64_t bits(double v) {
+    std::uint64_t b;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+}
+
+// A tripod gait for R1 with 6 legs, found by a small grid search: joints come as
+// (hip y, z, knee y) per leg, legs in preset order (rows -y, 0, +y; sides +x, -x).
+// The z swing and the knee lag the hip lift by a quarter period; neighbouring
+// legs are half a period apart.
+std::vector<SineJoint> r1_gait() {
+    const double pi = std::numbers::pi;
+    std::vector<SineJoint> g;
+    for (int j = 0; j < 18; ++j) {
+        const int leg = j / 3, k = j % 3, row = leg / 2, side = leg % 2;
+        g.push_back({1.0, 0.5, pi * ((row + side) % 2) + (k == 0 ? 0.0 : pi / 2)});
+    }
+    return g;
+}
+
+std::vector<SineJoint> random_sine(cic::Rng& rng, std::size_t joints) {
+    std::vector<SineJoint> g;
+    for (std::size_t j = 0; j < joints; ++j)
+        g.push_back({rng.uniform(0.0, 1.5), rng.uniform(0.1, 1.5), rng.uniform(0.0, 2 * std::numbers::pi)});
+    return g;
+}
+
+} // namespace
+
+TEST(Evaluate, ConstantControllerStandsStill) {
+    for (int type : {0, 1, 2}) {
+        ConstantController still(0.0);
+        const EvalResult r = evaluate(preset(type, type == 1), still, short_config());
+        EXPECT_FALSE(r.failed) << r.failure;
+        EXPECT_NEAR(r.fitness, 0.0, 1e-3) << "R" << type;
+        EXPECT_NEAR(r.end[2], 0.5, 0.02);   // the centre cube rests on the ground
+        EXPECT_EQ(r.steps, 240);
+        EXPECT_DOUBLE_EQ(r.simulated_seconds, 3.0);
+    }
+}
+
+TEST(Evaluate, TunedSineGaitMovesR1Forward) {
+    const RobotSpec robot = preset(1, true);
+    SineController gait(r1_gait());
+    SimConfig cfg = short_config(6.0);
+    const EvalResult r = evaluate(robot, gait, cfg);
+    EXPECT_FALSE(r.failed) << r.failure;
+    const double forward = r.end[1] - r.start[1];
+    EXPECT_GT(forward, 1.5);                              // ~2.8 along +y, its preferred axis, in 5 s
+    EXPECT_GT(forward, 10 * std::fabs(r.end[0] - r.start[0]));
+    EXPECT_GT(r.fitness, 1.5);
+}
+
+TEST(Evaluate, MotorFollowsTheCommandWithTheThesisGain) {
+    // A held command of 0.5 rad: with gain -1 the joints approach it.
+    ConstantController hold(0.5);
+    EvalOptions o;
+    o.record_trace = true;
+    const EvalResult r = evaluate(preset(2, false), hold, short_config(6.0), o);
+    ASSERT_EQ(r.trace.size(), 480u);
+    for (double a : r.trace.back().actual) EXPECT_NEAR(a, 0.5, 0.1);
+    for (double d : r.trace.back().desired) EXPECT_EQ(d, 0.5);
+    // Commands past the hinge range are clamped.
+    ConstantController far(3.0);
+    SimConfig brief = short_config(0.5);
+    brief.delayed_start = 0.0;
+    const EvalResult c = evaluate(preset(0, false), far, brief, o);
+    for (double d : c.trace.front().desired) EXPECT_DOUBLE_EQ(d, std::numbers::pi / 2);
+}
+
+TEST(Evaluate, SameBitsWhateverTheOrder) {
+    cic::Rng rng(7);
+    const RobotSpec robot = preset(1, false);
+    SineController a(random_sine(rng, 12)), b(random_sine(rng, 12));
+    const SimConfig cfg = short_config();
+    const double a1 = evaluate(robot, a, cfg).fitness;
+    const double b1 = evaluate(robot, b, cfg).fitness;
+    const double b2 = evaluate(robot, b, cfg).fitness;
+    const double a2 = evaluate(robot, a, cfg).fitness;
+    EXPECT_EQ(bits(a1), bits(a2));
+    EXPECT_EQ(bits(b1), bits(b2));
+    EXPECT_NE(bits(a1), bits(b1));
+}
+
+TEST(Evaluate, BlowUpIsAFailedResultNotACrash) {
+    SimConfig cfg = short_config();
+    cfg.joint_gain = -1e9;          // absurd motor: the world explodes
+    cfg.max_motor_force = 1e12;
+    cfg.blowup_bound = 50.0;
+    SineController wild({{1.5, 3.0, 0.0}});
+    const EvalResult r = evaluate(preset(1, false), wild, cfg);
+    EXPECT_TRUE(r.failed);
+    EXPECT_EQ(r.fitness, cfg.failure_fitness);
+    EXPECT_NE(r.failure.find("blow-up"), std::string::npos) << r.failure;
+    for (double v : r.start) EXPECT_TRUE(std::isfinite(v));
+    for (double v : r.end) EXPECT_TRUE(std::isfinite(v));
+}
+
+TEST(Evaluate, NonFiniteCommandFailsTheEvaluation) {
+    ConstantController nan_angle(std::nan(""));
+    const EvalResult r = evaluate(preset(0, false), nan_angle, short_config(1.0));
+    EXPECT_TRUE(r.failed);
+    EXPECT_TRUE(std::isfinite(r.fitness));
+}
+
+TEST(Evaluate, BadConfigThrows) {
+    ConstantController c;
+    const RobotSpec robot = preset(0, false);
+    auto with = [](auto change) { SimConfig cfg = short_config(); change(cfg); return cfg; };
+    EXPECT_THROW(evaluate(robot, c, with([](SimConfig& s) { s.sample_step = 0; })), std::invalid_argument);
+    EXPECT_THROW(evaluate(robot, c, with([](SimConfig& s) { s.sample_to = -1; })), std::invalid_argument);
+    EXPECT_THROW(evaluate(robot, c, with([](SimConfig& s) { s.step_divider = 0; })), std::invalid_argument);
+    EXPECT_THROW(evaluate(robot, c, with([](SimConfig& s) { s.delayed_start = 99; })), std::invalid_argument);
+    EXPECT_THROW(evaluate(robot, c, with([](SimConfig& s) { s.max_contacts = 0; })), std::invalid_argument);
+    EXPECT_THROW(evaluate(robot, c, with([](SimConfig& s) { s.friction = -1; })), std::invalid_argument);
+    EXPECT_THROW(SineController({}), std::invalid_argument);
+}
+
+TEST(Evaluate, RecordsFramesOfEveryBody) {
+    const RobotSpec robot = preset(0, false);
+    SineController gait({{0.6, 0.5, 0.0}});
+    EvalOptions o;
+    o.record_fps = 10;
+    SimConfig cfg = short_config(2.0);
+    cfg.step_divider = 2;
+    const EvalResult r = evaluate(robot, gait, cfg, o);
+    ASSERT_TRUE(r.recording);
+    const Recording& rec = *r.recording;
+    EXPECT_EQ(rec.body_count, make_layout(robot).body_count);
+    EXPECT_EQ(rec.parts.size(), 2 * robot.modules.size() - 1);
+    EXPECT_EQ(rec.frames.size(), 21u);   // t = 0, 0.1, ..., 2.0
+    EXPECT_EQ(rec.times.size(), rec.frames.size());
+    EXPECT_NEAR(rec.times[10], 1.0, 1e-9);
+    for (const auto& f : rec.frames) EXPECT_EQ(f.size(), static_cast<std::size_t>(rec.body_count));
+    EXPECT_EQ(r.steps, 2 * 160);
+    EXPECT_TRUE(r.trace.empty());
+}

@@ -1,0 +1,185 @@
+// Evaluations in `cic worker` processes (the real binary, at env CIC_BINARY):
+// bit-identical to in-process evaluation whatever the number of workers, and
+// surviving killed and hung workers.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <numbers>
+#include <sstream>
+#include <thread>
+
+#include "cic/core/process_pool.hpp"
+#include "cic/core/rng.hpp"
+#include "cic/sim/job_text.hpp"
+
+using namespace cic;
+using namespace cic::sim;
+
+namespace {
+
+std::string cic_binary() {
+    const char* env = std::getenv("CIC_BINARY");
+    return env && *env ? env : CIC_BINARY;
+}
+
+PoolOptions worker_pool(int workers) {
+    PoolOptions o;
+    o.workers = workers;
+    o.argv = {cic_binary(), "worker"};
+    o.timeout_seconds = 60;
+    return o;
+}
+
+std::uint64_t bits(double v) {
+    std::uint64_t b;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+}
+
+SimConfig short_config() {
+    SimConfig c;
+    c.sample_to = 3.0;
+    c.delayed_start = 1.0;
+    return c;
+}
+
+std::vector<std::vector<SineJoint>> random_controllers(int count, std::size_t joints) {
+    Rng rng(2024);
+    std::vector<std::vector<SineJoint>> out;
+    for (int i = 0; i < count; ++i) {
+        std::vector<SineJoint> g;
+        for (std::size_t j = 0; j < joints; ++j)
+            g.push_back({rng.uniform(0.0, 1.5), rng.uniform(0.1, 1.5), rng.uniform(0.0, 2 * std::numbers::pi)});
+        out.push_back(g);
+    }
+    return out;
+}
+
+std::vector<double> fitnesses(const std::vector<JobResult>& results) {
+    std::vector<double> f;
+    for (const JobResult& r : results) {
+        EXPECT_TRUE(r.ok) << r.error;
+        f.push_back(r.ok ? parse_eval_reply(r.output).fitness : std::nan(""));
+    }
+    return f;
+}
+
+} // namespace
+
+TEST(WorkerPool, SameFitnessBitsWithOneOrTwoWorkersAndInProcess) {
+    const RobotSpec robot = preset(1, false);
+    const SimConfig cfg = short_config();
+    const auto controllers = random_controllers(20, robot.actuated().size());
+    std::vector<std::string> jobs;
+    for (const auto& c : controllers) jobs.push_back(make_sine_job(robot, cfg, c));
+
+    std::vector<double> one, two;
+    {
+        ProcessPool pool(worker_pool(1));
+        one = fitnesses(pool.run(jobs));
+    }
+    {
+        ProcessPool pool(worker_pool(2));
+        two = fitnesses(pool.run(jobs));
+    }
+    ASSERT_EQ(one.size(), 20u);
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+        EXPECT_EQ(bits(one[i]), bits(two[i])) << i;
+        // In this process, after all the evaluations before it, still the same bits.
+        SineController c(controllers[i]);
+        EXPECT_EQ(bits(evaluate(robot, c, cfg).fitness), bits(one[i])) << i;
+    }
+}
+
+TEST(WorkerPool, KilledWorkerIsSurvived) {
+    const RobotSpec robot = preset(2, false);
+    const SimConfig cfg = short_config();
+    std::vector<std::string> jobs = {"sleep\n0.5"};   // keeps worker 0 busy while it is killed
+    for (const auto& c : random_controllers(6, 12)) jobs.push_back(make_sine_job(robot, cfg, c));
+
+    ProcessPool pool(worker_pool(2));
+    const int victim = pool.pids()[0];
+    std::thread killer([victim] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(150));
+        ::kill(victim, SIGKILL);
+    });
+    const auto results = pool.run(jobs);
+    killer.join();
+    EXPECT_GE(pool.restarts(), 1);
+    EXPECT_TRUE(results[0].ok) << results[0].error;
+    EXPECT_EQ(results[0].attempts, 2);
+    EXPECT_EQ(results[0].output, "slept");
+    ProcessPool fresh(worker_pool(1));
+    const auto reference = fitnesses(fresh.run({jobs.begin() + 1, jobs.end()}));
+    for (std::size_t i = 1; i < jobs.size(); ++i)
+        EXPECT_EQ(bits(parse_eval_reply(results[i].output).fitness), bits(reference[i - 1])) << i;
+}
+
+TEST(WorkerPool, HungJobIsRetriedThenFailedAndTheRunGoesOn) {
+    PoolOptions o = worker_pool(1);
+    o.timeout_seconds = 0.3;
+    ProcessPool pool(o);
+    const auto results = pool.run({"sleep\n30", make_sine_job(preset(0, false), short_config(), {{0.5, 0.5, 0}})});
+    EXPECT_FALSE(results[0].ok);
+    EXPECT_EQ(results[0].attempts, 2);
+    EXPECT_NE(results[0].error.find("timed out"), std::string::npos);
+    EXPECT_TRUE(results[1].ok) << results[1].error;
+    EXPECT_EQ(pool.restarts(), 2);
+}
+
+TEST(WorkerPool, BadJobsAreErrorsNotCrashes) {
+    ProcessPool pool(worker_pool(1));
+    const auto results = pool.run({"nonsense\n", "sine\nrobot 1 0 q x\n"});
+    EXPECT_FALSE(results[0].ok);
+    EXPECT_NE(results[0].error.find("unknown job kind 'nonsense'"), std::string::npos) << results[0].error;
+    EXPECT_FALSE(results[1].ok);
+    EXPECT_EQ(results[1].attempts, 1);
+    EXPECT_EQ(pool.restarts(), 0);
+}
+
+TEST(JobText, RoundTripsExactly) {
+    RobotSpec robot = preset(2, true);
+    robot.name = "a robot with spaces";
+    robot.modules[3].name = "";
+    SimConfig cfg;
+    cfg.friction = 0.1 + 0.2;   // not a short decimal
+    cfg.step_divider = 3;
+    std::stringstream s;
+    write_robot_text(s, robot);
+    write_config_text(s, cfg);
+    const RobotSpec r2 = read_robot_text(s);
+    const SimConfig c2 = read_config_text(s);
+    EXPECT_EQ(r2.name, robot.name);
+    EXPECT_EQ(r2.centre, robot.centre);
+    EXPECT_EQ(r2.preferred, robot.preferred);
+    ASSERT_EQ(r2.modules.size(), robot.modules.size());
+    for (std::size_t i = 0; i < robot.modules.size(); ++i) {
+        EXPECT_EQ(r2.modules[i].cell, robot.modules[i].cell);
+        EXPECT_EQ(r2.modules[i].axis, robot.modules[i].axis);
+        EXPECT_EQ(r2.modules[i].attach, robot.modules[i].attach);
+        EXPECT_EQ(r2.modules[i].name, robot.modules[i].name);
+    }
+    EXPECT_EQ(bits(c2.friction), bits(cfg.friction));
+    EXPECT_EQ(c2.step_divider, 3);
+    EXPECT_TRUE(std::isinf(read_config_text(*std::make_unique<std::stringstream>([] {
+        std::stringstream t;
+        write_config_text(t, SimConfig{});
+        return t.str();
+    }())).friction));
+
+    EvalResult r;
+    r.fitness = 1.0 / 3.0;
+    r.failed = true;
+    r.failure = "physics blow-up: body 3\nsecond line";
+    const EvalReply e = parse_eval_reply(format_eval_reply(r));
+    EXPECT_EQ(bits(e.fitness), bits(r.fitness));
+    EXPECT_TRUE(e.failed);
+    EXPECT_EQ(e.failure, r.failure);
+    EXPECT_THROW(parse_eval_reply("fitness abc\nfailed 0\n"), std::invalid_argument);
+    std::stringstream bad("robot 2 0 y x\nmodule 0 0 0 fixed none a\nmodule 1 0 0 w -x b\n");
+    EXPECT_THROW(read_robot_text(bad), std::invalid_argument);
+}
