@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "cic/core/error.hpp"
+#include "cic/app/progress.hpp"
 #include "cic/core/process_pool.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/stats_csv.hpp"
@@ -43,9 +44,12 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
     const int workers = s.experiment.workers > 0 ? s.experiment.workers : hardware_threads();
 
     std::ofstream log(opt.run_dir / "run.log", std::ios::app);
-    auto say = [&](const std::string& line, bool always = false) {
+    ProgressPrinter progress = ProgressPrinter::for_stderr(
+        opt.quiet ? Verbosity::Quiet : (opt.verbose ? Verbosity::Verbose : Verbosity::Normal));
+    // Log lines go to run.log and, unless quiet, to the console above the progress line.
+    auto say = [&](const std::string& line) {
         log << line << '\n' << std::flush;
-        if (always || !opt.quiet) std::fprintf(stdout, "%s\n", line.c_str()), std::fflush(stdout);
+        progress.message(line);
     };
 
     const tree::PrimitiveSet ps(s.gp.primitives);
@@ -79,11 +83,28 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
 
     gp::StopConditions stop{s.control.maximum_iterations, s.control.minimum_fitness};
     gp::EvolutionHooks hooks;
+    long evaluations_before = state.evaluations;
+    const int first_generation = start ? start->iteration + 1 : 0;
     hooks.on_generation = [&](const gp::GenerationRecord& r) {
         stats.write(r);
-        say(fmt::format("gen {:>4}/{}  best {:.6g}  mean {:.6g}  depth {:.2f}/{}  size {:.1f}  limit {}  evals {}  {:.1f}s",
-                        r.generation, r.max_generations - 1, r.best, r.mean, r.mean_depth, r.max_depth, r.mean_size,
-                        r.limit, r.evaluations, r.wall_seconds));
+        log << fmt::format("gen {} best {:.17g} mean {:.17g} median {:.17g} depth {:.3f}/{} size {:.2f}/{} limit {} "
+                           "illegal {} evaluations {} {:.2f}s",
+                           r.generation, r.best, r.mean, r.median, r.mean_depth, r.max_depth, r.mean_size, r.max_size,
+                           r.limit, r.illegal, r.evaluations, r.wall_seconds)
+            << '\n' << std::flush;
+        GenerationRecord p;
+        p.generation = r.generation + 1;
+        p.max_generations = r.max_generations;
+        p.evaluations_per_second = r.generation_seconds > 0
+            ? static_cast<double>(r.evaluations - evaluations_before) / r.generation_seconds : 0.0;
+        evaluations_before = r.evaluations;
+        p.best = r.best;
+        p.mean = r.mean;
+        p.limit = r.limit;
+        const int done = r.generation + 1 - first_generation;
+        const int left = r.max_generations - (r.generation + 1);
+        p.eta_seconds = done > 0 ? r.wall_seconds / done * left : -1.0;
+        progress(p);
     };
     hooks.on_checkpoint = [&](const gp::Population& pop, const gp::EvolutionState& st, bool last) {
         const int interval = std::max(1, s.experiment.checkpoint_interval);
@@ -111,9 +132,12 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
             return t;
         }());
     io::xml::write_file_atomically(opt.run_dir / "summary.txt", summary);
-    say(summary, true);
+    progress.finish();
+    log << summary << std::flush;
+    std::fputs(summary.c_str(), stdout);   // the result always reaches stdout, even with --quiet
+    std::fflush(stdout);
     if (result.reason == gp::StopReason::Interrupted) {
-        say("interrupted: population saved to " + (opt.run_dir / "population.xml").string(), true);
+        say("interrupted: population saved to " + (opt.run_dir / "population.xml").string());
         return 130;
     }
     return 0;

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "cic/sim/job_text.hpp"
+#include "experiments/hypergp/model.hpp"
 
 namespace cic::app {
 
@@ -20,8 +21,9 @@ std::string sleep_job(const std::string& body) {
 
 } // namespace
 
-std::map<std::string, JobHandler> make_worker_job_kinds(const WorkerContext& /*context*/) {
+std::map<std::string, JobHandler> make_worker_job_kinds(const WorkerContext& context) {
     std::map<std::string, JobHandler> kinds;
+    kinds["hypergp"] = hypergp::make_job_handler(context.settings_file);   // genotype -> fitness
     kinds["sine"] = &sim::run_sine_job;   // robot + SimConfig + sine joints -> fitness reply
     kinds["sleep"] = &sleep_job;
     return kinds;

@@ -35,8 +35,12 @@ TEST(Generators, FullTreesHaveTheRequestedDepth) {
         for (int n = 0; n < 200; ++n) {
             const Tree t = gen.full(rng, d);
             ASSERT_EQ(t.depth(), d);
-            for (const Node& node : t.nodes())   // every leaf sits at the bottom
-                if (arity(node.op) == 0) ASSERT_EQ(node.depth, 1);
+            for (const Node& node : t.nodes()) {   // every function has a child one level shorter
+                if (arity(node.op) > 0) {
+                    for (std::size_t c : t.children(static_cast<std::size_t>(&node - t.nodes().data())))
+                        ASSERT_EQ(t.nodes()[c].depth + 1, node.depth);
+                }
+            }
         }
     for (int n = 0; n < 100; ++n) ASSERT_EQ(gen.generate(rng).depth(), 8);
 }
@@ -72,6 +76,7 @@ TEST(Generators, RampedHalfAndHalfRampsFullDepths) {
 TEST(Generators, Ptc1MeanSizeMatchesExpectedSize) {
     const PrimitiveSet ps = thesis_set();
     for (double expected : {5.0, 10.0}) {
+        // Depth 50 keeps truncation negligible (at depth 30, E = 10 loses ~4%).
         const TreeGenerator gen(ps, InitMethod::Ptc1, expected, 1, 50);
         EXPECT_NEAR(gen.function_probability(), (1.0 - 1.0 / expected) / 1.4, 1e-15);   // arities 2,2,1,1,1
         Rng rng(4);

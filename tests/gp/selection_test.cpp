@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <functional>
+#include <limits>
 #include <stdexcept>
 
 #include "cic/gp/operators.hpp"

@@ -1,0 +1,208 @@
+#include "src/viz/scene.hpp"
+
+#include <osg/Geode>
+#include <osg/Geometry>
+#include <osg/LightModel>
+#include <osg/Material>
+#include <osg/PolygonOffset>
+#include <osg/ShapeDrawable>
+#include <osg/Texture2D>
+#include <osgShadow/ShadowMap>
+#include <osgShadow/ShadowedScene>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cic/io/recording_sampler.hpp"
+#include "cic/viz/palette.hpp"
+
+namespace cic::viz {
+namespace {
+
+constexpr unsigned kReceivesShadow = 0x1;
+constexpr unsigned kCastsShadow = 0x2;
+constexpr double kGroundHalfTiles = 40;   // the ground reaches this many tiles from the robot
+
+osg::Vec4 rgba(const Rgb& c, float a = 1.0f) { return {c[0], c[1], c[2], a}; }
+
+osg::Matrixd pose_matrix(const sim::Pose& p) {
+    // ODE stores w, x, y, z; osg::Quat takes x, y, z, w.
+    const osg::Quat q(p.quat[1], p.quat[2], p.quat[3], p.quat[0]);
+    return osg::Matrixd::rotate(q) * osg::Matrixd::translate(p.pos[0], p.pos[1], p.pos[2]);
+}
+
+osg::ref_ptr<osg::Texture2D> texture_from(const std::vector<Rgb>& texels, int side) {
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    image->allocateImage(side, side, 1, GL_RGB, GL_UNSIGNED_BYTE);
+    for (int i = 0; i < side * side; ++i)
+        for (int k = 0; k < 3; ++k)
+            image->data()[i * 3 + k] = static_cast<unsigned char>(std::lround(texels[static_cast<std::size_t>(i)][k] * 255));
+    osg::ref_ptr<osg::Texture2D> tex = new osg::Texture2D(image);
+    tex->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
+    tex->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
+    tex->setWrap(osg::Texture::WRAP_S, osg::Texture::REPEAT);
+    tex->setWrap(osg::Texture::WRAP_T, osg::Texture::REPEAT);
+    return tex;
+}
+
+osg::ref_ptr<osg::Material> material(const Rgb& c) {
+    osg::ref_ptr<osg::Material> m = new osg::Material;
+    m->setDiffuse(osg::Material::FRONT_AND_BACK, rgba(c));
+    m->setAmbient(osg::Material::FRONT_AND_BACK, rgba({c[0] * 0.6f, c[1] * 0.6f, c[2] * 0.6f}));
+    m->setSpecular(osg::Material::FRONT_AND_BACK, osg::Vec4(0.25f, 0.25f, 0.25f, 1));
+    m->setShininess(osg::Material::FRONT_AND_BACK, 32);
+    return m;
+}
+
+// A checkered quad (period two tiles) with grid lines on the tile edges, centred on the origin.
+osg::ref_ptr<osg::Geode> make_ground(double tile) {
+    const double half = kGroundHalfTiles * tile;
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+
+    osg::ref_ptr<osg::Geometry> quad = new osg::Geometry;
+    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+    osg::ref_ptr<osg::Vec2Array> tc = new osg::Vec2Array;
+    const float h = static_cast<float>(half);
+    const float reps = static_cast<float>(half / tile);   // the 2x2 texture spans two tiles
+    for (auto [x, y] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+        v->push_back(osg::Vec3(x * h, y * h, 0));
+        tc->push_back(osg::Vec2(x * reps * 0.5f, y * reps * 0.5f));
+    }
+    quad->setVertexArray(v);
+    quad->setTexCoordArray(0, tc);
+    osg::ref_ptr<osg::Vec3Array> n = new osg::Vec3Array;
+    n->push_back(osg::Vec3(0, 0, 1));
+    quad->setNormalArray(n, osg::Array::BIND_OVERALL);
+    osg::ref_ptr<osg::Vec4Array> c = new osg::Vec4Array;
+    c->push_back(osg::Vec4(1, 1, 1, 1));
+    quad->setColorArray(c, osg::Array::BIND_OVERALL);
+    quad->addPrimitiveSet(new osg::DrawArrays(GL_QUADS, 0, 4));
+    auto* qs = quad->getOrCreateStateSet();
+    qs->setTextureAttributeAndModes(0, texture_from({kGroundLight, kGroundDark, kGroundDark, kGroundLight}, 2));
+    qs->setAttributeAndModes(material({1, 1, 1}));
+    qs->setAttributeAndModes(new osg::PolygonOffset(1.0f, 1.0f));
+    geode->addDrawable(quad);
+
+    osg::ref_ptr<osg::Geometry> lines = new osg::Geometry;
+    osg::ref_ptr<osg::Vec3Array> lv = new osg::Vec3Array;
+    const int count = static_cast<int>(kGroundHalfTiles);
+    for (int i = -count; i <= count; ++i) {
+        const float p = static_cast<float>(i * tile);
+        lv->push_back(osg::Vec3(p, -h, 0));
+        lv->push_back(osg::Vec3(p, h, 0));
+        lv->push_back(osg::Vec3(-h, p, 0));
+        lv->push_back(osg::Vec3(h, p, 0));
+    }
+    lines->setVertexArray(lv);
+    osg::ref_ptr<osg::Vec4Array> lc = new osg::Vec4Array;
+    lc->push_back(rgba(kGridLine));
+    lines->setColorArray(lc, osg::Array::BIND_OVERALL);
+    lines->addPrimitiveSet(new osg::DrawArrays(GL_LINES, 0, static_cast<GLsizei>(lv->size())));
+    auto* ls = lines->getOrCreateStateSet();
+    ls->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+    geode->addDrawable(lines);
+    return geode;
+}
+
+} // namespace
+
+RobotScene::RobotScene(bool shadows) {
+    osg::ref_ptr<osg::LightSource> sun = new osg::LightSource;
+    osg::Light* light = sun->getLight();
+    light->setLightNum(0);
+    light->setPosition(osg::Vec4(-0.35f, -0.55f, 1.0f, 0.0f));   // directional, from above-front-left
+    light->setAmbient(osg::Vec4(0.35f, 0.35f, 0.35f, 1));
+    light->setDiffuse(osg::Vec4(0.85f, 0.83f, 0.80f, 1));
+    light->setSpecular(osg::Vec4(0.4f, 0.4f, 0.4f, 1));
+
+    if (shadows) {
+        osg::ref_ptr<osgShadow::ShadowedScene> scene = new osgShadow::ShadowedScene;
+        scene->setReceivesShadowTraversalMask(kReceivesShadow);
+        scene->setCastsShadowTraversalMask(kCastsShadow);
+        osg::ref_ptr<osgShadow::ShadowMap> map = new osgShadow::ShadowMap;
+        map->setLight(sun.get());
+        map->setTextureSize(osg::Vec2s(2048, 2048));
+        map->setAmbientBias(osg::Vec2(0.55f, 0.45f));
+        scene->setShadowTechnique(map);
+        root_ = scene;
+    } else {
+        root_ = new osg::Group;
+    }
+    auto* ss = root_->getOrCreateStateSet();
+    ss->setMode(GL_LIGHTING, osg::StateAttribute::ON);
+    ss->setMode(GL_LIGHT0, osg::StateAttribute::ON);
+    ss->setMode(GL_NORMALIZE, osg::StateAttribute::ON);
+    osg::ref_ptr<osg::LightModel> model = new osg::LightModel;
+    model->setAmbientIntensity(osg::Vec4(0.15f, 0.15f, 0.15f, 1));
+    ss->setAttributeAndModes(model);
+    // ShadowMap's shader multiplies by texture unit 0: give untextured parts a white texel.
+    ss->setTextureAttributeAndModes(0, texture_from({{1, 1, 1}}, 1));
+    root_->addChild(sun);
+
+    ground_ = new osg::MatrixTransform;
+    ground_->setNodeMask(kReceivesShadow);
+    root_->addChild(ground_);
+    robot_ = new osg::Group;
+    robot_->setNodeMask(kReceivesShadow | kCastsShadow);
+    root_->addChild(robot_);
+}
+
+void RobotScene::show(const ViewEntry& entry) {
+    io::check_recording(entry.recording);
+    if (entry.centre_body < 0 || entry.centre_body >= entry.recording.body_count)
+        throw std::invalid_argument("viewer: centre_body out of range");
+    entry_ = &entry;
+    radius_ = io::robot_radius(entry.recording, entry.centre_body);
+    double edge = 0;
+    for (const auto& part : entry.recording.parts) edge = std::max({edge, part.size[0], part.size[1], part.size[2]});
+    tile_ = edge > 0 ? 2 * edge : 0.5;   // the same tile as the POV-Ray ground
+
+    ground_->removeChildren(0, ground_->getNumChildren());
+    ground_->addChild(make_ground(tile_));
+
+    robot_->removeChildren(0, robot_->getNumChildren());
+    bodies_.clear();
+    for (int b = 0; b < entry.recording.body_count; ++b) {
+        bodies_.push_back(new osg::MatrixTransform);
+        robot_->addChild(bodies_.back());
+    }
+    const osg::ref_ptr<osg::Material> chassis = material(kChassisColour);
+    const osg::ref_ptr<osg::Material> panel = material(kPanelColour);
+    for (const auto& part : entry.recording.parts) {
+        osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+        osg::ref_ptr<osg::ShapeDrawable> box = new osg::ShapeDrawable(
+            new osg::Box(osg::Vec3(), static_cast<float>(part.size[0]), static_cast<float>(part.size[1]),
+                         static_cast<float>(part.size[2])));
+        geode->addDrawable(box);
+        geode->getOrCreateStateSet()->setAttributeAndModes(part.kind == sim::PartKind::Chassis ? chassis : panel);
+        osg::ref_ptr<osg::MatrixTransform> offset = new osg::MatrixTransform(pose_matrix(part.offset));
+        offset->addChild(geode);
+        bodies_[static_cast<std::size_t>(part.body)]->addChild(offset);
+    }
+    set_time(0.0);
+}
+
+double RobotScene::duration() const {
+    return entry_ ? io::recording_end(entry_->recording) - io::recording_start(entry_->recording) : 0.0;
+}
+
+void RobotScene::set_time(double t) {
+    if (!entry_) return;
+    const auto poses = io::sample_frame(entry_->recording, io::recording_start(entry_->recording) + std::clamp(t, 0.0, duration()));
+    for (std::size_t b = 0; b < bodies_.size(); ++b) bodies_[b]->setMatrix(pose_matrix(poses[b]));
+    const auto& c = poses[static_cast<std::size_t>(entry_->centre_body)].pos;
+    centre_.set(c[0], c[1], c[2]);
+    // Keep the finite ground under the robot, moved by whole checker periods so it looks still.
+    const double period = 2 * tile_;
+    ground_->setMatrix(osg::Matrixd::translate(std::round(c[0] / period) * period,
+                                               std::round(c[1] / period) * period, 0));
+}
+
+osg::Vec3d RobotScene::focus() const { return {centre_.x(), centre_.y(), 0.35 * radius_}; }
+
+osg::Vec3d RobotScene::default_eye() const {
+    // The same view direction as the POV-Ray camera (src/io/povray.cpp), in z-up coordinates.
+    return focus() + osg::Vec3d(1.9, -2.6, 1.5) * radius_;
+}
+
+} // namespace cic::viz
