@@ -4,9 +4,9 @@
 // Counter "GPops" = nodes x rows per second.
 #include <benchmark/benchmark.h>
 
-#include <thread>
 #include <vector>
 
+#include "cic/core/process_pool.hpp"
 #include "cic/core/rng.hpp"
 #include "cic/tree/eval.hpp"
 #include "cic/tree/tree.hpp"
@@ -74,23 +74,13 @@ void BM_GPops(benchmark::State& state) {
     const auto trees = make_trees(transcendental);
     std::size_t nodes = 0;
     for (const auto& t : trees) nodes += t.size();
-    std::vector<std::vector<double>> out(static_cast<std::size_t>(threads), std::vector<double>(kRows));
-
-    auto work = [&](int w) {
-        for (std::size_t i = static_cast<std::size_t>(w); i < trees.size(); i += static_cast<std::size_t>(threads)) {
-            evaluate(trees[i], data.pointers, kRows, out[static_cast<std::size_t>(w)]);
-            benchmark::DoNotOptimize(out[static_cast<std::size_t>(w)].data());
-        }
+    // Trees are handed out one at a time (cic::parallel_for), each thread writing to its own buffer.
+    auto work = [&](std::size_t i) {
+        thread_local std::vector<double> out(kRows);
+        evaluate(trees[i], data.pointers, kRows, out);
+        benchmark::DoNotOptimize(out.data());
     };
-    for (auto _ : state) {
-        if (threads == 1) {
-            work(0);
-        } else {
-            std::vector<std::thread> pool;
-            for (int w = 0; w < threads; ++w) pool.emplace_back(work, w);
-            for (auto& th : pool) th.join();
-        }
-    }
+    for (auto _ : state) cic::parallel_for(trees.size(), threads, work);
     state.counters["GPops"] = benchmark::Counter(static_cast<double>(nodes) * kRows,
                                                  benchmark::Counter::kIsIterationInvariantRate);
     state.counters["nodes"] = static_cast<double>(nodes);

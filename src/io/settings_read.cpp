@@ -1,4 +1,6 @@
 // Settings reader: XML file and --set overrides -> Settings, driven by the table.
+#include <libxml/tree.h>
+
 #include <algorithm>
 #include <set>
 
@@ -91,6 +93,9 @@ std::vector<Assignment> gather_document(const xml::Document& doc) {
             if (auto [it, fresh] = seen_keys.emplace(section + "." + key, node.line()); !fresh)
                 throw node.error("<" + section + "> " + key + " is given twice (first at line " +
                                  std::to_string(it->second) + ")");
+            if (node.text().empty() && node.get()->properties != nullptr)
+                throw node.error("<" + section + "> " + key + ": write the value as the element's text, <" + key +
+                                 ">value</" + key + ">, not as an attribute");
             out.push_back({k, node.text(), node.file(), node.line()});
         }
     }

@@ -101,10 +101,16 @@ std::string settings_schema() {
     auto doc = xml::Document::create("xs:schema");
     auto schema = doc.root();
     schema.set_attribute("xmlns:xs", "http://www.w3.org/2001/XMLSchema");
-    schema.add_comment(" Generated from the settings table by `cic settings schema`; do not edit by hand. ");
-    auto root = schema.add_element("xs:element");
-    root.set_attribute("name", "settings");
-    auto root_all = root.add_element("xs:complexType").add_element("xs:all");
+    schema.add_comment(" Generated from the settings table (cic settings, option schema); do not edit by hand. ");
+    // The root is <settings>; <cic> is accepted too (the reader takes any root).
+    for (const char* name : {"settings", "cic"}) {
+        auto root = schema.add_element("xs:element");
+        root.set_attribute("name", name);
+        root.set_attribute("type", "SettingsFile");
+    }
+    auto root_type = schema.add_element("xs:complexType");
+    root_type.set_attribute("name", "SettingsFile");
+    auto root_all = root_type.add_element("xs:all");
     for (const auto& section : settings_sections()) {
         auto sec = root_all.add_element("xs:element");
         sec.set_attribute("name", section);

@@ -293,9 +293,9 @@ std::vector<SettingKey> build_table() {
                         FIELD(gp.population_size)));
     t.push_back(double_row("GP", "expectedGeneratedTreeSize", {1.0, 1e6},
                            "Expected tree size for PTC1 initialisation (thesis 6.3.4.4)", FIELD(gp.expected_tree_size)));
-    t.push_back(int_row("GP", "maximumGeneratedTreeDepth", 0, 20, "Maximum depth of generated trees",
+    t.push_back(int_row("GP", "maximumGeneratedTreeDepth", 1, 20, "Maximum depth of generated trees",
                         FIELD(gp.max_init_depth)));
-    t.push_back(int_row("GP", "minimumGeneratedTreeDepth", 0, 20, "Minimum depth of generated trees",
+    t.push_back(int_row("GP", "minimumGeneratedTreeDepth", 1, 20, "Minimum depth of generated trees",
                         FIELD(gp.min_init_depth)));
     t.push_back(enum_row<InitMethod>("GP", "initMethod",
                                      {{InitMethod::Ptc1, {"ptc1"}}, {InitMethod::Grow, {"grow"}},
@@ -344,7 +344,7 @@ std::vector<SettingKey> build_table() {
                            FIELD(gp.mutation_rate)));
     t.push_back(int_row("GP", "elitism", 0, 10000000, "Best individuals copied unchanged into the next generation",
                         FIELD(gp.elitism)));
-    t.push_back(int_row("GP", "maximumMutationDepth", 0, 20, "Maximum depth of subtrees grown by mutation",
+    t.push_back(int_row("GP", "maximumMutationDepth", 1, 20, "Maximum depth of subtrees grown by mutation",
                         FIELD(gp.max_mutation_depth)));
     t.push_back(int_row("GP", "maximumTreeDepth", 1, 100, "Hard depth limit of offspring when bloat control is off",
                         FIELD(gp.max_tree_depth)));

@@ -94,6 +94,7 @@ double parse_number(const SettingKey& k, std::string_view text) {
         v = t[0] == '-' ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
     } else {
         // from_chars would also take "nan" / "inf" spellings we do not want.
+        if (t.find(',') != std::string_view::npos) throw ValueError("not a number (the decimal point is '.')");
         if (t.empty() || !(std::isdigit(static_cast<unsigned char>(t.back())) || t.back() == '.'))
             throw ValueError("not a number");
         auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);

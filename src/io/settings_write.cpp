@@ -13,7 +13,7 @@ std::string write_settings(const Settings& s, bool documented) {
         root.add_comment(
             " cic settings. Every key is optional; a missing key keeps the default shown here. "
             "Keys of the thesis (Appendix B) keep their original names. Any key can be overridden on the "
-            "command line (cic help: option set Section.key=value). Schema: settings/cic-settings.xsd ");
+            "command line with the set option (Section.key=value; see cic help). Schema: settings/cic-settings.xsd ");
     for (const auto& section : settings_sections()) {
         auto sec = root.add_element(section);
         for (const auto& k : settings_table()) {

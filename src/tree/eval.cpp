@@ -4,12 +4,24 @@
 // compiler vectorises. Variables point straight into the caller's columns and
 // constants are filled once per call, so terminals cost nothing per block.
 //
-// Every operation maps finite inputs to finite outputs (docs/primitives.md):
-// add/sub/mul/div clamp to +-DBL_MAX, exp-like inputs are clamped, protected
-// division/sqrt/log have fixed rules. Hence a whole tree is finite on finite input.
+// Semantics (docs/primitives.md): add/sub/mul/div results are clamped to
+// +-DBL_MAX, exp/sigmoid inputs to 700, division/sqrt/log are protected; so a
+// tree maps finite inputs to finite outputs.
+//
+// Speed: the clamps are the identity unless an infinity appears. Each block is
+// first run WITHOUT clamps ("fast"); it is re-run with clamps only when an
+// infinity or NaN may have occurred. Exactness argument: in the fast run a
+// non-finite value at a node flows only to its parent, and every operation
+// either passes non-finite values on (add sub mul neg abs sin cos sqrt log, and
+// div's numerator unless the denominator is tiny, where both runs give 1) or
+// is checked for non-finite input (div's denominator, exp gauss tanh atan
+// sigmoid). So if no check fires and the root block is finite, no value was
+// ever non-finite, every clamp was the identity, and the fast result is the
+// clamped result bit for bit.
 #include "cic/tree/eval.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -22,48 +34,70 @@ namespace cic::tree {
 namespace {
 
 constexpr std::size_t kBlock = 64;
-constexpr double kMax = std::numeric_limits<double>::max();
+constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kExpLimit = 700.0;   // exp(700) ~ 1e304, still finite
 constexpr double kDivEpsilon = 1e-9;
+constexpr std::uint64_t kAll = ~std::uint64_t{0};
 
-// Written as compare-selects so they map onto minpd/maxpd.
+// +-inf -> +-DBL_MAX: the largest finite double is the bit pattern just below
+// infinity, so subtracting one from the bits of an infinity clamps it (a compare,
+// an and and an integer add once vectorised). Finite values pass unchanged.
 inline double finite(double x) {
-    x = x < kMax ? x : kMax;
-    return x > -kMax ? x : -kMax;
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+    return std::bit_cast<double>(bits + (std::fabs(x) == kInf ? kAll : 0));
 }
 
+template <bool Clamp>
+inline double fin(double x) {
+    if constexpr (Clamp) return finite(x);
+    else return x;
+}
+
+// Mask of all ones when x is inf or NaN (a vectorisable compare).
+inline std::uint64_t non_finite(double x) { return std::fabs(x) < kInf ? 0 : kAll; }
+
 // The per-operation loops. `n` is a compile-time constant for full blocks.
-#define CIC_UNARY(name, expr)                                                                  \
-    inline void name(double* __restrict d, const double* __restrict a, std::size_t n) {        \
-        for (std::size_t k = 0; k < n; ++k) {                                                  \
-            const double x = a[k];                                                             \
-            d[k] = (expr);                                                                     \
-        }                                                                                      \
+// `bad` collects the fast run's checks (see the top of the file).
+#define CIC_BINARY(fname, expr, check)                                                                       \
+    template <bool C>                                                                                        \
+    inline void fname(double* __restrict d, const double* __restrict a, const double* __restrict b,          \
+                      std::size_t n, std::uint64_t& bad) {                                                   \
+        std::uint64_t acc = 0;                                                                               \
+        _Pragma("GCC unroll 4") for (std::size_t k = 0; k < n; ++k) {                                        \
+            const double x = a[k], y = b[k];                                                                 \
+            d[k] = (expr);                                                                                   \
+            if constexpr (!C) acc |= (check);                                                                \
+        }                                                                                                    \
+        bad |= acc;                                                                                          \
     }
-#define CIC_BINARY(name, expr)                                                                                    \
-    inline void name(double* __restrict d, const double* __restrict a, const double* __restrict b, std::size_t n) { \
-        for (std::size_t k = 0; k < n; ++k) {                                                                     \
-            const double x = a[k], y = b[k];                                                                      \
-            d[k] = (expr);                                                                                        \
-        }                                                                                                         \
+#define CIC_UNARY(fname, expr, check)                                                                        \
+    template <bool C>                                                                                        \
+    inline void fname(double* __restrict d, const double* __restrict a, std::size_t n, std::uint64_t& bad) { \
+        std::uint64_t acc = 0;                                                                               \
+        for (std::size_t k = 0; k < n; ++k) {                                                                \
+            const double x = a[k];                                                                           \
+            d[k] = (expr);                                                                                   \
+            if constexpr (!C) acc |= (check);                                                                \
+        }                                                                                                    \
+        bad |= acc;                                                                                          \
     }
 
-CIC_BINARY(k_add, finite(x + y))
-CIC_BINARY(k_sub, finite(x - y))
-CIC_BINARY(k_mul, finite(x * y))
+CIC_BINARY(k_add, fin<C>(x + y), 0)
+CIC_BINARY(k_sub, fin<C>(x - y), 0)
+CIC_BINARY(k_mul, fin<C>(x * y), 0)
 // The quotient is computed unconditionally so the select is branch-free.
-CIC_BINARY(k_div, (std::fabs(y) < kDivEpsilon ? 1.0 : finite(x / y)))
-CIC_UNARY(k_neg, -x)
-CIC_UNARY(k_abs, std::fabs(x))
-CIC_UNARY(k_sin, std::sin(x))
-CIC_UNARY(k_cos, std::cos(x))
-CIC_UNARY(k_tanh, std::tanh(x))
-CIC_UNARY(k_atan, std::atan(x))
-CIC_UNARY(k_exp, std::exp(x < kExpLimit ? x : kExpLimit))
-CIC_UNARY(k_gauss, std::exp(-(x * x)))
-CIC_UNARY(k_sqrt, std::sqrt(std::fabs(x)))
-CIC_UNARY(k_log, (x == 0.0 ? 0.0 : std::log(std::fabs(x))))
-CIC_UNARY(k_sigmoid, 1.0 / (1.0 + std::exp(-x < kExpLimit ? -x : kExpLimit)))
+CIC_BINARY(k_div, (std::fabs(y) < kDivEpsilon ? 1.0 : fin<C>(x / y)), (std::fabs(y) == kInf ? kAll : 0))
+CIC_UNARY(k_neg, -x, 0)
+CIC_UNARY(k_abs, std::fabs(x), 0)
+CIC_UNARY(k_sin, std::sin(x), 0)
+CIC_UNARY(k_cos, std::cos(x), 0)
+CIC_UNARY(k_tanh, std::tanh(x), non_finite(x))
+CIC_UNARY(k_atan, std::atan(x), non_finite(x))
+CIC_UNARY(k_exp, std::exp(x < kExpLimit ? x : kExpLimit), non_finite(x))
+CIC_UNARY(k_gauss, std::exp(-(x * x)), non_finite(x))
+CIC_UNARY(k_sqrt, std::sqrt(std::fabs(x)), 0)
+CIC_UNARY(k_log, (x == 0.0 ? 0.0 : std::log(std::fabs(x))), 0)
+CIC_UNARY(k_sigmoid, 1.0 / (1.0 + std::exp(-x < kExpLimit ? -x : kExpLimit)), non_finite(x))
 
 #undef CIC_UNARY
 #undef CIC_BINARY
@@ -75,11 +109,14 @@ struct Scratch {
     std::vector<std::uint32_t> first;     // first child of node i
 };
 
-template <std::size_t Fixed>
-void run_block(std::span<const Node> nodes, Scratch& s, std::span<const double* const> columns,
-               std::size_t row, std::size_t count, double* out) {
+// One block of rows through the whole tree; returns a non-zero mask when the
+// fast run (Clamp = false) must be redone with clamps.
+template <std::size_t Fixed, bool Clamp>
+std::uint64_t run_block(std::span<const Node> nodes, Scratch& s, std::span<const double* const> columns,
+                        std::size_t row, std::size_t count, double* out) {
     const std::size_t n = Fixed ? Fixed : count;
     const std::size_t last = nodes.size() - 1;
+    std::uint64_t bad = 0;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         const Node& node = nodes[i];
         double* d = i == last ? out : s.buffers.data() + i * kBlock;
@@ -88,26 +125,36 @@ void run_block(std::span<const Node> nodes, Scratch& s, std::span<const double* 
         switch (node.op) {
         case Op::Var: s.value[i] = columns[node.var] + row; continue;
         case Op::Const: s.value[i] = s.buffers.data() + i * kBlock; continue;
-        case Op::Add: k_add(d, a, b, n); break;
-        case Op::Sub: k_sub(d, a, b, n); break;
-        case Op::Mul: k_mul(d, a, b, n); break;
-        case Op::Div: k_div(d, a, b, n); break;
-        case Op::Neg: k_neg(d, a, n); break;
-        case Op::Abs: k_abs(d, a, n); break;
-        case Op::Sin: k_sin(d, a, n); break;
-        case Op::Cos: k_cos(d, a, n); break;
-        case Op::Tanh: k_tanh(d, a, n); break;
-        case Op::Atan: k_atan(d, a, n); break;
-        case Op::Exp: k_exp(d, a, n); break;
-        case Op::Gauss: k_gauss(d, a, n); break;
-        case Op::Sqrt: k_sqrt(d, a, n); break;
-        case Op::Log: k_log(d, a, n); break;
-        case Op::Sigmoid: k_sigmoid(d, a, n); break;
+        case Op::Add: k_add<Clamp>(d, a, b, n, bad); break;
+        case Op::Sub: k_sub<Clamp>(d, a, b, n, bad); break;
+        case Op::Mul: k_mul<Clamp>(d, a, b, n, bad); break;
+        case Op::Div: k_div<Clamp>(d, a, b, n, bad); break;
+        case Op::Neg: k_neg<Clamp>(d, a, n, bad); break;
+        case Op::Abs: k_abs<Clamp>(d, a, n, bad); break;
+        case Op::Sin: k_sin<Clamp>(d, a, n, bad); break;
+        case Op::Cos: k_cos<Clamp>(d, a, n, bad); break;
+        case Op::Tanh: k_tanh<Clamp>(d, a, n, bad); break;
+        case Op::Atan: k_atan<Clamp>(d, a, n, bad); break;
+        case Op::Exp: k_exp<Clamp>(d, a, n, bad); break;
+        case Op::Gauss: k_gauss<Clamp>(d, a, n, bad); break;
+        case Op::Sqrt: k_sqrt<Clamp>(d, a, n, bad); break;
+        case Op::Log: k_log<Clamp>(d, a, n, bad); break;
+        case Op::Sigmoid: k_sigmoid<Clamp>(d, a, n, bad); break;
         }
         s.value[i] = d;
     }
     if (nodes[last].op == Op::Var || nodes[last].op == Op::Const)   // a lone terminal
         std::copy_n(s.value[last], n, out);
+    if constexpr (!Clamp)
+        for (std::size_t k = 0; k < n; ++k) bad |= non_finite(out[k]);
+    return bad;
+}
+
+template <std::size_t Fixed>
+void run_checked(std::span<const Node> nodes, Scratch& s, std::span<const double* const> columns,
+                 std::size_t row, std::size_t count, double* out) {
+    if (run_block<Fixed, false>(nodes, s, columns, row, count, out) != 0)
+        run_block<Fixed, true>(nodes, s, columns, row, count, out);
 }
 
 // All row blocks of one tree. Cloned for AVX2 where the compiler and CPU allow it;
@@ -118,8 +165,8 @@ __attribute__((target_clones("avx2", "default"), flatten))
 void run_blocks(std::span<const Node> nodes, Scratch& s, std::span<const double* const> columns,
                 std::size_t rows, double* out) {
     std::size_t row = 0;
-    for (; row + kBlock <= rows; row += kBlock) run_block<kBlock>(nodes, s, columns, row, kBlock, out + row);
-    if (row < rows) run_block<0>(nodes, s, columns, row, rows - row, out + row);
+    for (; row + kBlock <= rows; row += kBlock) run_checked<kBlock>(nodes, s, columns, row, kBlock, out + row);
+    if (row < rows) run_checked<0>(nodes, s, columns, row, rows - row, out + row);
 }
 
 } // namespace

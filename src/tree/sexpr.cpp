@@ -130,7 +130,7 @@ private:
         const char* first = tok.data() + (tok[0] == '+' ? 1 : 0);   // from_chars rejects a leading '+'
         const auto [p, ec] = std::from_chars(first, end, v);
         if (ec != std::errc() || p != end || !std::isfinite(v) ||
-            !(std::isdigit(static_cast<unsigned char>(*first)) || *first == '-' || *first == '.'))
+            !(std::isdigit(static_cast<unsigned char>(*first)) || *first == '.' || (*first == '-' && first == tok.data())))
             fail(col, "expected a number or a variable x0, x1, ..., got '" + std::string(tok) + "'");
         return Node::constant(v);
     }

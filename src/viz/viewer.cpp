@@ -52,7 +52,11 @@ Viewer::Viewer(std::vector<ViewEntry> entries, ViewerOptions options)
     if (entries_.empty()) throw std::invalid_argument("viewer: nothing to show");
     if (!(options_.speed > 0) || options_.width <= 0 || options_.height <= 0)
         throw std::invalid_argument("viewer: speed, width and height must be positive");
-    for (const auto& e : entries_) io::check_recording(e.recording);
+    for (const auto& e : entries_) {
+        io::check_recording(e.recording);
+        if (e.centre_body < 0 || e.centre_body >= e.recording.body_count)
+            throw std::invalid_argument("viewer: centre_body out of range");
+    }
 }
 
 int Viewer::run() {

@@ -93,7 +93,8 @@ TEST(Generators, NodeFrequenciesFollowTheProbabilities) {
     Rng rng(5);
     std::vector<double> functions(4), terminals(4);   // x0 x1 1 -1
     for (int n = 0; n < 3000; ++n) {
-        for (const Node& node : gen.generate(rng).nodes()) {
+        const Tree t = gen.generate(rng);   // keep the tree alive: nodes() is a view
+        for (const Node& node : t.nodes()) {
             if (node.op == Op::Var) ++terminals[node.var];
             else if (node.op == Op::Const) ++terminals[node.value > 0 ? 2 : 3];
             else for (std::size_t k = 0; k < 4; ++k) if (cfg.functions[k] == node.op) ++functions[k];

@@ -94,6 +94,10 @@ TEST(SettingsErrors, EmptyValues) {
 TEST(SettingsErrors, DuplicatesAndNesting) {
     auto m = error_of(gp("<elitism>1</elitism>\n<elitism>2</elitism>"));
     EXPECT_HAS(m, "bad.xml:4: <GP> elitism is given twice (first at line 3)");
+    m = error_of(gp("<elitism value=\"1\"/>"));
+    EXPECT_HAS(m, "bad.xml:3: <GP> elitism: write the value as the element's text");
+    m = error_of("<settings><Simulator><sample_step>0,5</sample_step></Simulator></settings>");
+    EXPECT_HAS(m, "the decimal point is '.'");
     m = error_of(gp("<elitism><x/></elitism>"));
     EXPECT_HAS(m, "expected a value, found nested elements");
 }

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -94,23 +95,33 @@ TEST(Eval, FiniteInputsGiveFiniteOutputs) {
     }
 }
 
-TEST(Eval, BatchMatchesReferenceOnRandomTrees) {
+TEST(Eval, BatchMatchesReferenceBitForBit) {
+    // Blocks 0 and 2 hold ordinary values; block 1 and the partial block mix in
+    // huge values, so overflow (and the clamped re-run) happens in some blocks only.
     Rng rng(11);
-    const std::size_t rows = 64 * 3 + 17;   // full blocks and a partial one
+    const std::size_t rows = 64 * 3 + 17;
+    const double extremes[] = {1e300, -1e300, 1e-300, 0.0, -0.0, 1e200, std::numeric_limits<double>::max()};
     std::vector<std::vector<double>> data(4, std::vector<double>(rows));
     for (auto& c : data)
-        for (double& v : c) v = rng.uniform(-3.0, 3.0);
+        for (std::size_t r = 0; r < rows; ++r) {
+            const bool wild = (r >= 64 && r < 128) || r >= 192;
+            c[r] = wild && rng.bernoulli(0.5) ? extremes[rng.index(7)] : rng.uniform(-3.0, 3.0);
+        }
     const double* cols[] = {data[0].data(), data[1].data(), data[2].data(), data[3].data()};
     std::vector<double> out(rows);
-    for (int n = 0; n < 300; ++n) {
+    int clamped = 0;
+    for (int n = 0; n < 400; ++n) {
         const Tree t = trees::random_tree(rng, 6, 4);
         evaluate(t, cols, rows, out);
-        for (std::size_t r = 0; r < rows; r += 7) {
+        for (std::size_t r = 0; r < rows; ++r) {
             const std::vector<double> x{data[0][r], data[1][r], data[2][r], data[3][r]};
             const double want = reference(t, t.size() - 1, x);
-            ASSERT_EQ(out[r], want) << t.to_string() << " row " << r;
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(out[r]), std::bit_cast<std::uint64_t>(want))
+                << t.to_string() << " row " << r << ": " << out[r] << " vs " << want;
+            clamped += std::fabs(out[r]) == std::numeric_limits<double>::max() ? 1 : 0;
         }
     }
+    EXPECT_GT(clamped, 0);   // the clamped path was exercised
 }
 
 TEST(Eval, SameTreeSameResultAcrossCallsAndRowCounts) {

@@ -74,6 +74,8 @@ TEST(SExpr, MalformedTextNamesColumnAndProblem) {
     expect_error("(add x0 nan)", 9, "expected a number");
     expect_error("(add x0 -inf)", 9, "expected a number");
     expect_error("(add x0 xq)", 9, "expected a variable");
+    expect_error("(add x0 +-1)", 9, "expected a number");
+    expect_error("(add x0 --1)", 9, "expected a number");
     expect_error("(add x0 x-1)", 9, "expected a variable");
     expect_error("( x0)", 3, "unknown function 'x0'");
     expect_error("()", 2, "expected a function name");

@@ -1,0 +1,137 @@
+// The `cic` command line: options of the main job, subcommand registration,
+// and the mapping of errors to exit codes (0 ok, 1 run failure, 2 bad input).
+#include "cic/app/cli.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <fstream>
+#include <iostream>
+
+#include "cic/app/commands.hpp"
+#include "cic/app/run.hpp"
+#include "cic/app/run_folder.hpp"
+#include "cic/core/error.hpp"
+#include "cic/io/settings_io.hpp"
+#include "cic/io/xml.hpp"
+
+namespace cic::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct MainOptions {
+    std::string settings_file;
+    std::vector<std::string> sets;
+    std::string seed;     // kept as text: validated by the settings table like any other value
+    std::string output;
+};
+
+std::string self_executable(const char* argv0) {
+    std::error_code ec;
+    fs::path p = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) return p.string();
+    return fs::absolute(argv0, ec).string();
+}
+
+std::string command_line(int argc, char** argv) {
+    std::string s;
+    for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
+    return s;
+}
+
+// The main job. Everything that can be wrong with the input is checked before
+// anything is written.
+int run_main_job(const MainOptions& o, const CommandContext& ctx, int argc, char** argv) {
+    std::vector<std::string> overrides = o.sets;
+    if (!o.seed.empty()) overrides.push_back("Experiment.seed=" + o.seed);
+    if (!o.output.empty()) overrides.push_back("Experiment.outputDirectory=" + o.output);
+    io::Settings settings = io::load_settings(o.settings_file, overrides);
+    settings.experiment.name = run_name(settings);
+    const std::string effective = io::write_settings(settings);
+
+    const fs::path run_dir = create_run_folder(settings.experiment.output_directory, settings.experiment.name);
+    io::xml::write_file_atomically(run_dir / "settings.xml", effective);
+    {
+        std::ofstream log(run_dir / "run.log");
+        log << "cic " << CIC_VERSION << "\ncommand: " << command_line(argc, argv) << "\nsettings: "
+            << o.settings_file << " (effective settings in settings.xml)\n";
+        if (!log) throw std::runtime_error("cannot write " + (run_dir / "run.log").string());
+    }
+    if (!ctx.quiet) std::cerr << "cic: run folder " << run_dir.string() << '\n';
+
+    RunOptions run;
+    run.run_dir = run_dir;
+    run.quiet = ctx.quiet;
+    run.verbose = ctx.verbose;
+    run.worker_executable = self_executable(argv[0]);
+    return run_experiment(settings, run);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CommandContext ctx;
+    MainOptions o;
+    CLI::App app{"cic: evolutionary robotics with HyperGP (hypercube-encoded genetic programming evolving "
+                 "recurrent neural controllers for simulated modular robots), and symbolic regression.\n"
+                 "Runs the experiment a settings file describes; each run gets a fresh folder OUTPUT/NAME-NNN "
+                 "with the effective settings, a log, statistics and populations.",
+                 "cic"};
+    app.set_version_flag("--version", std::string("cic ") + CIC_VERSION);
+    app.add_option("--settings", o.settings_file, "settings XML file (see `cic settings --defaults`)");
+    app.add_option("--set", o.sets, "override one setting, Section.key=value (repeatable), e.g. GP.tournament_size=7")
+        ->allow_extra_args(false);
+    app.add_option("--seed", o.seed, "shortcut for --set Experiment.seed=N");
+    app.add_option("--output", o.output, "shortcut for --set Experiment.outputDirectory=DIR");
+    auto quiet = app.add_flag("--quiet,-q", ctx.quiet, "no progress output");
+    app.add_flag("--verbose,-v", ctx.verbose, "more progress output")->excludes(quiet);
+    app.footer(io::settings_key_listing());
+    app.require_subcommand(0, 1);
+    app.fallthrough();
+
+    add_settings_command(app, ctx);
+    add_simulate_command(app, ctx);
+    add_worker_command(app, ctx);
+    add_render_command(app, ctx);
+    add_plot_command(app, ctx);
+    add_trace_command(app, ctx);
+#ifdef CIC_HAVE_VIEWER
+    add_view_command(app, ctx);
+#endif
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "cic: error: " << e.what() << "\nRun `cic --help` for the options.\n";
+        return 2;
+    } catch (const InputError& e) {   // thrown by a subcommand outside its guard
+        std::cerr << "cic: error: " << e.what() << '\n';
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "cic: error: " << e.what() << '\n';
+        return 1;
+    }
+    if (!app.get_subcommands().empty()) return ctx.exit_code;
+
+    if (o.settings_file.empty()) {
+        std::cerr << "cic: error: give --settings FILE (or a subcommand); run `cic --help` for the options\n";
+        return 2;
+    }
+    try {
+        return run_main_job(o, ctx, argc, argv);
+    } catch (const InputError& e) {
+        std::cerr << "cic: error: " << e.what() << '\n';
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "cic: error: " << e.what() << '\n';
+        return 1;
+    }
+}
+
+} // namespace cic::app

@@ -1,0 +1,51 @@
+#pragma once
+// Helpers for end-to-end tests that run the real `cic` binary on a settings file.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace cic::testing {
+
+inline std::string cic_binary() {
+    const char* env = std::getenv("CIC_BINARY");
+    return env ? env : CIC_BINARY;
+}
+
+// A fresh temporary folder for one test.
+inline std::filesystem::path temp_dir(const std::string& name) {
+    const auto dir = std::filesystem::temp_directory_path() / ("cic-test-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+inline std::string read_text(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+inline void write_text(const std::filesystem::path& p, const std::string& text) {
+    std::ofstream(p) << text;
+}
+
+// Runs a shell command line; returns the exit code; output goes to `log`.
+inline int run_command(const std::string& args, const std::filesystem::path& log) {
+    const std::string cmd = cic_binary() + " " + args + " > " + log.string() + " 2>&1";
+    const int rc = std::system(cmd.c_str());
+    return WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
+}
+
+// The single run folder cic created below `output`.
+inline std::filesystem::path only_run(const std::filesystem::path& output) {
+    std::filesystem::path found;
+    for (const auto& e : std::filesystem::directory_iterator(output))
+        if (e.is_directory()) found = e.path();
+    return found;
+}
+
+
+} // namespace cic::testing

@@ -1,0 +1,96 @@
+// Offscreen screenshots of a real replay: the PNG must show a lit robot on the ground.
+#include <gtest/gtest.h>
+
+#include <osg/Image>
+#include <osgDB/ReadFile>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "cic/app/preset_replay.hpp"
+#include "cic/viz/palette.hpp"
+#include "cic/viz/viewer.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace cic;
+
+// R1 under a sine gait for 2 s, recorded at 25 fps: the recording the viewer plays.
+viz::ViewEntry sine_entry() {
+    app::PresetReplay preset;
+    preset.robot_type = 1;
+    preset.controller = "sine:0.6,0.5";
+    preset.sim.sample_to = 2.0;
+    preset.sim.delayed_start = 0.0;
+    app::ReplayItem item = app::replay_preset(preset, 25.0, false);
+    return {{-1, item.label, item.replayed_fitness}, std::move(item.recording), item.centre_body};
+}
+
+fs::path temp_png(const std::string& name) {
+    return fs::temp_directory_path() / ("cic_viz_test_" + std::to_string(::getpid()) + "_" + name + ".png");
+}
+
+// Without an X display the GL tests re-run this binary under xvfb-run (Mesa software GL).
+bool rerun_under_xvfb(const std::string& filter, int& status) {
+    if (std::getenv("DISPLAY")) return false;
+    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) return false;
+    const std::string self = fs::read_symlink("/proc/self/exe").string();
+    const std::string cmd = "xvfb-run -a -s '-screen 0 1024x768x24' '" + self + "' --gtest_filter=" + filter;
+    status = std::system(cmd.c_str());
+    return true;
+}
+
+TEST(Screenshot, ShowsALitRobotOnTheGround) {
+    int status = 0;
+    if (rerun_under_xvfb("Screenshot.ShowsALitRobotOnTheGround", status)) {
+        ASSERT_EQ(status, 0) << "the test failed under xvfb-run";
+        return;
+    }
+    if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY and no xvfb-run";
+
+    const viz::ViewEntry entry = sine_entry();
+    const fs::path png = temp_png("robot");
+    viz::screenshot(entry, 1.0, 320, 240, png);
+    ASSERT_TRUE(fs::exists(png));
+    osg::ref_ptr<osg::Image> image = osgDB::readRefImageFile(png.string());
+    ASSERT_TRUE(image.valid());
+    ASSERT_EQ(image->s(), 320);
+    ASSERT_EQ(image->t(), 240);
+
+    std::set<unsigned> colours;
+    int orange = 0, blue = 0, sky = 0;
+    for (int y = 0; y < image->t(); ++y)
+        for (int x = 0; x < image->s(); ++x) {
+            const osg::Vec4 c = image->getColor(x, y);
+            colours.insert(static_cast<unsigned>(c.r() * 255) << 16 | static_cast<unsigned>(c.g() * 255) << 8 |
+                           static_cast<unsigned>(c.b() * 255));
+            if (c.r() > 0.3f && c.r() > 1.6f * c.b() && c.g() > 1.2f * c.b()) ++orange;   // chassis
+            if (c.b() > 0.3f && c.b() > 1.9f * c.r()) ++blue;                             // panels
+            if (std::abs(c.r() - viz::kSky[0]) < 0.02f && std::abs(c.b() - viz::kSky[2]) < 0.02f) ++sky;
+        }
+    EXPECT_GT(colours.size(), 50u) << "a blank or flat image";
+    EXPECT_GT(orange, 200) << "no chassis pixels";
+    EXPECT_GT(blue, 20) << "no panel pixels";
+    EXPECT_GT(sky, 100) << "no sky above the horizon";
+    fs::remove(png);
+}
+
+TEST(Screenshot, RejectsBadArguments) {
+    viz::ViewEntry entry;
+    entry.recording.body_count = 1;
+    entry.recording.times = {0.0};
+    entry.recording.frames = {{sim::Pose{}}};
+    EXPECT_THROW(viz::screenshot(entry, 0.0, 0, 10, temp_png("bad")), std::invalid_argument);
+    EXPECT_THROW(viz::screenshot(entry, -1.0, 10, 10, temp_png("bad")), std::invalid_argument);
+    EXPECT_THROW(viz::screenshot(entry, 0.0, 10, 10, "x.jpg"), std::invalid_argument);
+    entry.centre_body = 3;
+    EXPECT_THROW(viz::Viewer({entry}), std::invalid_argument);
+    EXPECT_THROW(viz::Viewer({}), std::invalid_argument);
+}
+
+} // namespace
