@@ -19,20 +19,41 @@ void append_constant(std::string& out, double v) {
     out += buf;
 }
 
-void write(const Tree& t, std::size_t i, std::string& out) {
-    const Node& n = t.nodes()[i];
-    switch (n.op) {
-    case Op::Const: append_constant(out, n.value); return;
-    case Op::Var: out += 'x'; out += std::to_string(n.var); return;
-    default: break;
-    }
-    out += '(';
-    out += name(n.op);
-    for (std::size_t c : t.children(i)) {
+// Prefix walk with an explicit stack (trees may be 65535 levels deep).
+void write(const Tree& t, std::string& out) {
+    struct Frame {
+        std::size_t child[2];
+        int arity;
+        int next;
+    };
+    const auto nodes = t.nodes();
+    std::vector<Frame> stack;
+    auto visit = [&](std::size_t i) {
+        const Node& n = nodes[i];
+        if (n.op == Op::Const) return append_constant(out, n.value);
+        if (n.op == Op::Var) {
+            out += 'x';
+            out += std::to_string(n.var);
+            return;
+        }
+        out += '(';
+        out += name(n.op);
+        Frame f{{0, 0}, arity(n.op), 0};
+        if (f.arity == 1) f.child[0] = i - 1;
+        else { f.child[1] = i - 1; f.child[0] = i - 1 - nodes[i - 1].size; }
+        stack.push_back(f);
+    };
+    visit(nodes.size() - 1);
+    while (!stack.empty()) {
+        Frame& f = stack.back();
+        if (f.next == f.arity) {
+            out += ')';
+            stack.pop_back();
+            continue;
+        }
         out += ' ';
-        write(t, c, out);
+        visit(f.child[f.next++]);   // may grow the stack: f is not used afterwards
     }
-    out += ')';
 }
 
 bool is_delimiter(char c) { return c == '(' || c == ')' || std::isspace(static_cast<unsigned char>(c)); }
@@ -166,7 +187,7 @@ std::string Tree::to_string() const {
     if (nodes_.empty()) return {};
     std::string out;
     out.reserve(nodes_.size() * 6);
-    write(*this, nodes_.size() - 1, out);
+    write(*this, out);
     return out;
 }
 

@@ -94,6 +94,13 @@ TEST(SExpr, DeepTextDoesNotOverflowTheStack) {
     for (int i = 0; i < 5000; ++i) text += ")";
     const Tree t = Tree::parse(text);
     EXPECT_EQ(t.depth(), 5001);
+    EXPECT_EQ(t.to_string(), text);
+    std::string deepest;   // 65535 levels: the most a tree may have
+    for (int i = 1; i < 65535; ++i) deepest += "(neg ";
+    deepest += "x0" + std::string(65534, ')');
+    const Tree d = Tree::parse(deepest);
+    EXPECT_EQ(d.depth(), 65535);
+    EXPECT_EQ(d.to_string(), deepest);
     std::string too_deep;
     for (int i = 0; i < 70000; ++i) too_deep += "(neg ";
     EXPECT_THROW(Tree::parse(too_deep), InputError);
