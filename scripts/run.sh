@@ -7,7 +7,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # shellcheck source=scripts/setup.sh
 source "$ROOT/scripts/setup.sh"
 
-SETTINGS="${1:-$ROOT/settings/symreg_settings.xml}"
+SETTINGS="${1:-$ROOT/settings/r1_settings.xml}"
 [ $# -gt 0 ] && shift
 cic_setup release "$ROOT/build" cic
 exec "$ROOT/build/cic" --settings "$SETTINGS" "$@"

@@ -1,9 +1,9 @@
 #include "cic/gp/evolution.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "cic/gp/operators.hpp"
 
@@ -65,9 +65,15 @@ GenerationRecord summarise(const Population& pop, const EvolutionState& st) {
     r.mean = std::accumulate(f.begin(), f.end(), 0.0) / n;
     r.mean_depth = depth_sum / n;
     r.mean_size = size_sum / n;
-    std::sort(f.begin(), f.end());
     const std::size_t m = f.size() / 2;
-    r.median = f.size() % 2 ? f[m] : 0.5 * (f[m - 1] + f[m]);
+    if (std::any_of(f.begin(), f.end(), [](double v) { return std::isnan(v); })) {
+        std::sort(f.begin(), f.end());   // as before: NaN has no place in a selection
+        r.median = f.size() % 2 ? f[m] : 0.5 * (f[m - 1] + f[m]);
+    } else {
+        // The m-th smallest (and for an even count the largest below it): the sorted values.
+        std::nth_element(f.begin(), f.begin() + static_cast<long>(m), f.end());
+        r.median = f.size() % 2 ? f[m] : 0.5 * (*std::max_element(f.begin(), f.begin() + static_cast<long>(m)) + f[m]);
+    }
     const Individual& best = pop.best();
     r.best = best.fitness;
     r.best_id = best.id;
@@ -123,11 +129,14 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered
     // One breeding event, retried while it only yields duplicates (bounded).
     for (int attempt = 0; out.empty(); ++attempt) {
         const bool force = attempt >= cfg_.duplicate_retries;
+        // Hashes are needed only to prevent duplicates (`seen` is not read otherwise).
         auto admit = [&](tree::Forest f, std::vector<std::uint64_t> ids) {
             if (out.size() >= room) return;
-            const auto h = tree::hash(f);
-            if (cfg_.prevent_duplicates && !force && seen.count(h)) return;
-            seen.insert(h);
+            if (cfg_.prevent_duplicates) {
+                const auto h = tree::hash(f);
+                if (!force && seen.count(h)) return;
+                seen.insert(h);
+            }
             out.push_back(make_child(st, std::move(f), std::move(ids)));
         };
         const double r = st.rng.uniform();
@@ -141,9 +150,11 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered
             admit(mutate(st.rng, p1.genotype, gen_, cfg_.max_mutation_depth), {p1.id});
         } else {
             // Reproduction: an unchanged copy keeps its known fitness.
-            const auto h = tree::hash(p1.genotype);
-            if (cfg_.prevent_duplicates && !force && seen.count(h)) continue;
-            seen.insert(h);
+            if (cfg_.prevent_duplicates) {
+                const auto h = tree::hash(p1.genotype);
+                if (!force && seen.count(h)) continue;
+                seen.insert(h);
+            }
             out.push_back(copy_of(st, p1));
         }
     }
@@ -151,18 +162,21 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered
 }
 
 void Breed::apply(Population& pop, EvolutionState& st) {
-    parents_ = pop;
+    parents_ = std::move(pop);   // pop is replaced below; nothing reads it meanwhile
     const auto n = static_cast<std::size_t>(cfg_.population_size);
     Population next;
-    next.iteration = pop.iteration + 1;
+    next.iteration = parents_.iteration + 1;
     std::unordered_set<std::uint64_t> seen;
 
-    // Elitism: the best survive unchanged (shared, already evaluated).
+    // Elitism: the best survive unchanged (shared, already evaluated). `better`
+    // is a strict total order, so a partial sort picks the same elites as a full one.
     std::vector<IndividualPtr> ranked = parents_.individuals;
-    std::sort(ranked.begin(), ranked.end(), [](const IndividualPtr& a, const IndividualPtr& b) { return better(*a, *b); });
-    for (std::size_t e = 0; e < static_cast<std::size_t>(std::max(0, cfg_.elitism)) && e < ranked.size(); ++e) {
+    const std::size_t elites = std::min(static_cast<std::size_t>(std::max(0, cfg_.elitism)), ranked.size());
+    std::partial_sort(ranked.begin(), ranked.begin() + static_cast<long>(elites), ranked.end(),
+                      [](const IndividualPtr& a, const IndividualPtr& b) { return better(*a, *b); });
+    for (std::size_t e = 0; e < elites; ++e) {
         next.individuals.push_back(ranked[e]);
-        seen.insert(tree::hash(ranked[e]->genotype));
+        if (cfg_.prevent_duplicates) seen.insert(tree::hash(ranked[e]->genotype));
     }
     while (next.size() < n)
         for (auto& c : breed_event(st, seen, n - next.size())) next.individuals.push_back(std::move(c));
@@ -192,8 +206,15 @@ void BloatControl::initialise(const Population& evaluated, EvolutionState& st) {
 }
 
 void BloatControl::filter(Population& pop, EvolutionState& st, std::span<const std::size_t> slots) {
-    std::unordered_map<std::uint64_t, const Individual*> by_id;
-    for (const auto& p : breed_.parents()) by_id.emplace(p->id, p.get());
+    // Parents by id: a sorted array (ids are unique) is cheaper than a hash map here.
+    std::vector<std::pair<std::uint64_t, const Individual*>> by_id;
+    by_id.reserve(breed_.parents().size());
+    for (const auto& p : breed_.parents()) by_id.emplace_back(p->id, p.get());
+    std::sort(by_id.begin(), by_id.end());
+    auto find = [&by_id](std::uint64_t id) -> const Individual* {
+        const auto it = std::lower_bound(by_id.begin(), by_id.end(), std::make_pair(id, static_cast<const Individual*>(nullptr)));
+        return it != by_id.end() && it->first == id ? it->second : nullptr;
+    };
 
     std::optional<DynamicLimits> dl;
     if (cfg_.enabled) {
@@ -203,17 +224,13 @@ void BloatControl::filter(Population& pop, EvolutionState& st, std::span<const s
     for (const std::size_t i : slots) {
         auto& ind = pop.individuals[i];
         if (ind->parents.empty()) continue;
-        const auto it1 = by_id.find(ind->parents[0]);
-        if (it1 == by_id.end()) continue;   // an elite carried over
-        if (ind->parents.size() == 1 && ind->genotype == it1->second->genotype) continue;  // a copy
-        const Individual* p2 = nullptr;
-        if (ind->parents.size() > 1) {
-            const auto it2 = by_id.find(ind->parents[1]);
-            if (it2 != by_id.end()) p2 = it2->second;
-        }
+        const Individual* p1 = find(ind->parents[0]);
+        if (!p1) continue;   // an elite carried over
+        if (ind->parents.size() == 1 && ind->genotype == p1->genotype) continue;  // a copy
+        const Individual* p2 = ind->parents.size() > 1 ? find(ind->parents[1]) : nullptr;
         bool ok = ind->depth() <= gp_.max_tree_depth;
-        if (ok && dl) ok = dl->accept(*ind, *it1->second, p2);
-        if (!ok) ind = copy_of(st, *it1->second);
+        if (ok && dl) ok = dl->accept(*ind, *p1, p2);
+        if (!ok) ind = copy_of(st, *p1);
     }
     if (dl) st.bloat = dl->state();
 }

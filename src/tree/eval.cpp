@@ -19,6 +19,7 @@
 // ever non-finite, every clamp was the identity, and the fast result is the
 // clamped result bit for bit.
 #include "cic/tree/eval.hpp"
+#include "cic/tree/trig.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -89,8 +90,24 @@ CIC_BINARY(k_mul, fin<C>(x * y), 0)
 CIC_BINARY(k_div, (std::fabs(y) < kDivEpsilon ? 1.0 : fin<C>(x / y)), (std::fabs(y) == kInf ? kAll : 0))
 CIC_UNARY(k_neg, -x, 0)
 CIC_UNARY(k_abs, std::fabs(x), 0)
-CIC_UNARY(k_sin, std::sin(x), 0)
-CIC_UNARY(k_cos, std::cos(x), 0)
+// sin/cos: the branch-free kernels of trig.hpp over the block (vectorised),
+// then std::sin/std::cos for the rare values outside their range.
+#define CIC_TRIG(fname, kernel, fallback)                                                                    \
+    template <bool C>                                                                                        \
+    inline void fname(double* __restrict d, const double* __restrict a, std::size_t n, std::uint64_t&) {    \
+        std::uint64_t far = 0;                                                                               \
+        for (std::size_t k = 0; k < n; ++k) {                                                                \
+            const double x = a[k];                                                                           \
+            d[k] = kernel(x);                                                                                \
+            far |= std::fabs(x) <= kTrigBound ? 0 : kAll;                                                    \
+        }                                                                                                    \
+        if (far != 0)                                                                                        \
+            for (std::size_t k = 0; k < n; ++k)                                                              \
+                if (!(std::fabs(a[k]) <= kTrigBound)) d[k] = fallback(a[k]);                                 \
+    }
+CIC_TRIG(k_sin, sin_kernel, std::sin)
+CIC_TRIG(k_cos, cos_kernel, std::cos)
+#undef CIC_TRIG
 CIC_UNARY(k_tanh, std::tanh(x), non_finite(x))
 CIC_UNARY(k_atan, std::atan(x), non_finite(x))
 CIC_UNARY(k_exp, std::exp(x < kExpLimit ? x : kExpLimit), non_finite(x))
@@ -104,7 +121,8 @@ CIC_UNARY(k_sigmoid, 1.0 / (1.0 + std::exp(-x < kExpLimit ? -x : kExpLimit)), no
 
 // Per-call scratch, reused across calls on the same thread.
 struct Scratch {
-    std::vector<double> buffers;          // kBlock values per node
+    std::vector<double> buffers;          // `stride` values per node
+    std::size_t stride = kBlock;          // kBlock, or less when there are fewer rows
     std::vector<const double*> value;     // where node i's values for the current block are
     std::vector<std::uint32_t> first;     // first child of node i
 };
@@ -119,12 +137,12 @@ std::uint64_t run_block(std::span<const Node> nodes, Scratch& s, std::span<const
     std::uint64_t bad = 0;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         const Node& node = nodes[i];
-        double* d = i == last ? out : s.buffers.data() + i * kBlock;
+        double* d = i == last ? out : s.buffers.data() + i * s.stride;
         const double* a = s.value[s.first[i]];
         const double* b = s.value[i == 0 ? 0 : i - 1];   // second child of a binary node
         switch (node.op) {
         case Op::Var: s.value[i] = columns[node.var] + row; continue;
-        case Op::Const: s.value[i] = s.buffers.data() + i * kBlock; continue;
+        case Op::Const: s.value[i] = s.buffers.data() + i * s.stride; continue;
         case Op::Add: k_add<Clamp>(d, a, b, n, bad); break;
         case Op::Sub: k_sub<Clamp>(d, a, b, n, bad); break;
         case Op::Mul: k_mul<Clamp>(d, a, b, n, bad); break;
@@ -178,9 +196,12 @@ void evaluate(const Tree& t, std::span<const double* const> columns, std::size_t
                                     std::to_string(rows));
     const auto nodes = t.nodes();
     thread_local Scratch s;
-    s.buffers.resize(nodes.size() * kBlock);
-    s.value.assign(nodes.size(), nullptr);
-    s.first.resize(nodes.size());
+    // Small batches (symreg's 20 points) get buffers just large enough, rounded up
+    // to 8 values (64 bytes), so scratch stays small and constants are filled once.
+    s.stride = rows >= kBlock ? kBlock : std::max<std::size_t>(8, (rows + 7) / 8 * 8);
+    if (s.buffers.size() < nodes.size() * s.stride) s.buffers.resize(nodes.size() * s.stride);
+    if (s.value.size() < nodes.size()) s.value.resize(nodes.size());   // every entry is set before use
+    if (s.first.size() < nodes.size()) s.first.resize(nodes.size());
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         const Node& n = nodes[i];
         if (n.op == Op::Var) {
@@ -190,7 +211,7 @@ void evaluate(const Tree& t, std::span<const double* const> columns, std::size_t
             if (rows > 0 && columns[n.var] == nullptr)
                 throw std::invalid_argument("evaluate: column " + std::to_string(n.var) + " is null");
         } else if (n.op == Op::Const) {
-            std::fill_n(s.buffers.data() + i * kBlock, kBlock, n.value);
+            std::fill_n(s.buffers.data() + i * s.stride, s.stride, n.value);
         }
         const int a = arity(n.op);
         // First child: for unary i-1, for binary skip the second child's subtree.

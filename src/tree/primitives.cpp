@@ -10,26 +10,12 @@ namespace cic::tree {
 
 namespace {
 
-struct OpInfo {
-    Op op;
-    std::string_view name;
-    int arity;
-};
-
-// Indexed by the enum's value.
-constexpr std::array<OpInfo, 17> kOps{{
-    {Op::Add, "add", 2},   {Op::Sub, "sub", 2},   {Op::Mul, "mul", 2},     {Op::Div, "div", 2},
-    {Op::Neg, "neg", 1},   {Op::Abs, "abs", 1},   {Op::Sin, "sin", 1},     {Op::Cos, "cos", 1},
-    {Op::Tanh, "tanh", 1}, {Op::Atan, "atan", 1}, {Op::Exp, "exp", 1},     {Op::Gauss, "gauss", 1},
-    {Op::Sqrt, "sqrt", 1}, {Op::Log, "log", 1},   {Op::Sigmoid, "sigmoid", 1},
-    {Op::Const, "const", 0}, {Op::Var, "var", 0},
-}};
-
-const OpInfo& info(Op op) {
-    const auto i = static_cast<std::size_t>(op);
-    if (i >= kOps.size()) throw std::invalid_argument("unknown tree operation " + std::to_string(i));
-    return kOps[i];
-}
+// The inline tables in the header must follow the enum's order.
+static_assert(static_cast<int>(Op::Var) + 1 == detail::kOpCount);
+static_assert(detail::kArity[static_cast<int>(Op::Div)] == 2 && detail::kArity[static_cast<int>(Op::Neg)] == 1 &&
+              detail::kArity[static_cast<int>(Op::Sigmoid)] == 1 && detail::kArity[static_cast<int>(Op::Const)] == 0);
+static_assert(detail::kName[static_cast<int>(Op::Sigmoid)] == "sigmoid" &&
+              detail::kName[static_cast<int>(Op::Var)] == "var");
 
 constexpr std::array<Op, 15> kCanonicalFunctions{
     Op::Add, Op::Mul, Op::Atan, Op::Sin, Op::Gauss,   // the thesis's HyperGP set
@@ -43,13 +29,13 @@ bool finite_positive(double w) { return std::isfinite(w) && w > 0.0; }
 
 } // namespace
 
-int arity(Op op) { return info(op).arity; }
-
-std::string_view name(Op op) { return info(op).name; }
+void detail::throw_unknown_op(Op op) {
+    throw std::invalid_argument("unknown tree operation " + std::to_string(static_cast<unsigned>(op)));
+}
 
 std::optional<Op> function_from_name(std::string_view n) {
-    for (const auto& i : kOps)
-        if (i.arity > 0 && i.name == n) return i.op;
+    for (int i = 0; i < detail::kOpCount; ++i)
+        if (detail::kArity[i] > 0 && detail::kName[i] == n) return static_cast<Op>(i);
     return std::nullopt;
 }
 

@@ -57,11 +57,16 @@ Tree::Tree(std::vector<Node> postfix) : nodes_(std::move(postfix)) { recompute_c
 
 void Tree::recompute_caches() {
     check_shape(nodes_, "Tree");
-    // Stack of indices of finished subtrees; children of node i are the top arity(i).
-    std::vector<std::size_t> stack;
-    stack.reserve(64);
-    for (std::size_t i = 0; i < nodes_.size(); ++i) {
-        Node& n = nodes_[i];
+    compute_caches(0);
+}
+
+// Children of node i are found from the cached sizes of the nodes before it
+// (last child at i - 1, each earlier one just before the previous one's
+// subtree), so one forward sweep fills every cache without a stack.
+void Tree::compute_caches(std::size_t from) {
+    Node* nodes = nodes_.data();
+    for (std::size_t i = from; i < nodes_.size(); ++i) {
+        Node& n = nodes[i];
         if (n.op != Op::Var) n.var = 0;        // canonical form, so == and hash() see structure only
         if (n.op != Op::Const) n.value = 0.0;
         if (n.op == Op::Const && !std::isfinite(n.value))
@@ -69,16 +74,15 @@ void Tree::recompute_caches() {
         const int a = arity(n.op);
         std::uint32_t size = 1;
         int depth = 0;
+        std::size_t c = i;
         for (int k = 0; k < a; ++k) {
-            const Node& c = nodes_[stack.back()];
-            stack.pop_back();
-            size += c.size;
-            depth = std::max(depth, int{c.depth});
+            c = k == 0 ? i - 1 : c - nodes[c].size;
+            size += nodes[c].size;
+            depth = std::max(depth, int{nodes[c].depth});
         }
         if (depth + 1 > 65535) throw std::invalid_argument("Tree: deeper than 65535 levels");
         n.size = size;
         n.depth = static_cast<std::uint16_t>(depth + 1);
-        stack.push_back(i);
     }
 }
 
@@ -123,7 +127,12 @@ Tree Tree::replace_subtree(std::size_t i, std::span<const Node> sub) const {
     out.insert(out.end(), nodes_.begin(), nodes_.begin() + static_cast<long>(b));
     out.insert(out.end(), sub.begin(), sub.end());
     out.insert(out.end(), nodes_.begin() + static_cast<long>(i) + 1, nodes_.end());
-    return Tree(std::move(out));
+    // The result is one tree (a valid prefix, one valid subtree, a valid suffix),
+    // and the prefix's caches still hold: recompute from the splice on only.
+    Tree t;
+    t.nodes_ = std::move(out);
+    t.compute_caches(b);
+    return t;
 }
 
 std::uint64_t Tree::hash() const {

@@ -16,8 +16,28 @@ enum class Op : std::uint8_t {
     Const, Var
 };
 
-int arity(Op op);
-std::string_view name(Op op);                       // "add", ..., "const", "var"
+namespace detail {
+inline constexpr int kOpCount = 17;
+// Indexed by the enum's value; inline because arity() sits in every tree walk.
+inline constexpr std::int8_t kArity[kOpCount] = {2, 2, 2, 2, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 0, 0};
+inline constexpr std::string_view kName[kOpCount] = {
+    "add", "sub", "mul", "div", "neg", "abs", "sin", "cos", "tanh", "atan", "exp", "gauss", "sqrt", "log", "sigmoid",
+    "const", "var"};
+[[noreturn]] void throw_unknown_op(Op op);   // std::invalid_argument
+} // namespace detail
+
+// Number of children; throws std::invalid_argument for a value outside the enum.
+inline int arity(Op op) {
+    const auto i = static_cast<unsigned>(op);
+    if (i >= static_cast<unsigned>(detail::kOpCount)) [[unlikely]] detail::throw_unknown_op(op);
+    return detail::kArity[i];
+}
+// "add", ..., "const", "var"; throws std::invalid_argument like arity().
+inline std::string_view name(Op op) {
+    const auto i = static_cast<unsigned>(op);
+    if (i >= static_cast<unsigned>(detail::kOpCount)) [[unlikely]] detail::throw_unknown_op(op);
+    return detail::kName[i];
+}
 std::optional<Op> function_from_name(std::string_view n);  // functions only
 
 // The canonical order used when the thesis's functionCount picks "the first N".

@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# scripts/bench.sh [--quick] [--deap N] [--r1]
+# Prints every speed figure the issues ask for, each measured within one run of this
+# script (the machine is shared: compare ratios, not absolute numbers, across days):
+#   GP node evaluations per second (Operon's protocol), 1 and 2 threads;
+#   simulator real-time factor, cost over bare ODE, evaluations/s with 1 and 2 workers;
+#   per-evaluation breakdown (substrate build, network steps, physics);
+#   with --deap N: DEAP vs cic on DEAP's symbreg example over N seeds (default off);
+#   with --r1: the default R1 run (50 x 50, seed 1, 2 workers): wall time and best fitness.
+# Builds the benchmark programs into build/ first (Release).
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# shellcheck source=scripts/setup.sh
+source "$ROOT/scripts/setup.sh"
+deap=0 r1=0 min_time=0.5
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) min_time=0.1; shift ;;
+    --deap) deap="$2"; shift 2 ;;
+    --r1) r1=1; shift ;;
+    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
+    *) echo "bench.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+cic_setup release "$ROOT/build" cic cic_bench_tree_eval cic_bench_sim cic_bench_nn
+B="$ROOT/build/benchmarks"
+
+echo "== machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), $(date -u +%FT%TZ)"
+echo
+echo "== GP node evaluations per second (1000 random trees of 1-64 nodes, 12,800 rows x 10 variables)"
+"$B/cic_bench_tree_eval" --benchmark_filter=BM_GPops --benchmark_min_time="$min_time" \
+  --benchmark_format=json 2>/dev/null | python3 -c '
+import json, sys
+for b in json.load(sys.stdin)["benchmarks"]:
+    name = b["name"].split("/")
+    sets = "{+,-,*,/,sin,exp}" if "sinexp:1" in name else "{+,-,*,/}"
+    threads = [n for n in name if n.startswith("threads:")][0].split(":")[1]
+    print(f"  {sets:18} {threads} thread(s): {b[\"items_per_second\"]/1e9:6.2f} GPops/s (x1e9)")
+'
+echo
+echo "== Simulator"
+bash "$ROOT/scripts/bench-sim.sh" "$ROOT/build"
+echo
+echo "== Per-evaluation breakdown, R1 6 legs, 15 s at 0.0125 s (1200 control steps)"
+"$B/cic_bench_nn" --benchmark_min_time="$min_time" --benchmark_format=json 2>/dev/null | python3 -c '
+import json, sys
+runs = {b["name"]: b for b in json.load(sys.stdin)["benchmarks"]}
+def ms(name): 
+    b = runs[name]; unit = {"ns": 1e-6, "us": 1e-3, "ms": 1.0}[b["time_unit"]]
+    return b["cpu_time"] * unit
+sub, net, phys = ms("BM_SubstrateBuild/20"), ms("BM_NetworkEvaluation/20"), ms("BM_PhysicsEvaluationSine")
+print(f"  substrate build:      {sub:8.3f} ms")
+print(f"  network, 1200 steps:  {net:8.3f} ms")
+print(f"  physics (sine gait):  {phys:8.3f} ms")
+print(f"  substrate + network = {100*(sub+net)/phys:.1f}% of physics (goal < 10%)")
+'
+if [ "$deap" != 0 ]; then
+  echo
+  echo "== DEAP vs cic, DEAP's symbreg example, $deap seeds"
+  CIC="$ROOT/build/cic" bash "$ROOT/scripts/compare-deap.sh" "$deap"
+fi
+if [ "$r1" = 1 ]; then
+  echo
+  echo "== Default R1 run (settings/r1_settings.xml, seed 1, 2 workers)"
+  out=$(mktemp -d)
+  start=$(date +%s.%N)
+  "$ROOT/build/cic" --settings "$ROOT/settings/r1_settings.xml" --set Experiment.workers=2 --output "$out" --quiet
+  end=$(date +%s.%N)
+  run=$(ls -d "$out"/*/)
+  python3 - "$run/stats.csv" "$start" "$end" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+print(f"  wall time: {float(sys.argv[3]) - float(sys.argv[2]):.1f} s for {len(rows)} generations")
+print(f"  best fitness: generation 0 (random genotypes) {float(rows[0]['best']):.3f}, final {float(rows[-1]['best']):.3f}")
+PY
+  echo "  run folder: $run"
+fi
