@@ -98,6 +98,9 @@ struct ProcessPool::Impl {
             throw std::runtime_error(std::string("ProcessPool: fork: ") + std::strerror(errno));
         }
         if (pid == 0) {   // child: only async-signal-safe calls until exec
+            // Ctrl-C reaches the whole process group; the parent decides when the run
+            // stops and ends its workers, so they ignore it (SIG_IGN survives exec).
+            ::signal(SIGINT, SIG_IGN);
             ::dup2(sv[1], 0);
             ::dup2(sv[1], 1);
             ::execv(argv[0], argv.data());

@@ -86,8 +86,16 @@ inline std::uint64_t non_finite(double x) { return std::fabs(x) < kInf ? 0 : kAl
 CIC_BINARY(k_add, fin<C>(x + y), 0)
 CIC_BINARY(k_sub, fin<C>(x - y), 0)
 CIC_BINARY(k_mul, fin<C>(x * y), 0)
-// The quotient is computed unconditionally so the select is branch-free.
-CIC_BINARY(k_div, (std::fabs(y) < kDivEpsilon ? 1.0 : fin<C>(x / y)), (std::fabs(y) == kInf ? kAll : 0))
+// Protected division: 1 where |y| < kDivEpsilon, else the quotient. The quotient
+// is computed for every lane and the choice made with bit masks: a ?: around a
+// division (which may trap, for the compiler) is not if-converted, and then the
+// loop is not vectorised.
+inline double div_select(double y, double q) {
+    const std::uint64_t tiny = std::fabs(y) < kDivEpsilon ? kAll : 0;
+    return std::bit_cast<double>((std::bit_cast<std::uint64_t>(q) & ~tiny) |
+                                 (std::bit_cast<std::uint64_t>(1.0) & tiny));
+}
+CIC_BINARY(k_div, div_select(y, fin<C>(x / y)), (std::fabs(y) == kInf ? kAll : 0))
 CIC_UNARY(k_neg, -x, 0)
 CIC_UNARY(k_abs, std::fabs(x), 0)
 // sin/cos: the branch-free kernels of trig.hpp over the block (vectorised),
@@ -129,19 +137,37 @@ struct Scratch {
 
 // One block of rows through the whole tree; returns a non-zero mask when the
 // fast run (Clamp = false) must be redone with clamps.
+//
+// A partial block (Fixed = 0: fewer than kBlock rows, e.g. symreg's 20) is run
+// on a count rounded up to a multiple of 8, so that the loops vectorise (GCC's
+// -O2 cost model vectorises only loops that need no scalar epilogue). Its
+// variables are copied into scratch and padded with their last row, so the
+// padding lanes repeat the last row's computation exactly: they raise no check
+// that the real rows do not, and they never reach `out`.
 template <std::size_t Fixed, bool Clamp>
 std::uint64_t run_block(std::span<const Node> nodes, Scratch& s, std::span<const double* const> columns,
                         std::size_t row, std::size_t count, double* out) {
-    const std::size_t n = Fixed ? Fixed : count;
+    constexpr bool kPartial = Fixed == 0;
+    const std::size_t n = kPartial ? (count + 7) & ~std::size_t{7} : Fixed;
     const std::size_t last = nodes.size() - 1;
     std::uint64_t bad = 0;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         const Node& node = nodes[i];
-        double* d = i == last ? out : s.buffers.data() + i * s.stride;
+        double* d = (!kPartial && i == last) ? out : s.buffers.data() + i * s.stride;
         const double* a = s.value[s.first[i]];
         const double* b = s.value[i == 0 ? 0 : i - 1];   // second child of a binary node
         switch (node.op) {
-        case Op::Var: s.value[i] = columns[node.var] + row; continue;
+        case Op::Var: {
+            const double* column = columns[node.var] + row;
+            if constexpr (kPartial) {
+                std::copy_n(column, count, d);
+                std::fill(d + count, d + n, column[count - 1]);
+                s.value[i] = d;
+            } else {
+                s.value[i] = column;
+            }
+            continue;
+        }
         case Op::Const: s.value[i] = s.buffers.data() + i * s.stride; continue;
         case Op::Add: k_add<Clamp>(d, a, b, n, bad); break;
         case Op::Sub: k_sub<Clamp>(d, a, b, n, bad); break;
@@ -161,10 +187,10 @@ std::uint64_t run_block(std::span<const Node> nodes, Scratch& s, std::span<const
         }
         s.value[i] = d;
     }
-    if (nodes[last].op == Op::Var || nodes[last].op == Op::Const)   // a lone terminal
-        std::copy_n(s.value[last], n, out);
+    const double* result = s.value[last];
+    if (result != out) std::copy_n(result, count, out);   // a partial block, or a lone terminal
     if constexpr (!Clamp)
-        for (std::size_t k = 0; k < n; ++k) bad |= non_finite(out[k]);
+        for (std::size_t k = 0; k < n; ++k) bad |= non_finite(result[k]);
     return bad;
 }
 

@@ -6,7 +6,7 @@
 //
 // Method (fdlibm's): n = nearest integer to x * 2/pi; r = x - n pi/2 with pi/2
 // split into three 33-bit parts (exact products for |n| < 2^20) and a fourth
-// 53-bit part, summed with exact TwoSum steps into r = hi + lo; then fdlibm's
+// 53-bit part, with exact TwoSum steps, giving r = hi + lo; then fdlibm's
 // kernels __kernel_sin / __kernel_cos on [-pi/4, pi/4] and the quadrant n mod 4.
 //
 // Accuracy: within 1 ulp of the correctly rounded result for |x| <= kTrigBound
@@ -80,10 +80,10 @@ inline std::uint64_t reduce(double x, double& hi, double& lo) {
     double e1, e2;
     const double r2 = two_sum(r1, -(fn * kPio2_2), e1);  // fn * kPio2_2 is exact
     const double r3 = two_sum(r2, -(fn * kPio2_3), e2);  // and so is fn * kPio2_3
-    const double tail = (e1 + e2) - fn * kPio2_3t;
-    double e3;
-    hi = two_sum(r3, tail, e3);
-    lo = e3;
+    // The kernels take hi + lo with |lo| at most a few ulp of 1 (any |hi|), which
+    // they use to first order only; not renormalising keeps the sign of -0.
+    hi = r3;
+    lo = (e1 + e2) - fn * kPio2_3t;
     // t = 1.5 * 2^52 + n, so its low mantissa bits are n (two's complement mod 2^51).
     return std::bit_cast<std::uint64_t>(t);
 }
@@ -105,8 +105,7 @@ inline double sin_kernel(double x) {
     using namespace trig_detail;
     double hi, lo;
     const std::uint64_t q = reduce(x, hi, lo);
-    const double v = quadrant(kernel_sin(hi, lo), kernel_cos(hi, lo), q);
-    return x == 0.0 ? x : v;   // the reduction's sums turn -0 into +0; sin(-0) is -0
+    return quadrant(kernel_sin(hi, lo), kernel_cos(hi, lo), q);
 }
 
 // cos(x) for |x| <= kTrigBound, as sin_kernel.
