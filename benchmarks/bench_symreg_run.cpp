@@ -4,7 +4,7 @@
 // engine's own cost without process start-up or the run folder that
 // scripts/compare-deap.sh also counts.
 //
-//   cic_bench_symreg_run --benchmark_min_time=2
+//   cic_bench_symreg_run [--benchmark_repetitions=3]
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
@@ -36,7 +36,10 @@ bool one_run(const io::Settings& s, std::uint64_t seed, experiments::Experiment&
     return experiment.success(result.population.best());
 }
 
-// Seeds 1, 2, 3, ... in turn; the CPU column is the CPU time per run.
+// Seeds 1..kRuns, one per iteration (a fixed set, so runs compare across
+// builds); the CPU column is the CPU time per run.
+constexpr int kRuns = 40;
+
 void BM_SymregDeapRun(benchmark::State& bstate) {
     const io::Settings& s = deap_settings();
     const auto dir = std::filesystem::path(CIC_SOURCE_DIR) / "settings";
@@ -54,6 +57,6 @@ void BM_SymregDeapRun(benchmark::State& bstate) {
 
 } // namespace
 
-BENCHMARK(BM_SymregDeapRun)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SymregDeapRun)->Iterations(kRuns)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

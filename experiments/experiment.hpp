@@ -2,9 +2,11 @@
 // What the run loop needs from an experiment: an evaluator for genotypes and a
 // way to describe results. Experiments are chosen by <Experiment><type>.
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 
+#include "cic/core/job_runner.hpp"
 #include "cic/gp/evolution.hpp"
 #include "cic/io/settings.hpp"
 
@@ -16,6 +18,10 @@ struct Context {
     std::filesystem::path settings_file;     // effective settings (worker processes read it)
     std::string worker_executable;           // the cic binary, for worker processes
     int workers = 1;                         // resolved (>= 1)
+    // When set, evaluation jobs go to the runner this makes instead of worker
+    // processes, and `workers` does not apply to them. The app sets it under
+    // mpirun (MPI ranks, docs/mpi.md); experiments need not know where jobs run.
+    std::function<std::unique_ptr<JobRunner>()> make_runner = {};
 };
 
 class Experiment {

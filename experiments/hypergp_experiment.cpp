@@ -1,5 +1,6 @@
 // HyperGP wiring (thesis 6.2.2): genotypes are evaluated in-process with one
-// worker, or in `cic worker` processes with more. Physics runs in separate
+// worker, in `cic worker` processes with more, or on whatever runner the app
+// hands over in Context::make_runner (MPI ranks). Physics runs in separate
 // processes because ODE's QuickStep uses process-global random state; each
 // evaluation resets it, so any number of workers gives the same fitness bits.
 #include <fmt/format.h>
@@ -14,7 +15,9 @@ namespace {
 class HypergpEvaluator final : public gp::Evaluator {
 public:
     HypergpEvaluator(const Context& ctx) : model_(hypergp::Model::from_settings(ctx.settings)) {
-        if (ctx.workers > 1) {
+        if (ctx.make_runner) {
+            pool_ = ctx.make_runner();
+        } else if (ctx.workers > 1) {
             PoolOptions opt;
             opt.workers = ctx.workers;
             opt.argv = {ctx.worker_executable, "worker", "--settings", ctx.settings_file.string()};
@@ -56,7 +59,7 @@ private:
     }
 
     hypergp::Model model_;
-    std::unique_ptr<ProcessPool> pool_;
+    std::unique_ptr<JobRunner> pool_;   // null: evaluate in this process
 };
 
 class HypergpExperiment final : public Experiment {

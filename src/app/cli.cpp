@@ -6,8 +6,12 @@
 
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "cic/app/commands.hpp"
+#ifdef CIC_HAVE_MPI
+#include "cic/app/mpi_pool.hpp"
+#endif
 #include "cic/app/run.hpp"
 #include "cic/app/run_folder.hpp"
 #include "cic/core/error.hpp"
@@ -123,6 +127,19 @@ int main(int argc, char** argv) {
         std::cerr << "cic: error: give --settings FILE (or a subcommand); run `cic --help` for the options\n";
         return 2;
     }
+#ifdef CIC_HAVE_MPI
+    // Under mpirun (docs/mpi.md): rank 0 runs the job below, the other ranks only
+    // evaluate jobs it sends them; they never read the settings file or write a
+    // file. A plain `cic` run (no launcher in the environment) never touches MPI,
+    // and neither do subcommands (so `cic worker` children stay out of it).
+    // The session outlives the job: its end tells the ranks to stop.
+    std::optional<MpiSession> mpi;
+    const int launch_size = mpi_launch_size();
+    if (launch_size > 1 || launch_size < 0) {
+        mpi.emplace();
+        if (mpi->rank() > 0) return mpi->serve();
+    }
+#endif
     try {
         return run_main_job(o, ctx, argc, argv);
     } catch (const InputError& e) {

@@ -9,9 +9,13 @@
 #include <fmt/format.h>
 
 #include "cic/core/error.hpp"
+#ifdef CIC_HAVE_MPI
+#include "cic/app/mpi_pool.hpp"
+#endif
 #include "cic/app/progress.hpp"
 #include "cic/core/process_pool.hpp"
 #include "cic/io/population_xml.hpp"
+#include "cic/io/settings_io.hpp"
 #include "cic/io/stats_csv.hpp"
 #include "cic/io/xml.hpp"
 #include "experiments/experiment.hpp"
@@ -54,6 +58,19 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
 
     const tree::PrimitiveSet ps(s.gp.primitives);
     experiments::Context ctx{s, base_dir, opt.run_dir / "settings.xml", opt.worker_executable, workers};
+    std::string mpi_note;
+#ifdef CIC_HAVE_MPI
+    // Under mpirun with more than one rank, HyperGP jobs go to ranks 1..N-1 (they
+    // get the settings as text: they may not see this run folder). Symbolic
+    // regression has no jobs: it evaluates here with threads; the ranks idle.
+    if (const int ranks = mpi_world_size(); ranks > 1) {
+        ctx.make_runner = [text = io::write_settings(s)] { return std::make_unique<MpiPool>(text); };
+        mpi_note = s.experiment.type == io::ExperimentType::HyperGP
+            ? fmt::format("MPI: {} ranks, evaluation on ranks 1..{} (Experiment.workers is not used)", ranks, ranks - 1)
+            : fmt::format("MPI: {} ranks; symbolic regression evaluates on rank 0 with {} thread{}, the other "
+                          "ranks stay idle", ranks, workers, workers == 1 ? "" : "s");
+    }
+#endif
     auto experiment = experiments::make_experiment(ctx);
 
     io::PopulationFile header = io::describe(s);
@@ -77,6 +94,7 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
     say(fmt::format("cic {}: {} experiment, seed {}, {} worker{}, output {}", CIC_VERSION,
                     s.experiment.type == io::ExperimentType::HyperGP ? "hypergp" : "symreg", state.seed, workers,
                     workers == 1 ? "" : "s", opt.run_dir.string()));
+    if (!mpi_note.empty()) say(mpi_note);
 
     io::StatsWriter stats(opt.run_dir / "stats.csv");
     fs::create_directories(opt.run_dir / "populations");

@@ -31,6 +31,34 @@ IndividualPtr copy_of(EvolutionState& st, const Individual& parent) {
 
 int generator_depth(const GpConfig& cfg) { return cfg.max_init_depth; }
 
+// Parents by id: an open-addressing table keyed by the id's low bits. Ids are
+// handed out in sequence, so they spread evenly and a look-up is one probe or
+// two (a std::unordered_map or a binary search cost several times more here).
+class ParentIndex {
+public:
+    // `slots` is storage kept by the caller, so that no generation allocates.
+    ParentIndex(const Population& parents, std::vector<const Individual*>& slots) : slots_(slots) {
+        std::size_t cap = 16;
+        while (cap < 2 * parents.size()) cap *= 2;
+        mask_ = cap - 1;
+        slots_.assign(cap, nullptr);
+        for (const auto& p : parents) {
+            std::size_t k = p->id & mask_;
+            while (slots_[k] && slots_[k]->id != p->id) k = (k + 1) & mask_;
+            if (!slots_[k]) slots_[k] = p.get();   // the first of equal ids, as a map's emplace
+        }
+    }
+    const Individual* find(std::uint64_t id) const {
+        for (std::size_t k = id & mask_;; k = (k + 1) & mask_) {
+            const Individual* p = slots_[k];
+            if (!p || p->id == id) return p;
+        }
+    }
+private:
+    std::vector<const Individual*>& slots_;
+    std::size_t mask_ = 0;
+};
+
 } // namespace
 
 std::string to_string(StopReason r) {
@@ -48,7 +76,8 @@ GenerationRecord summarise(const Population& pop, const EvolutionState& st) {
     r.limit = st.bloat.limit;
     r.evaluations = st.evaluations;
     if (pop.empty()) return r;
-    std::vector<double> f;
+    thread_local std::vector<double> f;   // reused: no allocation per generation
+    f.clear();
     f.reserve(pop.size());
     double depth_sum = 0, size_sum = 0;
     for (const auto& ind : pop) {
@@ -107,14 +136,19 @@ void Initialise::apply(Population& pop, EvolutionState& st) {
 // ------------------------------------------------------------------ Evaluate
 
 void Evaluate::apply(Population& pop, EvolutionState& st) {
-    std::vector<IndividualPtr> todo;
+    auto& todo = todo_;   // a member, so its capacity is reused every generation
+    todo.clear();
     for (const auto& ind : pop)
         if (!ind->evaluated) todo.push_back(ind);
     if (todo.empty()) return;
     eval_.evaluate(todo);
     for (const auto& ind : todo)
-        if (!ind->evaluated) throw std::logic_error("evaluator left an individual unevaluated");
+        if (!ind->evaluated) {
+            todo.clear();
+            throw std::logic_error("evaluator left an individual unevaluated");
+        }
     st.evaluations += static_cast<long>(todo.size());
+    todo.clear();   // holds no individual between calls
 }
 
 // --------------------------------------------------------------------- Breed
@@ -126,6 +160,7 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered
                                               std::size_t room) {
     const std::span<const IndividualPtr> parents(parents_.individuals);
     std::vector<IndividualPtr> out;
+    out.reserve(2);
     // One breeding event, retried while it only yields duplicates (bounded).
     for (int attempt = 0; out.empty(); ++attempt) {
         const bool force = attempt >= cfg_.duplicate_retries;
@@ -162,24 +197,38 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered
 }
 
 void Breed::apply(Population& pop, EvolutionState& st) {
+    // The generation bred from last time is released one individual per child
+    // below rather than all at once: each free is then followed by allocations of
+    // the same sizes, which malloc serves from its per-thread cache (a bulk free of
+    // hundreds of genotypes overflows that cache and makes every later allocation
+    // take the slow path). Only the order in which memory is freed changes.
+    retiring_ = std::move(parents_.individuals);
+    std::reverse(retiring_.begin(), retiring_.end());   // released from the back: first-born first
     parents_ = std::move(pop);   // pop is replaced below; nothing reads it meanwhile
     const auto n = static_cast<std::size_t>(cfg_.population_size);
     Population next;
+    next.individuals.reserve(n);
     next.iteration = parents_.iteration + 1;
     std::unordered_set<std::uint64_t> seen;
 
     // Elitism: the best survive unchanged (shared, already evaluated). `better`
     // is a strict total order, so a partial sort picks the same elites as a full one.
-    std::vector<IndividualPtr> ranked = parents_.individuals;
+    auto& ranked = ranked_;   // pointers into parents_, storage reused across generations
+    ranked.clear();
+    for (const auto& p : parents_.individuals) ranked.push_back(&p);
     const std::size_t elites = std::min(static_cast<std::size_t>(std::max(0, cfg_.elitism)), ranked.size());
     std::partial_sort(ranked.begin(), ranked.begin() + static_cast<long>(elites), ranked.end(),
-                      [](const IndividualPtr& a, const IndividualPtr& b) { return better(*a, *b); });
+                      [](const IndividualPtr* a, const IndividualPtr* b) { return better(**a, **b); });
     for (std::size_t e = 0; e < elites; ++e) {
-        next.individuals.push_back(ranked[e]);
-        if (cfg_.prevent_duplicates) seen.insert(tree::hash(ranked[e]->genotype));
+        next.individuals.push_back(*ranked[e]);
+        if (cfg_.prevent_duplicates) seen.insert(tree::hash((*ranked[e])->genotype));
     }
-    while (next.size() < n)
+    while (next.size() < n) {
+        if (!retiring_.empty()) retiring_.pop_back();   // room for this event's first child
         for (auto& c : breed_event(st, seen, n - next.size())) next.individuals.push_back(std::move(c));
+        if (!retiring_.empty()) retiring_.pop_back();   // and for the next event's allocations
+    }
+    retiring_.clear();
     pop = std::move(next);
 }
 
@@ -206,15 +255,8 @@ void BloatControl::initialise(const Population& evaluated, EvolutionState& st) {
 }
 
 void BloatControl::filter(Population& pop, EvolutionState& st, std::span<const std::size_t> slots) {
-    // Parents by id: a sorted array (ids are unique) is cheaper than a hash map here.
-    std::vector<std::pair<std::uint64_t, const Individual*>> by_id;
-    by_id.reserve(breed_.parents().size());
-    for (const auto& p : breed_.parents()) by_id.emplace_back(p->id, p.get());
-    std::sort(by_id.begin(), by_id.end());
-    auto find = [&by_id](std::uint64_t id) -> const Individual* {
-        const auto it = std::lower_bound(by_id.begin(), by_id.end(), std::make_pair(id, static_cast<const Individual*>(nullptr)));
-        return it != by_id.end() && it->first == id ? it->second : nullptr;
-    };
+    const ParentIndex by_id(breed_.parents(), index_);
+    auto find = [&by_id](std::uint64_t id) { return by_id.find(id); };
 
     std::optional<DynamicLimits> dl;
     if (cfg_.enabled) {
@@ -288,6 +330,7 @@ EvolutionResult evolve(const GpConfig& gp, const BloatConfig& bloat, const StopC
 
     GenerationRecord rec = report(!start.has_value());
     bool first = true;
+    std::vector<std::size_t> all;   // every slot, for the bloat filter
     for (;;) {
         StopReason reason{};
         bool done = true;
@@ -306,7 +349,7 @@ EvolutionResult evolve(const GpConfig& gp, const BloatConfig& bloat, const StopC
         gen_start = Clock::now();
         breed.apply(pop, state);
         evaluate.apply(pop, state);
-        std::vector<std::size_t> all(pop.size());
+        all.resize(pop.size());
         std::iota(all.begin(), all.end(), std::size_t{0});
         control.filter(pop, state, all);
         // Rejected children became parent copies: breed again where that left duplicates.

@@ -3,6 +3,7 @@
 // the function node is appended after them.
 #include "cic/gp/generators.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -94,6 +95,10 @@ void build(Rng& rng, int level, int max_depth, const Kind& kind, std::vector<Nod
     out.push_back(f);
 }
 
+// Room for a full binary tree up to depth 5, so small trees (mutation's subtrees)
+// are built without re-allocating.
+std::size_t initial_capacity(int max_depth) { return (std::size_t{1} << std::min(max_depth, 5)) - 1; }
+
 void check_depth(int d, const char* who) {
     if (d < 1 || d > 65535)
         throw std::invalid_argument(std::string(who) + ": depth must be in [1, 65535], got " + std::to_string(d));
@@ -107,6 +112,7 @@ tree::Tree TreeGenerator::grow(Rng& rng, int max_depth) const {
     const auto nf = static_cast<double>(ps_.config().functions.size());
     const double p = nf / (nf + static_cast<double>(ps_.terminal_count()));
     std::vector<Node> out;
+    out.reserve(initial_capacity(max_depth));
     build(rng, 1, max_depth, [p](Rng& r) { return r.bernoulli(p); }, out, *this, &TreeGenerator::random_function,
           &TreeGenerator::random_terminal);
     return Tree(std::move(out));
@@ -115,6 +121,7 @@ tree::Tree TreeGenerator::grow(Rng& rng, int max_depth) const {
 tree::Tree TreeGenerator::full(Rng& rng, int depth) const {
     check_depth(depth, "full");
     std::vector<Node> out;
+    out.reserve(initial_capacity(depth));
     build(rng, 1, depth, [](Rng&) { return true; }, out, *this, &TreeGenerator::random_function,
           &TreeGenerator::random_terminal);
     return Tree(std::move(out));
@@ -126,6 +133,7 @@ tree::Tree TreeGenerator::ptc1(Rng& rng, int max_depth) const {
         throw std::invalid_argument("ptc1: expected size unreachable with this function set");
     const double p = p_function_;
     std::vector<Node> out;
+    out.reserve(initial_capacity(max_depth));
     build(rng, 1, max_depth, [p](Rng& r) { return r.bernoulli(p); }, out, *this, &TreeGenerator::random_function,
           &TreeGenerator::random_terminal);
     return Tree(std::move(out));

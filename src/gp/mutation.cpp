@@ -10,13 +10,18 @@ std::size_t pick_node(Rng& rng, const tree::Tree& t) {
     if (t.empty()) throw std::invalid_argument("pick_node: empty tree");
     const auto nodes = t.nodes();
     std::size_t functions = 0;
-    for (const auto& n : nodes) functions += tree::arity(n.op) > 0 ? 1 : 0;
+    for (const auto& n : nodes) functions += tree::arity(n.op) > 0 ? 1 : 0;   // inline table look-up
     // Koza's 90/10 rule: a function node with probability 0.9, else a leaf.
     const bool want_function = functions > 0 && rng.bernoulli(0.9);
     if (functions == 0) return rng.index(nodes.size());
     std::size_t k = rng.index(want_function ? functions : nodes.size() - functions);
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-        if ((tree::arity(nodes[i].op) > 0) == want_function && k-- == 0) return i;
+    // The k-th (from 0) node of the wanted kind. Counting down without a branch on
+    // the kind (which is unpredictable) leaves one well-predicted exit test.
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const std::size_t match = (tree::arity(nodes[i].op) > 0) == want_function ? 1 : 0;
+        if (k < match) return i;   // k == 0 on a wanted node
+        k -= match;
+    }
     throw std::logic_error("pick_node: unreachable");
 }
 

@@ -127,67 +127,98 @@ CIC_UNARY(k_sigmoid, 1.0 / (1.0 + std::exp(-x < kExpLimit ? -x : kExpLimit)), no
 #undef CIC_UNARY
 #undef CIC_BINARY
 
+// Throws unless every variable of the tree has a column (non-null when rows > 0).
+// The common case is one branch-free sweep (a branch on "is this a variable"
+// mispredicts often); the exact, throwing loop runs only when something is off.
+void check_columns(std::span<const Node> nodes, std::span<const double* const> columns, std::size_t rows) {
+    unsigned out_of_range = 0;
+    for (const Node& n : nodes)
+        out_of_range |= static_cast<unsigned>(n.op == Op::Var) & static_cast<unsigned>(n.var >= columns.size());
+    const bool any_null = rows > 0 && std::find(columns.begin(), columns.end(), nullptr) != columns.end();
+    if (out_of_range == 0 && !any_null) return;
+    for (const Node& n : nodes) {
+        if (n.op != Op::Var) continue;
+        if (n.var >= columns.size())
+            throw std::invalid_argument("evaluate: tree uses x" + std::to_string(n.var) + " but only " +
+                                        std::to_string(columns.size()) + " columns were given");
+        if (rows > 0 && columns[n.var] == nullptr)
+            throw std::invalid_argument("evaluate: column " + std::to_string(n.var) + " is null");
+    }
+}
+
 // Per-call scratch, reused across calls on the same thread.
 struct Scratch {
     std::vector<double> buffers;          // `stride` values per node
     std::size_t stride = kBlock;          // kBlock, or less when there are fewer rows
-    std::vector<const double*> value;     // where node i's values for the current block are
-    std::vector<std::uint32_t> first;     // first child of node i
+    std::vector<const double*> stack;     // operands of the postfix sweep
 };
 
-// One block of rows through the whole tree; returns a non-zero mask when the
-// fast run (Clamp = false) must be redone with clamps.
+// One block of rows through the whole tree, as a postfix sweep with a stack of
+// operand pointers; returns a non-zero mask when the fast run (Clamp = false)
+// must be redone with clamps. Node i writes its values to its own buffer (so the
+// kernels never work in place and keep their __restrict). Constant buffers are
+// filled in the first block only (`fill`) and reused by later blocks.
 //
 // A partial block (Fixed = 0: fewer than kBlock rows, e.g. symreg's 20) is run
-// on a count rounded up to a multiple of 8, so that the loops vectorise (GCC's
-// -O2 cost model vectorises only loops that need no scalar epilogue). Its
-// variables are copied into scratch and padded with their last row, so the
-// padding lanes repeat the last row's computation exactly: they raise no check
-// that the real rows do not, and they never reach `out`.
+// on a count rounded up to a multiple of 4, so that the loops vectorise (GCC's
+// -O2 cost model vectorises only loops that need no scalar epilogue). When the
+// count is not a multiple of 4 already, its variables are copied into scratch
+// and padded with their last row, so the padding lanes repeat the last row's
+// computation exactly: they raise no check that the real rows do not, and they
+// never reach `out`.
 template <std::size_t Fixed, bool Clamp>
 std::uint64_t run_block(std::span<const Node> nodes, Scratch& s, std::span<const double* const> columns,
-                        std::size_t row, std::size_t count, double* out) {
+                        std::size_t row, std::size_t count, double* out, bool fill) {
     constexpr bool kPartial = Fixed == 0;
-    const std::size_t n = kPartial ? (count + 7) & ~std::size_t{7} : Fixed;
+    const std::size_t n = kPartial ? (count + 3) & ~std::size_t{3} : Fixed;
     const std::size_t last = nodes.size() - 1;
+    const double** top = s.stack.data();   // one past the top operand
     std::uint64_t bad = 0;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         const Node& node = nodes[i];
         double* d = (!kPartial && i == last) ? out : s.buffers.data() + i * s.stride;
-        const double* a = s.value[s.first[i]];
-        const double* b = s.value[i == 0 ? 0 : i - 1];   // second child of a binary node
         switch (node.op) {
         case Op::Var: {
             const double* column = columns[node.var] + row;
             if constexpr (kPartial) {
+                if (n == count) {   // nothing to pad (20 rows): read the column in place
+                    *top++ = column;
+                    continue;
+                }
                 std::copy_n(column, count, d);
                 std::fill(d + count, d + n, column[count - 1]);
-                s.value[i] = d;
+                *top++ = d;
             } else {
-                s.value[i] = column;
+                *top++ = column;
             }
             continue;
         }
-        case Op::Const: s.value[i] = s.buffers.data() + i * s.stride; continue;
-        case Op::Add: k_add<Clamp>(d, a, b, n, bad); break;
-        case Op::Sub: k_sub<Clamp>(d, a, b, n, bad); break;
-        case Op::Mul: k_mul<Clamp>(d, a, b, n, bad); break;
-        case Op::Div: k_div<Clamp>(d, a, b, n, bad); break;
-        case Op::Neg: k_neg<Clamp>(d, a, n, bad); break;
-        case Op::Abs: k_abs<Clamp>(d, a, n, bad); break;
-        case Op::Sin: k_sin<Clamp>(d, a, n, bad); break;
-        case Op::Cos: k_cos<Clamp>(d, a, n, bad); break;
-        case Op::Tanh: k_tanh<Clamp>(d, a, n, bad); break;
-        case Op::Atan: k_atan<Clamp>(d, a, n, bad); break;
-        case Op::Exp: k_exp<Clamp>(d, a, n, bad); break;
-        case Op::Gauss: k_gauss<Clamp>(d, a, n, bad); break;
-        case Op::Sqrt: k_sqrt<Clamp>(d, a, n, bad); break;
-        case Op::Log: k_log<Clamp>(d, a, n, bad); break;
-        case Op::Sigmoid: k_sigmoid<Clamp>(d, a, n, bad); break;
+        case Op::Const: {
+            double* c = s.buffers.data() + i * s.stride;   // not `out`, even for a lone constant
+            // A partial first block is the only block: n values are enough.
+            if (fill) std::fill_n(c, kPartial ? n : s.stride, node.value);
+            *top++ = c;
+            continue;
         }
-        s.value[i] = d;
+        case Op::Add: k_add<Clamp>(d, top[-2], top[-1], n, bad); --top; break;
+        case Op::Sub: k_sub<Clamp>(d, top[-2], top[-1], n, bad); --top; break;
+        case Op::Mul: k_mul<Clamp>(d, top[-2], top[-1], n, bad); --top; break;
+        case Op::Div: k_div<Clamp>(d, top[-2], top[-1], n, bad); --top; break;
+        case Op::Neg: k_neg<Clamp>(d, top[-1], n, bad); break;
+        case Op::Abs: k_abs<Clamp>(d, top[-1], n, bad); break;
+        case Op::Sin: k_sin<Clamp>(d, top[-1], n, bad); break;
+        case Op::Cos: k_cos<Clamp>(d, top[-1], n, bad); break;
+        case Op::Tanh: k_tanh<Clamp>(d, top[-1], n, bad); break;
+        case Op::Atan: k_atan<Clamp>(d, top[-1], n, bad); break;
+        case Op::Exp: k_exp<Clamp>(d, top[-1], n, bad); break;
+        case Op::Gauss: k_gauss<Clamp>(d, top[-1], n, bad); break;
+        case Op::Sqrt: k_sqrt<Clamp>(d, top[-1], n, bad); break;
+        case Op::Log: k_log<Clamp>(d, top[-1], n, bad); break;
+        case Op::Sigmoid: k_sigmoid<Clamp>(d, top[-1], n, bad); break;
+        }
+        top[-1] = d;
     }
-    const double* result = s.value[last];
+    const double* result = s.stack[0];
     if (result != out) std::copy_n(result, count, out);   // a partial block, or a lone terminal
     if constexpr (!Clamp)
         for (std::size_t k = 0; k < n; ++k) bad |= non_finite(result[k]);
@@ -197,8 +228,8 @@ std::uint64_t run_block(std::span<const Node> nodes, Scratch& s, std::span<const
 template <std::size_t Fixed>
 void run_checked(std::span<const Node> nodes, Scratch& s, std::span<const double* const> columns,
                  std::size_t row, std::size_t count, double* out) {
-    if (run_block<Fixed, false>(nodes, s, columns, row, count, out) != 0)
-        run_block<Fixed, true>(nodes, s, columns, row, count, out);
+    if (run_block<Fixed, false>(nodes, s, columns, row, count, out, row == 0) != 0)
+        run_block<Fixed, true>(nodes, s, columns, row, count, out, false);
 }
 
 // All row blocks of one tree. Cloned for AVX2 where the compiler and CPU allow it;
@@ -221,30 +252,14 @@ void evaluate(const Tree& t, std::span<const double* const> columns, std::size_t
         throw std::invalid_argument("evaluate: output holds " + std::to_string(out.size()) + " values, need " +
                                     std::to_string(rows));
     const auto nodes = t.nodes();
+    check_columns(nodes, columns, rows);
+    if (rows == 0) return;
     thread_local Scratch s;
     // Small batches (symreg's 20 points) get buffers just large enough, rounded up
-    // to 8 values (64 bytes), so scratch stays small and constants are filled once.
+    // to 8 values (64 bytes), so scratch stays small.
     s.stride = rows >= kBlock ? kBlock : std::max<std::size_t>(8, (rows + 7) / 8 * 8);
     if (s.buffers.size() < nodes.size() * s.stride) s.buffers.resize(nodes.size() * s.stride);
-    if (s.value.size() < nodes.size()) s.value.resize(nodes.size());   // every entry is set before use
-    if (s.first.size() < nodes.size()) s.first.resize(nodes.size());
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-        const Node& n = nodes[i];
-        if (n.op == Op::Var) {
-            if (n.var >= columns.size())
-                throw std::invalid_argument("evaluate: tree uses x" + std::to_string(n.var) + " but only " +
-                                            std::to_string(columns.size()) + " columns were given");
-            if (rows > 0 && columns[n.var] == nullptr)
-                throw std::invalid_argument("evaluate: column " + std::to_string(n.var) + " is null");
-        } else if (n.op == Op::Const) {
-            std::fill_n(s.buffers.data() + i * s.stride, s.stride, n.value);
-        }
-        const int a = arity(n.op);
-        // First child: for unary i-1, for binary skip the second child's subtree.
-        s.first[i] = a == 0 ? 0 : a == 1 ? static_cast<std::uint32_t>(i - 1)
-                                         : static_cast<std::uint32_t>(i - 1 - nodes[i - 1].size);
-    }
-    if (rows == 0) return;
+    if (s.stack.size() < nodes.size()) s.stack.resize(nodes.size());
     run_blocks(nodes, s, columns, rows, out.data());
 }
 

@@ -57,15 +57,15 @@ Tree::Tree(std::vector<Node> postfix) : nodes_(std::move(postfix)) { recompute_c
 
 void Tree::recompute_caches() {
     check_shape(nodes_, "Tree");
-    compute_caches(0);
+    compute_caches(0, nodes_.size());
 }
 
 // Children of node i are found from the cached sizes of the nodes before it
 // (last child at i - 1, each earlier one just before the previous one's
 // subtree), so one forward sweep fills every cache without a stack.
-void Tree::compute_caches(std::size_t from) {
+void Tree::compute_caches(std::size_t from, std::size_t to) {
     Node* nodes = nodes_.data();
-    for (std::size_t i = from; i < nodes_.size(); ++i) {
+    for (std::size_t i = from; i < to; ++i) {
         Node& n = nodes[i];
         if (n.op != Op::Var) n.var = 0;        // canonical form, so == and hash() see structure only
         if (n.op != Op::Const) n.value = 0.0;
@@ -127,11 +127,31 @@ Tree Tree::replace_subtree(std::size_t i, std::span<const Node> sub) const {
     out.insert(out.end(), nodes_.begin(), nodes_.begin() + static_cast<long>(b));
     out.insert(out.end(), sub.begin(), sub.end());
     out.insert(out.end(), nodes_.begin() + static_cast<long>(i) + 1, nodes_.end());
-    // The result is one tree (a valid prefix, one valid subtree, a valid suffix),
-    // and the prefix's caches still hold: recompute from the splice on only.
+    // The result is one tree (a valid prefix, one valid subtree, a valid suffix).
+    // Caches change only in the new subtree and on the path above it: a suffix
+    // node is an ancestor of node i exactly when its old subtree began at or
+    // before b; every other node keeps its (already canonical) cache.
     Tree t;
     t.nodes_ = std::move(out);
-    t.compute_caches(b);
+    const std::size_t end = b + sub.size();
+    t.compute_caches(b, end);
+    const auto old_size = static_cast<std::int64_t>(nodes_[i].size);
+    const std::int64_t delta = static_cast<std::int64_t>(sub.size()) - old_size;
+    Node* nodes = t.nodes_.data();
+    for (std::size_t j = end; j < t.nodes_.size(); ++j) {
+        Node& n = nodes[j];
+        const std::int64_t old_j = static_cast<std::int64_t>(j) - delta;
+        if (old_j + 1 - static_cast<std::int64_t>(n.size) > static_cast<std::int64_t>(b)) continue;
+        n.size = static_cast<std::uint32_t>(static_cast<std::int64_t>(n.size) + delta);
+        int depth = 0;
+        std::size_t c = j;
+        for (int k = 0, a = arity(n.op); k < a; ++k) {
+            c = k == 0 ? j - 1 : c - nodes[c].size;
+            depth = std::max(depth, int{nodes[c].depth});
+        }
+        if (depth + 1 > 65535) throw std::invalid_argument("Tree: deeper than 65535 levels");
+        n.depth = static_cast<std::uint16_t>(depth + 1);
+    }
     return t;
 }
 

@@ -11,6 +11,9 @@ namespace cic::app {
 
 struct WorkerContext {
     std::string settings_file;   // `cic worker --settings FILE` (may be empty)
+    // The effective settings as XML text, for workers that cannot read rank 0's
+    // run folder (MPI ranks on other machines). When set, it wins over settings_file.
+    std::string settings_text;
 };
 
 using JobHandler = std::function<std::string(const std::string& body)>;

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "cic/core/job_runner.hpp"
+
 namespace cic {
 
 struct PoolOptions {
@@ -17,24 +19,19 @@ struct PoolOptions {
     int retries = 1;                    // extra attempts after a crash or hang
 };
 
-struct JobResult {
-    bool ok = false;
-    std::string output;                 // the worker's reply when ok
-    std::string error;                  // why not, when !ok
-    int attempts = 0;
-};
+// JobResult is declared in job_runner.hpp.
 
-class ProcessPool {
+class ProcessPool : public JobRunner {
 public:
     explicit ProcessPool(PoolOptions options);   // starts the workers; throws std::runtime_error
-    ~ProcessPool();                              // ends them
+    ~ProcessPool() override;                     // ends them
     ProcessPool(const ProcessPool&) = delete;
     ProcessPool& operator=(const ProcessPool&) = delete;
 
     // Runs every job, results in job order. Jobs are handed to free workers in order.
-    std::vector<JobResult> run(const std::vector<std::string>& jobs);
+    std::vector<JobResult> run(const std::vector<std::string>& jobs) override;
 
-    int workers() const;
+    int workers() const override;
     int restarts() const;                        // workers replaced so far
     std::vector<int> pids() const;               // for tests (kill one)
 

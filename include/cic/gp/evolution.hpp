@@ -89,6 +89,7 @@ public:
     void apply(Population& pop, EvolutionState& st) override;
 private:
     Evaluator& eval_;
+    std::vector<IndividualPtr> todo_;   // scratch, empty between calls
 };
 
 // Builds the next generation: elitism, then selection + crossover / mutation /
@@ -109,6 +110,8 @@ private:
     const GpConfig& cfg_;
     TreeGenerator gen_;
     Population parents_;
+    std::vector<const IndividualPtr*> ranked_;   // scratch for elitism
+    std::vector<IndividualPtr> retiring_;        // scratch: the previous parents, freed while breeding
 };
 
 // Dynamic Limits filter over freshly evaluated children (thesis 5.2): a child
@@ -128,6 +131,7 @@ private:
     const GpConfig& gp_;
     const BloatConfig& cfg_;
     const Breed& breed_;
+    std::vector<const Individual*> index_;   // scratch: parents by id (see filter)
 };
 
 struct EvolutionHooks {

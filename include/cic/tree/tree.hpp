@@ -60,7 +60,7 @@ public:
 
 private:
     void recompute_caches(); // validates shape too
-    void compute_caches(std::size_t from);  // caches of nodes [from, end); shape already valid
+    void compute_caches(std::size_t from, std::size_t to);  // caches of nodes [from, to); shape already valid
     std::vector<Node> nodes_;
 };
 

@@ -12,7 +12,7 @@
 // Accuracy: within 1 ulp of the correctly rounded result for |x| <= kTrigBound
 // (tested: at most 1 ulp from glibc's std::sin/std::cos, see tests/tree/trig_test.cpp
 // and docs/primitives.md). Outside that range, and for inf and NaN, the
-// evaluator calls std::sin / std::cos instead (sin_kernel flags those inputs).
+// evaluator calls std::sin / std::cos instead (see tree_sin / tree_cos below).
 #include <bit>
 #include <cmath>
 #include <cstdint>
