@@ -12,6 +12,7 @@
 # Environment: CIC=path to the cic binary (default: build/cic, then build-*/cic)
 #              DEAP_FITNESS=mse (DEAP's example, default) or sae (cic's fitness)
 #              KEEP=1 keeps cic's run folders (printed at the end)
+#              PER_PROCESS=1 starts one cic process per seed instead of --seeds
 set -euo pipefail
 
 N=${1:-100}
@@ -54,29 +55,31 @@ deap_cpu=$(field cpu_seconds)
 
 echo "== cic ($CIC), seeds $START..$((START + N - 1))"
 TIMEFORMAT='%R %U %S'
-cic_success=0
-cic_wall=0
-cic_cpu=0
-for ((seed = START; seed < START + N; seed++)); do
-    out="$WORK/seed-$seed"
-    times="$WORK/time-$seed"
-    # bash's own `time` (wall, user and system seconds of the cic process).
-    if ! { time "$CIC" --settings "$SETTINGS" --seed "$seed" --output "$out" --quiet \
-        > "$WORK/log-$seed" 2>&1; } 2> "$times"; then
-        echo "compare-deap: cic failed on seed $seed:" >&2
-        cat "$WORK/log-$seed" >&2
+# Like DEAP's script (all seeds in one Python process), cic runs all seeds in one
+# process with --seeds; every run still writes its own run folder. With
+# PER_PROCESS=1 each seed is a separate cic process (start-up counted N times).
+times="$WORK/time"
+if [[ "${PER_PROCESS:-0}" == 1 ]]; then
+    { time for ((seed = START; seed < START + N; seed++)); do
+        "$CIC" --settings "$SETTINGS" --seed "$seed" --output "$WORK/runs" --quiet > "$WORK/log-$seed" 2>&1 ||
+            { echo "compare-deap: cic failed on seed $seed:" >&2; cat "$WORK/log-$seed" >&2; exit 1; }
+      done; } 2> "$times"
+else
+    if ! { time "$CIC" --settings "$SETTINGS" --seeds "$START-$((START + N - 1))" --output "$WORK/runs" --quiet \
+        > "$WORK/log" 2>&1; } 2> "$times"; then
+        echo "compare-deap: cic failed:" >&2
+        cat "$WORK/log" >&2
         exit 1
     fi
-    read -r wall user sys < <(tail -n 1 "$times")
-    cic_wall=$(calc "$cic_wall + $wall")
-    cic_cpu=$(calc "$cic_cpu + $user + $sys")
-    summary=$(find "$out" -name summary.txt | head -n 1)
-    if [[ -z "$summary" ]]; then
-        echo "compare-deap: cic wrote no summary.txt for seed $seed (in $out)" >&2
-        exit 1
-    fi
-    if grep -q '(success)' "$summary"; then cic_success=$((cic_success + 1)); fi
-done
+fi
+read -r cic_wall user sys < <(tail -n 1 "$times")
+cic_cpu=$(calc "$user + $sys")
+runs=$(find "$WORK/runs" -name summary.txt | wc -l)
+if [[ "$runs" -ne "$N" ]]; then
+    echo "compare-deap: expected $N summary.txt files from cic, found $runs (in $WORK/runs)" >&2
+    exit 1
+fi
+cic_success=$(grep -l '(success)' "$WORK"/runs/*/summary.txt | wc -l)
 printf 'cic: runs %d, successes %d (%.0f%%), total %.2f s wall (%.2f s CPU), per run %.3f s\n' \
     "$N" "$cic_success" "$(calc "100 * $cic_success / $N")" "$cic_wall" "$cic_cpu" "$(calc "$cic_wall / $N")"
 
@@ -84,5 +87,5 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (b > 0) printf "%.1f", a / b; else
 echo "== summary over $N seeds"
 printf 'success rate: DEAP %d/%d, cic %d/%d\n' "$deap_success" "$N" "$cic_success" "$N"
 echo "time per run, DEAP / cic: $(ratio "$deap_wall" "$cic_wall")x by wall clock, $(ratio "$deap_cpu" "$cic_cpu")x by CPU time"
-echo "(cic's figures include process start-up and writing its run folder; DEAP's exclude Python start-up)"
+echo "(cic's figures include writing every run folder, with fsync; neither side counts its start-up N times)"
 if [[ "${KEEP:-0}" == 1 ]]; then echo "cic run folders kept in $WORK"; fi

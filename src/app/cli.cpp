@@ -27,8 +27,35 @@ struct MainOptions {
     std::string settings_file;
     std::vector<std::string> sets;
     std::string seed;     // kept as text: validated by the settings table like any other value
+    std::string seeds;    // "A-B" or "A,B,C": one run per seed in this process
     std::string output;
 };
+
+// "3-7" -> 3 4 5 6 7; "1,5,9" -> 1 5 9. Each seed is then checked by the settings table.
+std::vector<std::string> expand_seeds(const std::string& text) {
+    std::vector<std::string> out;
+    auto number = [&](const std::string& t) {
+        if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos || t.size() > 19)
+            throw InputError("--seeds: '" + t + "' is not a seed; expected A-B or a comma list such as 1,5,9");
+        return std::stoull(t);
+    };
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        const std::string item = text.substr(start, comma - start);
+        const std::size_t dash = item.find('-');
+        if (dash == std::string::npos) {
+            out.push_back(std::to_string(number(item)));
+        } else {
+            const auto a = number(item.substr(0, dash)), b = number(item.substr(dash + 1));
+            if (b < a || b - a >= 100000)
+                throw InputError("--seeds: range '" + item + "' must go up and hold at most 100000 seeds");
+            for (auto v = a; v <= b; ++v) out.push_back(std::to_string(v));
+        }
+        start = comma + 1;
+    }
+    return out;
+}
 
 std::string self_executable(const char* argv0) {
     std::error_code ec;
@@ -85,7 +112,11 @@ int main(int argc, char** argv) {
     app.add_option("--settings", o.settings_file, "settings XML file (see `cic settings --defaults`)");
     app.add_option("--set", o.sets, "override one setting, Section.key=value (repeatable), e.g. GP.tournament_size=7")
         ->allow_extra_args(false);
-    app.add_option("--seed", o.seed, "shortcut for --set Experiment.seed=N");
+    auto seed = app.add_option("--seed", o.seed, "shortcut for --set Experiment.seed=N");
+    app.add_option("--seeds", o.seeds,
+                   "one run per seed, one after another in this process: A-B or a comma list (sweeps; "
+                   "each run gets its own folder)")
+        ->excludes(seed);
     app.add_option("--output", o.output, "shortcut for --set Experiment.outputDirectory=DIR");
     auto quiet = app.add_flag("--quiet,-q", ctx.quiet, "no progress output");
     app.add_flag("--verbose,-v", ctx.verbose, "more progress output")->excludes(quiet);
@@ -141,7 +172,26 @@ int main(int argc, char** argv) {
     }
 #endif
     try {
-        return run_main_job(o, ctx, argc, argv);
+        if (o.seeds.empty()) return run_main_job(o, ctx, argc, argv);
+        const auto seeds = expand_seeds(o.seeds);
+        {   // check the settings for every seed before the first run writes anything
+            std::vector<std::string> overrides = o.sets;
+            if (!o.output.empty()) overrides.push_back("Experiment.outputDirectory=" + o.output);
+            for (const auto& sd : seeds) {
+                overrides.push_back("Experiment.seed=" + sd);
+                io::load_settings(o.settings_file, overrides);
+                overrides.pop_back();
+            }
+        }
+        int rc = 0;
+        for (const auto& sd : seeds) {
+            MainOptions one = o;
+            one.seed = sd;
+            const int r = run_main_job(one, ctx, argc, argv);
+            if (r == 130) return r;   // interrupted: stop the sweep
+            if (rc == 0) rc = r;
+        }
+        return rc;
     } catch (const InputError& e) {
         std::cerr << "cic: error: " << e.what() << '\n';
         return 2;

@@ -3,6 +3,7 @@
 #include "cic/app/run.hpp"
 
 #include <csignal>
+#include <unistd.h>
 #include <cstdio>
 #include <fstream>
 
@@ -39,6 +40,22 @@ struct SigintGuard {
 };
 
 std::string population_name(int generation) { return fmt::format("gen-{:04d}.xml", generation); }
+
+// population.xml becomes a second name of the checkpoint just written (a hard
+// link renamed into place: atomic, and no second copy to write and fsync). Where
+// links are not supported, it is written as a copy.
+void point_latest_at(const std::filesystem::path& checkpoint, const std::filesystem::path& latest,
+                     const std::string& text) {
+    const auto tmp = latest.string() + ".link-" + std::to_string(::getpid());
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    std::filesystem::create_hard_link(checkpoint, tmp, ec);
+    if (!ec) std::filesystem::rename(tmp, latest, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ec);
+        io::xml::write_file_atomically(latest, text);
+    }
+}
 
 } // namespace
 
@@ -130,8 +147,9 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
         header.population = pop;
         header.state = st;
         const std::string text = io::to_xml(header);
-        io::xml::write_file_atomically(opt.run_dir / "populations" / population_name(pop.iteration), text);
-        io::xml::write_file_atomically(opt.run_dir / "population.xml", text);
+        const auto checkpoint = opt.run_dir / "populations" / population_name(pop.iteration);
+        io::xml::write_file_atomically(checkpoint, text);
+        point_latest_at(checkpoint, opt.run_dir / "population.xml", text);
     };
     SigintGuard sigint;
     hooks.stop_requested = &g_interrupted;

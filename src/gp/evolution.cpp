@@ -165,24 +165,36 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered
     for (int attempt = 0; out.empty(); ++attempt) {
         const bool force = attempt >= cfg_.duplicate_retries;
         // Hashes are needed only to prevent duplicates (`seen` is not read otherwise).
-        auto admit = [&](tree::Forest f, std::vector<std::uint64_t> ids) {
+        auto admit = [&](tree::Forest f, std::vector<std::uint64_t> ids, const Individual& a, const Individual* b) {
             if (out.size() >= room) return;
             if (cfg_.prevent_duplicates) {
                 const auto h = tree::hash(f);
                 if (!force && seen.count(h)) return;
                 seen.insert(h);
             }
-            out.push_back(make_child(st, std::move(f), std::move(ids)));
+            // Evaluation is a pure function of the genotype: a child identical to a
+            // parent (e.g. crossover swapping equal subtrees) inherits its fitness
+            // instead of being evaluated again. About a third of children in
+            // symbolic regression; results are the same, only faster.
+            const Individual* same = f == a.genotype ? &a : (b && f == b->genotype ? b : nullptr);
+            auto child = make_child(st, std::move(f), std::move(ids));
+            if (same && same->evaluated) {
+                child->fitness = same->fitness;
+                child->evaluated = true;
+                if (auto it = same->attributes.find("failed"); it != same->attributes.end())
+                    child->attributes.insert(*it);
+            }
+            out.push_back(std::move(child));
         };
         const double r = st.rng.uniform();
         const Individual& p1 = *parents[select(st.rng, parents, cfg_)];
         if (r < cfg_.crossover_rate) {
             const Individual& p2 = *parents[select(st.rng, parents, cfg_)];
             auto [a, b] = crossover(st.rng, p1.genotype, p2.genotype);
-            admit(std::move(a), {p1.id, p2.id});
-            admit(std::move(b), {p2.id, p1.id});
+            admit(std::move(a), {p1.id, p2.id}, p1, &p2);
+            admit(std::move(b), {p2.id, p1.id}, p2, &p1);
         } else if (r < cfg_.crossover_rate + cfg_.mutation_rate) {
-            admit(mutate(st.rng, p1.genotype, gen_, cfg_.max_mutation_depth), {p1.id});
+            admit(mutate(st.rng, p1.genotype, gen_, cfg_.max_mutation_depth), {p1.id}, p1, nullptr);
         } else {
             // Reproduction: an unchanged copy keeps its known fitness.
             if (cfg_.prevent_duplicates) {

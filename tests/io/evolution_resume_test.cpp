@@ -162,7 +162,8 @@ TEST(Evolution, BadStopConditionThrows) {
     const auto c = small_config();
     tree::PrimitiveSet ps(c.primitives);
     QuadraticEvaluator eval;
-    EXPECT_THROW(evolve(c, {}, StopConditions{0, 1}, ps, eval, EvolutionState{}, std::nullopt, {}),
+    const EvolutionState st;
+    EXPECT_THROW(evolve(c, {}, StopConditions{0, 1}, ps, eval, st, std::nullopt, {}),
                  std::invalid_argument);
 }
 
