@@ -11,6 +11,7 @@ source "$ROOT/scripts/setup.sh"
 if [ "${CIC_SANITIZE:-0}" = "1" ]; then
   PRESET=asan BUILD="$ROOT/build-asan"
   export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
+  export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$ROOT/tests/lsan.supp:print_suppressions=0}"
   export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 else
   PRESET=release BUILD="$ROOT/build"

@@ -1,3 +1,5 @@
+// `cic view`: only built with the viewer (CIC_WITH_VIEWER); see src/viz.
+#ifdef CIC_HAVE_VIEWER
 // `cic view`: watch replayed individuals in a window, or take an offscreen screenshot.
 #include <unistd.h>
 
@@ -120,3 +122,5 @@ void add_view_command(CLI::App& app, CommandContext& ctx) {
 }
 
 } // namespace cic::app
+
+#endif  // CIC_HAVE_VIEWER
