@@ -13,7 +13,13 @@
 #ifdef CIC_HAVE_MPI
 #include "cic/app/mpi_pool.hpp"
 #endif
+#include "cic/app/plot.hpp"
 #include "cic/app/progress.hpp"
+#include "cic/app/replay.hpp"
+#include "cic/io/povray.hpp"
+#ifdef CIC_HAVE_VIEWER
+#include "cic/viz/viewer.hpp"
+#endif
 #include "cic/core/process_pool.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
@@ -54,6 +60,49 @@ void point_latest_at(const std::filesystem::path& checkpoint, const std::filesys
     if (ec) {
         std::filesystem::remove(tmp, ec);
         io::xml::write_file_atomically(latest, text);
+    }
+}
+
+// What the thesis did when a run ended (Appendix B): plots (useMatlabPlot, now
+// gnuplot), POV-Ray scenes of the best (generatePovrayFiles) and showing the best
+// (isAutonomousExperiment = 0). A failure here is reported, never loses the run.
+template <class Say>
+void finish_run(const io::Settings& s, const RunOptions& opt, Say& say) {
+    const bool hypergp = s.experiment.type == io::ExperimentType::HyperGP;
+    auto attempt = [&](const char* what, auto&& action) {
+        try {
+            action();
+        } catch (const std::exception& e) {
+            say(std::string("note: ") + what + " failed: " + e.what());
+        }
+    };
+    if (s.control.plot)
+        attempt("the plot (useMatlabPlot)", [&] {
+            plot_runs({opt.run_dir}, opt.run_dir / "fitness.svg");
+            say("plot written to " + (opt.run_dir / "fitness.svg").string());
+        });
+    if (s.robot.generate_povray && hypergp)
+        attempt("POV-Ray export (generatePovrayFiles)", [&] {
+            auto items = replay(opt.run_dir.string(), "best", 1, 25.0, false);
+            io::PovrayOptions po;
+            po.centre_body = items.front().centre_body;
+            po.title = items.front().label;
+            const int n = io::write_povray(items.front().recording, opt.run_dir / "povray", 25.0, po);
+            say(fmt::format("{} POV-Ray scenes of the best written to {}; render them with scripts/render-video.sh {}",
+                            n, (opt.run_dir / "povray").string(), (opt.run_dir / "povray").string()));
+        });
+    if (!s.control.autonomous && hypergp) {
+#ifdef CIC_HAVE_VIEWER
+        attempt("showing the best (isAutonomousExperiment=0)", [&] {
+            std::vector<viz::ViewEntry> entries;
+            for (auto& item : replay(opt.run_dir.string(), "best", 5, 30.0, false))
+                entries.push_back({{item.generation, std::to_string(item.id), item.stored_fitness},
+                                   std::move(item.recording), item.centre_body});
+            viz::Viewer(std::move(entries)).run();
+        });
+#else
+        say("note: isAutonomousExperiment=0 but this cic was built without the viewer (CIC_WITH_VIEWER)");
+#endif
     }
 }
 
@@ -176,6 +225,7 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
         say("interrupted: population saved to " + (opt.run_dir / "population.xml").string());
         return 130;
     }
+    finish_run(s, opt, say);
     return 0;
 }
 
