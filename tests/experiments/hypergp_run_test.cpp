@@ -33,25 +33,9 @@ std::string tiny_settings(int generations, int workers, const std::string& extra
 )";
 }
 
-struct TinyRun {
-    int rc = -1;
-    fs::path run;
-    std::string log;
-};
-
-TinyRun tiny(const fs::path& dir, const std::string& name, const std::string& settings) {
-    write_text(dir / (name + ".xml"), settings);
-    TinyRun r;
-    r.rc = run_command("--quiet --settings " + (dir / (name + ".xml")).string() + " --output " + (dir / name).string(),
-                       dir / (name + ".log"));
-    r.log = read_text(dir / (name + ".log"));
-    if (fs::exists(dir / name)) r.run = only_run(dir / name);
-    return r;
-}
-
 TEST(HypergpRun, TinyRunWritesPopulationStatsAndCheckpoints) {
     const auto dir = temp_dir("hgp-files");
-    const auto r = tiny(dir, "a", tiny_settings(3, 1));
+    const auto r = run_settings(dir, "a", tiny_settings(3, 1));
     ASSERT_EQ(r.rc, 0) << r.log;
     EXPECT_TRUE(fs::exists(r.run / "settings.xml"));
     EXPECT_TRUE(fs::exists(r.run / "population.xml"));
@@ -68,8 +52,8 @@ TEST(HypergpRun, TinyRunWritesPopulationStatsAndCheckpoints) {
 
 TEST(HypergpRun, OneAndTwoWorkersGiveIdenticalPopulations) {
     const auto dir = temp_dir("hgp-workers");
-    const auto one = tiny(dir, "one", tiny_settings(3, 1));
-    const auto two = tiny(dir, "two", tiny_settings(3, 2));
+    const auto one = run_settings(dir, "one", tiny_settings(3, 1));
+    const auto two = run_settings(dir, "two", tiny_settings(3, 2));
     ASSERT_EQ(one.rc, 0) << one.log;
     ASSERT_EQ(two.rc, 0) << two.log;
     EXPECT_EQ(read_text(one.run / "population.xml"), read_text(two.run / "population.xml"));
@@ -78,11 +62,11 @@ TEST(HypergpRun, OneAndTwoWorkersGiveIdenticalPopulations) {
 
 TEST(HypergpRun, ResumeIsExactAndBestNeverFalls) {
     const auto dir = temp_dir("hgp-resume");
-    const auto full = tiny(dir, "full", tiny_settings(4, 1));
+    const auto full = run_settings(dir, "full", tiny_settings(4, 1));
     ASSERT_EQ(full.rc, 0) << full.log;
-    const auto part = tiny(dir, "part", tiny_settings(2, 1));
+    const auto part = run_settings(dir, "part", tiny_settings(2, 1));
     ASSERT_EQ(part.rc, 0) << part.log;
-    const auto resumed = tiny(dir, "resumed", tiny_settings(4, 2, "<populationXmlLoadFrom>" +
+    const auto resumed = run_settings(dir, "resumed", tiny_settings(4, 2, "<populationXmlLoadFrom>" +
                                                                      (part.run / "population.xml").string() +
                                                                      "</populationXmlLoadFrom>"));
     ASSERT_EQ(resumed.rc, 0) << resumed.log;
@@ -104,7 +88,7 @@ TEST(HypergpRun, ResumeIsExactAndBestNeverFalls) {
 
 TEST(HypergpRun, ReplayReproducesTheStoredFitness) {
     const auto dir = temp_dir("hgp-replay");
-    const auto r = tiny(dir, "a", tiny_settings(2, 1));
+    const auto r = run_settings(dir, "a", tiny_settings(2, 1));
     ASSERT_EQ(r.rc, 0) << r.log;
     const auto items = app::replay(r.run.string(), "best", 3, 10.0, true);
     ASSERT_EQ(items.size(), 3u);

@@ -48,4 +48,21 @@ inline std::filesystem::path only_run(const std::filesystem::path& output) {
 }
 
 
+// One `cic --quiet --settings DIR/NAME.xml --output DIR/NAME` run of the given settings text.
+struct RunResult {
+    int rc = -1;
+    std::filesystem::path run;   // the run folder it created (empty if none)
+    std::string log;             // everything it printed
+};
+
+inline RunResult run_settings(const std::filesystem::path& dir, const std::string& name, const std::string& text) {
+    write_text(dir / (name + ".xml"), text);
+    RunResult r;
+    r.rc = run_command("--quiet --settings " + (dir / (name + ".xml")).string() + " --output " + (dir / name).string(),
+                       dir / (name + ".log"));
+    r.log = read_text(dir / (name + ".log"));
+    if (std::filesystem::exists(dir / name)) r.run = only_run(dir / name);
+    return r;
+}
+
 } // namespace cic::testing

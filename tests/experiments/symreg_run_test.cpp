@@ -31,63 +31,47 @@ std::string settings(int generations, int workers, const std::string& control_ex
 )";
 }
 
-struct Run {
-    int rc = -1;
-    fs::path dir;
-    std::string log;
-};
-
-Run run(const fs::path& dir, const std::string& name, const std::string& text) {
-    write_text(dir / (name + ".xml"), text);
-    Run r;
-    r.rc = run_command("--quiet --settings " + (dir / (name + ".xml")).string() + " --output " + (dir / name).string(),
-                       dir / (name + ".log"));
-    r.log = read_text(dir / (name + ".log"));
-    if (fs::exists(dir / name)) r.dir = only_run(dir / name);
-    return r;
-}
-
 TEST(SymregRun, ThreadCountDoesNotChangeThePopulation) {
     const auto dir = temp_dir("sr-threads");
-    const auto one = run(dir, "one", settings(8, 1));
-    const auto two = run(dir, "two", settings(8, 2));
+    const auto one = run_settings(dir, "one", settings(8, 1));
+    const auto two = run_settings(dir, "two", settings(8, 2));
     ASSERT_EQ(one.rc, 0) << one.log;
     ASSERT_EQ(two.rc, 0) << two.log;
-    EXPECT_EQ(read_text(one.dir / "population.xml"), read_text(two.dir / "population.xml"));
+    EXPECT_EQ(read_text(one.run / "population.xml"), read_text(two.run / "population.xml"));
     fs::remove_all(dir);
 }
 
 TEST(SymregRun, ResumeIsExact) {
     const auto dir = temp_dir("sr-resume");
-    const auto full = run(dir, "full", settings(10, 1));
-    const auto part = run(dir, "part", settings(4, 1));
+    const auto full = run_settings(dir, "full", settings(10, 1));
+    const auto part = run_settings(dir, "part", settings(4, 1));
     ASSERT_EQ(full.rc, 0) << full.log;
     ASSERT_EQ(part.rc, 0) << part.log;
-    const auto resumed = run(dir, "resumed", settings(10, 2, "<populationXmlLoadFrom>" +
-                                                                  (part.dir / "population.xml").string() +
+    const auto resumed = run_settings(dir, "resumed", settings(10, 2, "<populationXmlLoadFrom>" +
+                                                                  (part.run / "population.xml").string() +
                                                                   "</populationXmlLoadFrom>"));
     ASSERT_EQ(resumed.rc, 0) << resumed.log;
-    EXPECT_EQ(read_text(resumed.dir / "population.xml"), read_text(full.dir / "population.xml"));
+    EXPECT_EQ(read_text(resumed.run / "population.xml"), read_text(full.run / "population.xml"));
     fs::remove_all(dir);
 }
 
 TEST(SymregRun, CorruptPopulationIsRefusedAndNothingIsWritten) {
     const auto dir = temp_dir("sr-corrupt");
-    const auto part = run(dir, "part", settings(2, 1));
+    const auto part = run_settings(dir, "part", settings(2, 1));
     ASSERT_EQ(part.rc, 0) << part.log;
-    std::string text = read_text(part.dir / "population.xml");
+    std::string text = read_text(part.run / "population.xml");
     write_text(dir / "cut.xml", text.substr(0, text.size() / 2));
-    const auto bad = run(dir, "bad", settings(4, 1, "<populationXmlLoadFrom>" + (dir / "cut.xml").string() +
+    const auto bad = run_settings(dir, "bad", settings(4, 1, "<populationXmlLoadFrom>" + (dir / "cut.xml").string() +
                                                         "</populationXmlLoadFrom>"));
     EXPECT_EQ(bad.rc, 2) << bad.log;
     EXPECT_NE(bad.log.find("cut.xml:"), std::string::npos) << bad.log;
     // The original file is untouched.
-    EXPECT_EQ(read_text(part.dir / "population.xml"), text);
+    EXPECT_EQ(read_text(part.run / "population.xml"), text);
     // Another experiment's shape is refused too.
-    auto other = settings(4, 1, "<populationXmlLoadFrom>" + (part.dir / "population.xml").string() +
+    auto other = settings(4, 1, "<populationXmlLoadFrom>" + (part.run / "population.xml").string() +
                                     "</populationXmlLoadFrom>");
     other.replace(other.find("<terminalVariableCount>1"), 24, "<terminalVariableCount>2");
-    const auto foreign = run(dir, "foreign", other);
+    const auto foreign = run_settings(dir, "foreign", other);
     EXPECT_EQ(foreign.rc, 2) << foreign.log;
     EXPECT_NE(foreign.log.find("terminalVariableCount"), std::string::npos) << foreign.log;
     fs::remove_all(dir);
