@@ -38,8 +38,8 @@ std::string materials_inc() {
 std::string lights_inc() {
     // A sun placed relative to the robot, so its shadow stays in view, plus a soft fill light.
     return R"(// cic: lights; needs CicCentre and CicRadius
-light_source { CicCentre + <-4, 10, -6> * CicRadius rgb <1.0, 0.97, 0.92> }
-light_source { CicCentre + <6, 4, 3> * CicRadius rgb 0.25 shadowless }
+light_source { CicCentre + <9, 11, -3.5> * CicRadius rgb <1.0, 0.97, 0.92> }
+light_source { CicCentre + <-6, 4, -3> * CicRadius rgb 0.3 shadowless }
 )";
 }
 
@@ -48,7 +48,7 @@ std::string camera_inc() {
     return R"(// cic: camera following the robot; needs CicCentre and CicRadius
 #declare CicFocus = <CicCentre.x, 0.35 * CicRadius, CicCentre.z>;
 camera {
-  location CicFocus + <1.9, 1.5, -2.6> * CicRadius
+  location CicFocus + <1.6, 0.8, -2.4> * CicRadius
   look_at CicFocus
   right x * image_width / image_height
   angle 50

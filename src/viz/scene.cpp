@@ -110,7 +110,7 @@ RobotScene::RobotScene(bool shadows) {
     osg::ref_ptr<osg::LightSource> sun = new osg::LightSource;
     osg::Light* light = sun->getLight();
     light->setLightNum(0);
-    light->setPosition(osg::Vec4(-0.35f, -0.55f, 1.0f, 0.0f));   // directional, from above-front-left
+    light->setPosition(osg::Vec4(0.9f, -0.35f, 1.1f, 0.0f));   // directional: lights the faces the camera sees
     light->setAmbient(osg::Vec4(0.35f, 0.35f, 0.35f, 1));
     light->setDiffuse(osg::Vec4(0.85f, 0.83f, 0.80f, 1));
     light->setSpecular(osg::Vec4(0.4f, 0.4f, 0.4f, 1));
@@ -133,7 +133,7 @@ RobotScene::RobotScene(bool shadows) {
     ss->setMode(GL_LIGHT0, osg::StateAttribute::ON);
     ss->setMode(GL_NORMALIZE, osg::StateAttribute::ON);
     osg::ref_ptr<osg::LightModel> model = new osg::LightModel;
-    model->setAmbientIntensity(osg::Vec4(0.15f, 0.15f, 0.15f, 1));
+    model->setAmbientIntensity(osg::Vec4(0.3f, 0.3f, 0.3f, 1));
     ss->setAttributeAndModes(model);
     // ShadowMap's shader multiplies by texture unit 0: give untextured parts a white texel.
     ss->setTextureAttributeAndModes(0, texture_from({{1, 1, 1}}, 1));
@@ -202,7 +202,7 @@ osg::Vec3d RobotScene::focus() const { return {centre_.x(), centre_.y(), 0.35 * 
 
 osg::Vec3d RobotScene::default_eye() const {
     // The same view direction as the POV-Ray camera (src/io/povray.cpp), in z-up coordinates.
-    return focus() + osg::Vec3d(1.9, -2.6, 1.5) * radius_;
+    return focus() + osg::Vec3d(1.6, -2.4, 0.8) * radius_;
 }
 
 } // namespace cic::viz

@@ -41,7 +41,7 @@ osg::ref_ptr<osg::GraphicsContext> offscreen_context(int width, int height) {
         traits->width = width;
         traits->height = height;
         traits->red = traits->green = traits->blue = 8;
-        traits->alpha = 8;
+        traits->alpha = 0;
         traits->depth = 24;
         traits->doubleBuffer = !pbuffer;
         traits->pbuffer = pbuffer;
@@ -85,7 +85,7 @@ void screenshot(const ViewEntry& entry, double at_seconds, int width, int height
     camera->setDrawBuffer(buffer);
     camera->setReadBuffer(buffer);
     camera->setClearColor(osg::Vec4(kSky[0], kSky[1], kSky[2], 1));
-    camera->setProjectionMatrixAsPerspective(35.0, static_cast<double>(width) / height, 0.05, 2000.0);
+    camera->setProjectionMatrixAsPerspective(40.0, static_cast<double>(width) / height, 0.05, 2000.0);
     camera->setViewMatrixAsLookAt(scene.default_eye(), scene.focus(), osg::Vec3d(0, 0, 1));
     osg::ref_ptr<osg::Image> image = new osg::Image;
     camera->setFinalDrawCallback(new Capture(image.get()));

@@ -72,7 +72,7 @@ int Viewer::run() {
     viewer.setUpViewInWindow(60, 60, options_.width, options_.height);
     viewer.getCamera()->setClearColor(osg::Vec4(kSky[0], kSky[1], kSky[2], 1));
     viewer.getCamera()->setProjectionMatrixAsPerspective(
-        35.0, static_cast<double>(options_.width) / options_.height, 0.05, 2000.0);
+        40.0, static_cast<double>(options_.width) / options_.height, 0.05, 2000.0);
     viewer.setSceneData(root);
     PlayState state;
     state.speed = options_.speed;

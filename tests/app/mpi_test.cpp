@@ -14,6 +14,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "support/child_env.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -29,6 +31,7 @@ bool have_mpirun() { return std::system("command -v mpirun > /dev/null 2>&1") ==
 // launch only (no ssh), shared memory between ranks, no cross-memory attach
 // (often forbidden in containers), and the right to run as root.
 const std::string kMpirun =
+    cic::test::without_leak_check() +
     "env OMPI_MCA_plm=isolated OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none "
     "OMPI_MCA_rmaps_base_oversubscribe=1 timeout 120 mpirun --allow-run-as-root --oversubscribe ";
 

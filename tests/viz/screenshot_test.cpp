@@ -14,6 +14,7 @@
 #include "cic/app/preset_replay.hpp"
 #include "cic/viz/palette.hpp"
 #include "cic/viz/viewer.hpp"
+#include "support/child_env.hpp"
 
 namespace {
 
@@ -40,7 +41,7 @@ bool rerun_under_xvfb(const std::string& filter, int& status) {
     if (std::getenv("DISPLAY")) return false;
     if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) return false;
     const std::string self = fs::read_symlink("/proc/self/exe").string();
-    const std::string cmd = "xvfb-run -a -s '-screen 0 1024x768x24' '" + self + "' --gtest_filter=" + filter;
+    const std::string cmd = cic::test::without_leak_check() + "xvfb-run -a -s '-screen 0 1024x768x24' '" + self + "' --gtest_filter=" + filter;
     status = std::system(cmd.c_str());
     return true;
 }
