@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <functional>
 #include <set>
 
 #include "settings_values.hpp"
@@ -160,36 +161,46 @@ SettingKey functions_row() {
     return k;
 }
 
-SettingKey function_count_row() {
-    auto k = row("GP", "functionCount", ValueType::Int,
-                 "Thesis form of the function set: the first N of the canonical list "
-                 "(add mul atan sin gauss sub div ...); must match the length of functions when both are given");
-    k.min = 1;
-    k.max = static_cast<double>(tree::canonical_functions().size());
+// The thesis's count form of a list setting: the first N entries of a canonical list.
+// `list` selects the settings member that the named form of the key also writes.
+template <typename List>
+SettingKey count_row(const char* key, std::string doc, std::size_t canonical_size, double min,
+                     List list, std::function<void(Settings&, std::size_t)> take_first) {
+    auto k = row("GP", key, ValueType::Int, std::move(doc));
+    k.min = min;
+    k.max = static_cast<double>(canonical_size);
     SettingKey bounds = k;
-    k.get = [](const Settings& s) { return std::to_string(s.gp.primitives.functions.size()); };
-    k.set = [bounds](Settings& s, std::string_view t) {
-        auto n = static_cast<std::size_t>(detail::parse_integer(bounds, t));
-        auto all = tree::canonical_functions();
-        s.gp.primitives.functions.assign(all.begin(), all.begin() + static_cast<long>(n));
+    k.get = [list](const Settings& s) { return std::to_string(list(s).size()); };
+    k.set = [bounds, take_first](Settings& s, std::string_view t) {
+        take_first(s, static_cast<std::size_t>(detail::parse_integer(bounds, t)));
     };
     return k;
 }
 
+SettingKey function_count_row() {
+    return count_row(
+        "functionCount",
+        "Thesis form of the function set: the first N of the canonical list "
+        "(add mul atan sin gauss sub div ...); must match the length of functions when both are given",
+        tree::canonical_functions().size(), 1,
+        [](const Settings& s) -> const auto& { return s.gp.primitives.functions; },
+        [](Settings& s, std::size_t n) {
+            auto all = tree::canonical_functions();
+            s.gp.primitives.functions.assign(all.begin(), all.begin() + static_cast<long>(n));
+        });
+}
+
 SettingKey consts_count_row() {
-    auto k = row("GP", "terminalConstsCount", ValueType::Int,
-                 "Thesis form of the constants: the first N of the canonical list (1 -1 0 2 -2 0.5 ...); "
-                 "must match the length of terminalConsts when both are given");
-    k.min = 0;
-    k.max = static_cast<double>(tree::canonical_constants().size());
-    SettingKey bounds = k;
-    k.get = [](const Settings& s) { return std::to_string(s.gp.primitives.constants.size()); };
-    k.set = [bounds](Settings& s, std::string_view t) {
-        auto n = static_cast<std::size_t>(detail::parse_integer(bounds, t));
-        auto all = tree::canonical_constants();
-        s.gp.primitives.constants.assign(all.begin(), all.begin() + static_cast<long>(n));
-    };
-    return k;
+    return count_row(
+        "terminalConstsCount",
+        "Thesis form of the constants: the first N of the canonical list (1 -1 0 2 -2 0.5 ...); "
+        "must match the length of terminalConsts when both are given",
+        tree::canonical_constants().size(), 0,
+        [](const Settings& s) -> const auto& { return s.gp.primitives.constants; },
+        [](Settings& s, std::size_t n) {
+            auto all = tree::canonical_constants();
+            s.gp.primitives.constants.assign(all.begin(), all.begin() + static_cast<long>(n));
+        });
 }
 
 SettingKey function_probabilities_row() {
