@@ -80,8 +80,8 @@ void add_view_command(CLI::App& app, CommandContext& ctx) {
         CLI::NonNegativeNumber);
     cmd->add_option("--width", opts->width, "pixels (default 1024, or 800 for a screenshot)")->check(CLI::PositiveNumber);
     cmd->add_option("--height", opts->height, "pixels (default 768, or 600 for a screenshot)")->check(CLI::PositiveNumber);
-    cmd->add_option("--speed", opts->speed, "playback speed, 1 = real time")->capture_default_str()->check(
-        CLI::PositiveNumber);
+    cmd->add_option("--speed", opts->speed, "playback speed, 1 = real time (1/16 to 16)")->capture_default_str()->check(
+        CLI::Range(1.0 / 16, 16.0));
     cmd->add_option("--fps", opts->fps, "recorded frames per second (interpolated in between)")
         ->capture_default_str()->check(CLI::PositiveNumber);
     cmd->add_flag("--no-shadows", opts->no_shadows, "draw without shadow mapping");
