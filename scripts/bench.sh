@@ -35,7 +35,8 @@ for b in json.load(sys.stdin)["benchmarks"]:
     name = b["name"].split("/")
     sets = "{+,-,*,/,sin,exp}" if "sinexp:1" in name else "{+,-,*,/}"
     threads = [n for n in name if n.startswith("threads:")][0].split(":")[1]
-    print(f"  {sets:18} {threads} thread(s): {b[\"items_per_second\"]/1e9:6.2f} GPops/s (x1e9)")
+    gpops = b["GPops"] / 1e9
+    print(f"  {sets:18} {threads} thread(s): {gpops:6.2f} GPops/s (x1e9)")
 '
 echo
 echo "== Simulator"

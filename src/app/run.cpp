@@ -192,7 +192,8 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
     };
     hooks.on_checkpoint = [&](const gp::Population& pop, const gp::EvolutionState& st, bool last) {
         const int interval = std::max(1, s.experiment.checkpoint_interval);
-        if (!last && pop.iteration % interval != 0) return;
+        // After every `interval` evaluated generations (generation g is the (g+1)-th).
+        if (!last && (pop.iteration + 1) % interval != 0) return;
         header.population = pop;
         header.state = st;
         const std::string text = io::to_xml(header);

@@ -294,7 +294,7 @@ std::vector<SettingKey> build_table() {
     t.push_back(int_row("Experiment", "workers", 0, 4096, "Evaluation worker processes; 0 = one per core",
                         FIELD(experiment.workers)));
     t.push_back(int_row("Experiment", "checkpointInterval", 1, 1000000,
-                        "Generations between population checkpoint files", FIELD(experiment.checkpoint_interval)));
+                        "A population file after every N evaluated generations (N = 1: each one), and always after the last", FIELD(experiment.checkpoint_interval)));
     t.push_back(double_row("Experiment", "workerTimeout", kPositive,
                            "Seconds before a hung worker is replaced", FIELD(experiment.worker_timeout)));
     // ---- GP (thesis Appendix B)

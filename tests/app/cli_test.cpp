@@ -167,6 +167,16 @@ TEST_F(Cli, SettingsSubcommand) {
     auto s = run("settings --schema", true);
     EXPECT_EQ(s.code, 0);
     EXPECT_EQ(s.out, cic::io::xml::read_file(fs::path(CIC_SOURCE_DIR) / "settings" / "cic-settings.xsd"));
+    // docs/settings.md carries the key table that `settings --keys` prints.
+    auto k = run("settings --keys", true);
+    EXPECT_EQ(k.code, 0);
+    const std::string docs = cic::io::xml::read_file(fs::path(CIC_SOURCE_DIR) / "docs" / "settings.md");
+    std::istringstream rows(k.out);
+    for (std::string line; std::getline(rows, line);)
+        if (line.rfind("| `", 0) == 0) {
+            EXPECT_NE(docs.find(line + "\n"), std::string::npos)
+                << "docs/settings.md is stale (regenerate its table from `cic settings --keys`); missing:\n" << line;
+        }
     auto f = write("s.xml", kTinySymreg);
     auto e = run("settings '" + f.string() + "' --set GP.elitism=2", true);
     EXPECT_EQ(e.code, 0);
