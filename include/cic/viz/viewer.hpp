@@ -25,7 +25,7 @@ struct ViewEntry {
 
 struct ViewerOptions {
     int width = 1024, height = 768;
-    double speed = 1.0;           // playback speed, 1 = real time
+    double speed = 1.0;           // playback speed, 1 = real time; 1/16 to 16
     bool shadows = true;          // osgShadow::ShadowMap from the sun
     std::string window_title = "cic";
 };
