@@ -23,16 +23,8 @@ using namespace cic::sim;
 
 namespace {
 
-// The tripod gait of tests/sim/evaluate_test.cpp for R1 with 6 legs.
-std::vector<SineJoint> r1_gait() {
-    const double pi = std::numbers::pi;
-    std::vector<SineJoint> g;
-    for (int j = 0; j < 18; ++j) {
-        const int leg = j / 3, k = j % 3, row = leg / 2, side = leg % 2;
-        g.push_back({1.0, 0.5, pi * ((row + side) % 2) + (k == 0 ? 0.0 : pi / 2)});
-    }
-    return g;
-}
+// The tripod gait that walks R1 with 6 legs forward (sim::tripod_gait).
+std::vector<SineJoint> r1_gait() { return tripod_gait(6, 3); }
 
 SimConfig thesis_config(double step) {
     SimConfig c;   // 15 s, delayed start 2 s

@@ -32,4 +32,16 @@ void SineController::step(double t, std::span<const double>, std::span<double> d
     }
 }
 
+std::vector<SineJoint> tripod_gait(int legs, int joints_per_leg, double amplitude, double frequency) {
+    if (legs < 1 || joints_per_leg < 1) throw std::invalid_argument("tripod_gait: legs and joints_per_leg must be >= 1");
+    const double pi = std::numbers::pi;
+    std::vector<SineJoint> gait;
+    for (int leg = 0; leg < legs; ++leg) {
+        const int row = leg / 2, side = leg % 2;
+        for (int k = 0; k < joints_per_leg; ++k)
+            gait.push_back({amplitude, frequency, pi * ((row + side) % 2) + (k == 0 ? 0.0 : pi / 2)});
+    }
+    return gait;
+}
+
 } // namespace cic::sim

@@ -26,19 +26,8 @@ std::uint64_t bits(double v) {
     return b;
 }
 
-// A tripod gait for R1 with 6 legs, found by a small grid search: joints come as
-// (hip y, z, knee y) per leg, legs in preset order (rows -y, 0, +y; sides +x, -x).
-// The z swing and the knee lag the hip lift by a quarter period; neighbouring
-// legs are half a period apart.
-std::vector<SineJoint> r1_gait() {
-    const double pi = std::numbers::pi;
-    std::vector<SineJoint> g;
-    for (int j = 0; j < 18; ++j) {
-        const int leg = j / 3, k = j % 3, row = leg / 2, side = leg % 2;
-        g.push_back({1.0, 0.5, pi * ((row + side) % 2) + (k == 0 ? 0.0 : pi / 2)});
-    }
-    return g;
-}
+// The tripod gait that walks R1 with 6 legs forward (sim::tripod_gait).
+std::vector<SineJoint> r1_gait() { return tripod_gait(6, 3); }
 
 std::vector<SineJoint> random_sine(cic::Rng& rng, std::size_t joints) {
     std::vector<SineJoint> g;

@@ -40,4 +40,12 @@ private:
     std::vector<SineJoint> params_;
 };
 
+// A tripod gait for the legged presets: `legs` legs of `joints_per_leg` joints each,
+// in preset order (legs in pairs along the torso, sides +x then -x). The first joint
+// of a leg lifts it; its other joints lag by a quarter period; neighbouring legs are
+// half a period apart. tripod_gait(6, 3) walks R1 with 6 legs forward (a small grid
+// search found it; the simulator tests and benchmarks use it). Throws
+// std::invalid_argument for legs < 1 or joints_per_leg < 1.
+std::vector<SineJoint> tripod_gait(int legs, int joints_per_leg, double amplitude = 1.0, double frequency = 0.5);
+
 } // namespace cic::sim
