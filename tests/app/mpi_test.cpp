@@ -15,15 +15,14 @@
 #include <unistd.h>
 
 #include "support/child_env.hpp"
+#include "support/run_helpers.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string cic_binary() {
-    const char* env = std::getenv("CIC_BINARY");
-    return env && *env ? env : CIC_BINARY;
-}
+using cic::testing::cic_binary;
+using cic::testing::read_text;
+using cic::testing::tiny_hypergp_settings;
 
 bool have_mpirun() { return std::system("command -v mpirun > /dev/null 2>&1") == 0; }
 
@@ -31,32 +30,12 @@ bool have_mpirun() { return std::system("command -v mpirun > /dev/null 2>&1") ==
 // launch only (no ssh), shared memory between ranks, no cross-memory attach
 // (often forbidden in containers), and the right to run as root.
 const std::string kMpirun =
-    cic::test::without_leak_check() +
+    cic::testing::without_leak_check() +
     "env OMPI_MCA_plm=isolated OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none "
     "OMPI_MCA_rmaps_base_oversubscribe=1 timeout 120 mpirun --allow-run-as-root --oversubscribe ";
 
 // A plain run outside any launcher: launcher variables removed.
 const std::string kPlain = "env -u OMPI_COMM_WORLD_SIZE -u PMI_SIZE -u PMIX_RANK ";
-
-std::string read_text(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-// Population 6, short simulation (as in tests/experiments/hypergp_run_test.cpp).
-std::string tiny_hypergp(int workers) {
-    return R"(<?xml version="1.0"?>
-<settings>
-  <Experiment><type>hypergp</type><seed>5</seed><workers>)" + std::to_string(workers) + R"(</workers></Experiment>
-  <GP><generatedPopulationSize>6</generatedPopulationSize><tournament_size>3</tournament_size>
-      <expectedGeneratedTreeSize>10</expectedGeneratedTreeSize><maximumGeneratedTreeDepth>4</maximumGeneratedTreeDepth></GP>
-  <Simulator><robot_type>0</robot_type><sample_to>2.5</sample_to><delayed_start>0.5</delayed_start></Simulator>
-  <Control><maximumIterations>3</maximumIterations></Control>
-</settings>
-)";
-}
 
 class Mpi : public ::testing::Test {
 protected:
@@ -102,7 +81,7 @@ protected:
 };
 
 TEST_F(Mpi, ThreeRanksGiveTheSamePopulationAsOneWorker) {
-    const auto settings = write("tiny.xml", tiny_hypergp(1));
+    const auto settings = write("tiny.xml", tiny_hypergp_settings(3, 1));
     ASSERT_EQ(run("one", kPlain, job(settings, "one")), 0) << log("one");
     ASSERT_EQ(run("mpi", kMpirun + "-np 3 ", job(settings, "mpi")), 0) << log("mpi");
     const fs::path one = only_run("one"), mpi = only_run("mpi");
@@ -132,7 +111,7 @@ TEST_F(Mpi, SymbolicRegressionUnderMpirunMatchesAPlainRun) {
 // fail (so this probe can see MPI being initialised) and the plain run, with
 // the same environment, must not notice (it never initialises MPI).
 TEST_F(Mpi, PlainRunNeverInitialisesMpi) {
-    const auto settings = write("tiny.xml", tiny_hypergp(2));
+    const auto settings = write("tiny.xml", tiny_hypergp_settings(3, 2));
     const std::string broken = "OMPI_MCA_pml=no-such-transport ";
     EXPECT_NE(run("mpi", "env " + broken + kMpirun + "-np 2 ", job(settings, "mpi")), 0) << log("mpi");
     // Two workers: the `cic worker` children inherit the environment and must keep out of MPI too.

@@ -12,7 +12,7 @@
 #include "cic/core/error.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/stats_csv.hpp"
-#include "run_helpers.hpp"
+#include "support/run_helpers.hpp"
 
 namespace cic {
 namespace {
@@ -20,22 +20,9 @@ namespace {
 using namespace cic::testing;
 namespace fs = std::filesystem;
 
-// Population 6, short simulation: seconds, not minutes.
-std::string tiny_settings(int generations, int workers, const std::string& extra_control = "") {
-    return R"(<?xml version="1.0"?>
-<settings>
-  <Experiment><type>hypergp</type><seed>5</seed><workers>)" + std::to_string(workers) + R"(</workers></Experiment>
-  <GP><generatedPopulationSize>6</generatedPopulationSize><tournament_size>3</tournament_size>
-      <expectedGeneratedTreeSize>10</expectedGeneratedTreeSize><maximumGeneratedTreeDepth>4</maximumGeneratedTreeDepth></GP>
-  <Simulator><robot_type>0</robot_type><sample_to>2.5</sample_to><delayed_start>0.5</delayed_start></Simulator>
-  <Control><maximumIterations>)" + std::to_string(generations) + "</maximumIterations>" + extra_control + R"(</Control>
-</settings>
-)";
-}
-
 TEST(HypergpRun, TinyRunWritesPopulationStatsAndCheckpoints) {
     const auto dir = temp_dir("hgp-files");
-    const auto r = run_settings(dir, "a", tiny_settings(3, 1));
+    const auto r = run_settings(dir, "a", tiny_hypergp_settings(3, 1));
     ASSERT_EQ(r.rc, 0) << r.log;
     EXPECT_TRUE(fs::exists(r.run / "settings.xml"));
     EXPECT_TRUE(fs::exists(r.run / "population.xml"));
@@ -52,8 +39,8 @@ TEST(HypergpRun, TinyRunWritesPopulationStatsAndCheckpoints) {
 
 TEST(HypergpRun, OneAndTwoWorkersGiveIdenticalPopulations) {
     const auto dir = temp_dir("hgp-workers");
-    const auto one = run_settings(dir, "one", tiny_settings(3, 1));
-    const auto two = run_settings(dir, "two", tiny_settings(3, 2));
+    const auto one = run_settings(dir, "one", tiny_hypergp_settings(3, 1));
+    const auto two = run_settings(dir, "two", tiny_hypergp_settings(3, 2));
     ASSERT_EQ(one.rc, 0) << one.log;
     ASSERT_EQ(two.rc, 0) << two.log;
     EXPECT_EQ(read_text(one.run / "population.xml"), read_text(two.run / "population.xml"));
@@ -62,11 +49,11 @@ TEST(HypergpRun, OneAndTwoWorkersGiveIdenticalPopulations) {
 
 TEST(HypergpRun, ResumeIsExactAndBestNeverFalls) {
     const auto dir = temp_dir("hgp-resume");
-    const auto full = run_settings(dir, "full", tiny_settings(4, 1));
+    const auto full = run_settings(dir, "full", tiny_hypergp_settings(4, 1));
     ASSERT_EQ(full.rc, 0) << full.log;
-    const auto part = run_settings(dir, "part", tiny_settings(2, 1));
+    const auto part = run_settings(dir, "part", tiny_hypergp_settings(2, 1));
     ASSERT_EQ(part.rc, 0) << part.log;
-    const auto resumed = run_settings(dir, "resumed", tiny_settings(4, 2, "<populationXmlLoadFrom>" +
+    const auto resumed = run_settings(dir, "resumed", tiny_hypergp_settings(4, 2, "<populationXmlLoadFrom>" +
                                                                      (part.run / "population.xml").string() +
                                                                      "</populationXmlLoadFrom>"));
     ASSERT_EQ(resumed.rc, 0) << resumed.log;
@@ -88,7 +75,7 @@ TEST(HypergpRun, ResumeIsExactAndBestNeverFalls) {
 
 TEST(HypergpRun, ReplayReproducesTheStoredFitness) {
     const auto dir = temp_dir("hgp-replay");
-    const auto r = run_settings(dir, "a", tiny_settings(2, 1));
+    const auto r = run_settings(dir, "a", tiny_hypergp_settings(2, 1));
     ASSERT_EQ(r.rc, 0) << r.log;
     const auto items = app::replay(r.run.string(), "best", 3, 10.0, true);
     ASSERT_EQ(items.size(), 3u);

@@ -9,7 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "run_helpers.hpp"
+#include "support/run_helpers.hpp"
 
 namespace cic {
 namespace {

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace cic::test {
+namespace cic::testing {
 
 // `env ASAN_OPTIONS=...:detect_leaks=0 ` for children that load third-party runtimes
 // (Mesa's GL drivers under xvfb-run, Open MPI's components under mpirun). Those
@@ -20,4 +20,4 @@ inline std::string without_leak_check() {
     return "env ASAN_OPTIONS='" + options + "detect_leaks=0' ";
 }
 
-} // namespace cic::test
+} // namespace cic::testing

@@ -41,7 +41,7 @@ bool rerun_under_xvfb(const std::string& filter, int& status) {
     if (std::getenv("DISPLAY")) return false;
     if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) return false;
     const std::string self = fs::read_symlink("/proc/self/exe").string();
-    const std::string cmd = cic::test::without_leak_check() + "xvfb-run -a -s '-screen 0 1024x768x24' '" + self + "' --gtest_filter=" + filter;
+    const std::string cmd = cic::testing::without_leak_check() + "xvfb-run -a -s '-screen 0 1024x768x24' '" + self + "' --gtest_filter=" + filter;
     status = std::system(cmd.c_str());
     return true;
 }

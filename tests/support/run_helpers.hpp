@@ -6,6 +6,9 @@
 #include <sstream>
 #include <string>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 namespace cic::testing {
 
 inline std::string cic_binary() {
@@ -63,6 +66,19 @@ inline RunResult run_settings(const std::filesystem::path& dir, const std::strin
     r.log = read_text(dir / (name + ".log"));
     if (std::filesystem::exists(dir / name)) r.run = only_run(dir / name);
     return r;
+}
+
+// HyperGP with population 6 on R0 and 2.5 s simulations: seconds, not minutes.
+inline std::string tiny_hypergp_settings(int generations, int workers, const std::string& extra_control = "") {
+    return R"(<?xml version="1.0"?>
+<settings>
+  <Experiment><type>hypergp</type><seed>5</seed><workers>)" + std::to_string(workers) + R"(</workers></Experiment>
+  <GP><generatedPopulationSize>6</generatedPopulationSize><tournament_size>3</tournament_size>
+      <expectedGeneratedTreeSize>10</expectedGeneratedTreeSize><maximumGeneratedTreeDepth>4</maximumGeneratedTreeDepth></GP>
+  <Simulator><robot_type>0</robot_type><sample_to>2.5</sample_to><delayed_start>0.5</delayed_start></Simulator>
+  <Control><maximumIterations>)" + std::to_string(generations) + "</maximumIterations>" + extra_control + R"(</Control>
+</settings>
+)";
 }
 
 } // namespace cic::testing
