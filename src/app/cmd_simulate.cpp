@@ -1,8 +1,10 @@
 // `cic simulate`: one evaluation of a robot under a baseline controller, with
 // its fitness and speed. How a user checks a new robot file before evolving it.
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -23,6 +25,7 @@ struct SimulateOptions {
     bool middle_legs = false;
     std::string controller = "sine";
     std::string settings;
+    std::vector<std::string> overrides; // --set Section.key=value
     double seconds = 0.0;               // 0 = the settings' sample_to
 };
 
@@ -34,7 +37,7 @@ std::unique_ptr<sim::Controller> make_controller(const std::string& spec) {
 }
 
 int simulate(const SimulateOptions& o) {
-    const io::Settings settings = io::load_settings(o.settings, {});
+    const io::Settings settings = io::load_settings(o.settings, o.overrides);
     sim::SimConfig cfg = settings.sim;
     if (o.seconds < 0) throw InputError(fmt::format("--seconds {} must be > 0", o.seconds));
     if (o.seconds > 0) {
@@ -64,6 +67,15 @@ int simulate(const SimulateOptions& o) {
                r.start[1], r.start[2], r.end[0], r.end[1], r.end[2]);
     fmt::print("simulated time  {:.3f} s ({} physics steps of {} s)\n", r.simulated_seconds, r.steps,
                cfg.sample_step / cfg.step_divider);
+    const double steps = static_cast<double>(std::max(1L, r.steps));
+    fmt::print("ground contacts {:.2f} per step (at most {})\n", static_cast<double>(r.ground_contacts) / steps,
+               r.max_ground_contacts);
+    fmt::print("self contacts   {}\n", cfg.self_collision
+                                         ? fmt::format("{:.2f} per step (at most {})",
+                                                       static_cast<double>(r.self_contacts) / steps,
+                                                       r.max_self_contacts)
+                                         : std::string("off (Simulator.selfCollision = 0)"));
+    fmt::print("deepest ground contact {:.4f} m, fastest body {:.3f} m/s\n", r.max_ground_depth, r.max_body_speed);
     fmt::print("wall time       {:.4f} s\n", wall);
     fmt::print("real-time factor {:.1f}x\n", wall > 0 ? r.simulated_seconds / wall : 0.0);
     return r.failed ? 1 : 0;
@@ -80,6 +92,7 @@ void add_simulate_command(CLI::App& app, CommandContext& ctx) {
                     "constant | sine | sine:AMPLITUDE,FREQUENCY[,PHASE_STEP] | constant:ANGLE")
         ->capture_default_str();
     cmd->add_option("--settings", o->settings, "Settings file (its Simulator section is used)");
+    cmd->add_option("--set", o->overrides, "Override Section.key=value (repeatable), e.g. Simulator.sample_step=0.025");
     cmd->add_option("--seconds", o->seconds, "Simulated time (default: the settings' sample_to)");
     cmd->callback([o, &ctx] { ctx.exit_code = simulate(*o); });
 }

@@ -3,16 +3,21 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <filesystem>
 #include <cmath>
 #include <numbers>
 
 #include "cic/core/error.hpp"
+#include "cic/io/robot_xml.hpp"
+#include "cic/io/settings_io.hpp"
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/layout.hpp"
 #include "cic/sim/robot.hpp"
 
 namespace cic::app {
 namespace {
+
+namespace fs = std::filesystem;
 
 std::vector<double> parse_numbers(std::string_view text, std::string_view spec) {
     std::vector<double> out;
@@ -79,11 +84,12 @@ std::unique_ptr<sim::Controller> parse_controller_spec(std::string_view spec) {
 int parse_robot_name(std::string_view name) {
     for (int k = 0; k <= 2; ++k)
         if (name == fmt::format("R{}", k) || name == fmt::format("r{}", k) || name == fmt::format("{}", k)) return k;
-    throw InputError(fmt::format("unknown robot '{}' (expected R0, R1 or R2)", name));
+    throw InputError(fmt::format("unknown robot '{}' (expected R0, R1, R2 or an existing robot file)", name));
 }
 
 ReplayItem replay_preset(const PresetReplay& preset, double fps, bool trace) {
-    const sim::RobotSpec robot = sim::preset(preset.robot_type, preset.middle_legs);
+    const sim::RobotSpec robot = preset.robot_file.empty() ? sim::preset(preset.robot_type, preset.middle_legs)
+                                                           : io::read_robot_file(preset.robot_file);
     auto controller = parse_controller_spec(preset.controller);
     OutputRecorder recorder(*controller);
     sim::EvalOptions options;
@@ -119,12 +125,15 @@ std::vector<std::string> joint_names_of(const ReplayItem& item) {
 void add_replay_options(CLI::App& command, ReplaySource& source) {
     command.add_option("input", source.input, "run folder or population XML file to replay");
     command.add_option("--individual", source.individual, "best, or an individual's id")->capture_default_str();
-    command.add_option("--robot", source.robot, "replay a preset robot instead: R0, R1 or R2");
+    command.add_option("--robot", source.robot, "replay a robot instead: R0, R1, R2 or a robot file");
     command.add_flag("--middle-legs", source.middle_legs, "with --robot: the 6-legged variant");
     command.add_option("--controller", source.controller,
                        "with --robot: sine:AMPLITUDE,FREQUENCY[,PHASE_STEP] or constant:ANGLE")
         ->capture_default_str();
     command.add_option("--seconds", source.seconds, "with --robot: simulated seconds (default: the simulator's)");
+    command.add_option("--set", source.overrides,
+                       "with --robot: a simulator setting, Simulator.key=value (repeatable), e.g. "
+                       "Simulator.selfCollision=0");
 }
 
 std::vector<ReplayItem> load_replay(const ReplaySource& source, int count, double fps, bool trace) {
@@ -133,9 +142,16 @@ std::vector<ReplayItem> load_replay(const ReplaySource& source, int count, doubl
     if (!source.input.empty()) return replay(source.input, source.individual, count, fps, trace);
     if (source.seconds < 0) throw InputError("--seconds must be positive");
     PresetReplay preset;
-    preset.robot_type = parse_robot_name(source.robot);
+    if (fs::exists(source.robot))
+        preset.robot_file = source.robot;
+    else
+        preset.robot_type = parse_robot_name(source.robot);
     preset.middle_legs = source.middle_legs;
     preset.controller = source.controller;
+    for (const auto& o : source.overrides)
+        if (o.rfind("Simulator.", 0) != 0)
+            throw InputError(fmt::format("--set {}: a replay takes only Simulator keys", o));
+    preset.sim = io::load_settings({}, source.overrides).sim;
     if (source.seconds > 0) preset.sim.sample_to = preset.sim.sample_from + source.seconds;
     if (preset.sim.delayed_start > preset.sim.sample_to) preset.sim.delayed_start = preset.sim.sample_from;
     return {replay_preset(preset, fps, trace)};

@@ -210,7 +210,7 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
     const std::string summary = fmt::format(
         "stopped: {} at generation {}\nbest: id {} fitness {:.17g} depth {} size {} {}\nevaluations: {}\n"
         "best tree{}: {}\n",
-        gp::to_string(result.reason), result.population.iteration, best.id, best.fitness, best.depth(), best.size(),
+        gp::to_string(result.reason), result.population.iteration, best.id, best.fitness, best.depth(s.gp.forest_depth), best.size(),
         experiment->describe(best), result.state.evaluations, best.genotype.size() > 1 ? "s" : "",
         [&] {
             std::string t;

@@ -1,5 +1,5 @@
-// Dynamic Limits (Silva & Costa; thesis 5.2). Depth is the individual's
-// depth, i.e. the deepest tree of its forest.
+// Dynamic Limits (Silva & Costa; thesis 5.2). Depth is the individual's depth
+// as GP.forestDepth measures it (by default the sum of its trees' depths, 7.2.1).
 //
 // Rules as implemented:
 // - initialise: limit = depth of the best individual (>= 1); for Heavy also
@@ -9,10 +9,12 @@
 //   if its fitness beats the best so far, and then the limit rises to its depth.
 // - limit_for: with an illegal parent, the larger parent depth (never less than
 //   the current limit, so a stale mark cannot make the limit stricter).
-// - end_generation: Simple never lowers; Heavy lowers to the best's depth but not
-//   below initial_max; VeryHeavy lowers to the best's depth (>= 1). Then marks
-//   "illegal" = depth > limit. Callers should also call it once after
-//   initialise() so that deep initial individuals get their mark.
+// - end_generation: Simple never lowers the limit and marks nobody: illegals
+//   arise only when a limit falls (5.2.1). Heavy lowers to the best's depth but
+//   not below initial_max; VeryHeavy lowers to the best's depth (>= 1) (5.2.3).
+//   Both then mark "illegal" = depth > limit. Callers also call it once after
+//   initialise() so that deep initial individuals of the heavy variants get
+//   their mark.
 #include "cic/gp/bloat.hpp"
 
 #include <algorithm>
@@ -25,19 +27,22 @@ namespace {
 const std::string kIllegal = "illegal";
 }
 
-DynamicLimits::DynamicLimits(BloatVariant variant, int initial_max_depth) : variant_(variant) {
+DynamicLimits::DynamicLimits(BloatVariant variant, int initial_max_depth, ForestDepth measure)
+    : variant_(variant), measure_(measure) {
     if (initial_max_depth < 1)
         throw std::invalid_argument("DynamicLimits: initial maximum depth must be >= 1, got " +
                                     std::to_string(initial_max_depth));
     if (variant != BloatVariant::Simple && variant != BloatVariant::Heavy && variant != BloatVariant::VeryHeavy)
         throw std::invalid_argument("DynamicLimits: unknown variant");
+    if (measure != ForestDepth::Sum && measure != ForestDepth::Max)
+        throw std::invalid_argument("DynamicLimits: unknown forest depth measure");
     state_.initial_max = initial_max_depth;
 }
 
 void DynamicLimits::initialise(const Population& evaluated) {
     const Individual& best = evaluated.best();   // throws on an empty population
     if (!best.evaluated) throw std::invalid_argument("DynamicLimits::initialise: population is not evaluated");
-    state_.limit = std::max(1, best.depth());
+    state_.limit = std::max(1, depth(best));
     if (variant_ == BloatVariant::Heavy) state_.limit = std::max(state_.limit, state_.initial_max);
     state_.best_fitness = best.fitness;
 }
@@ -46,14 +51,14 @@ int DynamicLimits::limit_for(const Individual& p1, const Individual* p2) const {
     if (state_.limit <= 0) throw std::logic_error("DynamicLimits: used before initialise()");
     const bool illegal_parent = p1.has(kIllegal) || (p2 && p2->has(kIllegal));
     if (!illegal_parent) return state_.limit;
-    const int larger = std::max(p1.depth(), p2 ? p2->depth() : 0);
+    const int larger = std::max(depth(p1), p2 ? depth(*p2) : 0);
     return std::max(state_.limit, larger);
 }
 
 bool DynamicLimits::accept(const Individual& child, const Individual& p1, const Individual* p2) {
     const int limit = limit_for(p1, p2);
-    const int depth = child.depth();
-    if (depth <= limit) {
+    const int d = depth(child);
+    if (d <= limit) {
         if (child.evaluated && child.fitness > state_.best_fitness) state_.best_fitness = child.fitness;
         return true;
     }
@@ -61,7 +66,7 @@ bool DynamicLimits::accept(const Individual& child, const Individual& p1, const 
         throw std::invalid_argument("DynamicLimits::accept: a child deeper than its limit must be evaluated first");
     if (child.fitness > state_.best_fitness) {
         state_.best_fitness = child.fitness;
-        state_.limit = std::max(state_.limit, depth);
+        state_.limit = std::max(state_.limit, d);
         return true;
     }
     return false;
@@ -72,16 +77,15 @@ void DynamicLimits::end_generation(Population& pop) {
     if (!pop.empty()) {
         const Individual& best = pop.best();
         if (best.evaluated) state_.best_fitness = std::max(state_.best_fitness, best.fitness);
-        int floor = 1;
-        if (variant_ == BloatVariant::Heavy) floor = state_.initial_max;
         if (variant_ != BloatVariant::Simple) {
-            const int candidate = std::max(best.depth(), floor);
+            const int floor = variant_ == BloatVariant::Heavy ? state_.initial_max : 1;
+            const int candidate = std::max(depth(best), floor);
             if (candidate < state_.limit) state_.limit = candidate;
         }
     }
     for (auto& p : pop) {
         if (!p) throw std::invalid_argument("DynamicLimits::end_generation: null individual");
-        if (p->depth() > state_.limit)
+        if (variant_ != BloatVariant::Simple && depth(*p) > state_.limit)
             p->attributes[kIllegal] = "1";
         else
             p->attributes.erase(kIllegal);

@@ -6,14 +6,15 @@
 
 namespace cic::gp {
 
-std::pair<tree::Tree, tree::Tree> crossover(Rng& rng, const tree::Tree& a, const tree::Tree& b) {
+std::pair<tree::Tree, tree::Tree> crossover(Rng& rng, const tree::Tree& a, const tree::Tree& b, NodeSelection how) {
     if (a.empty() || b.empty()) throw std::invalid_argument("crossover: empty tree");
-    const std::size_t i = pick_node(rng, a);
-    const std::size_t j = pick_node(rng, b);
+    const std::size_t i = pick_node(rng, a, how);
+    const std::size_t j = pick_node(rng, b, how);
     return {a.replace_subtree(i, b.subtree(j)), b.replace_subtree(j, a.subtree(i))};
 }
 
-std::pair<tree::Forest, tree::Forest> crossover(Rng& rng, const tree::Forest& a, const tree::Forest& b) {
+std::pair<tree::Forest, tree::Forest> crossover(Rng& rng, const tree::Forest& a, const tree::Forest& b,
+                                                       NodeSelection how) {
     if (a.empty() || a.size() != b.size())
         throw std::invalid_argument("crossover: forests must be non-empty and of equal size, got " +
                                     std::to_string(a.size()) + " and " + std::to_string(b.size()) + " trees");
@@ -21,7 +22,7 @@ std::pair<tree::Forest, tree::Forest> crossover(Rng& rng, const tree::Forest& a,
     out.first.reserve(a.size());
     out.second.reserve(b.size());
     for (std::size_t k = 0; k < a.size(); ++k) {
-        auto [x, y] = crossover(rng, a[k], b[k]);
+        auto [x, y] = crossover(rng, a[k], b[k], how);
         out.first.push_back(std::move(x));
         out.second.push_back(std::move(y));
     }

@@ -29,7 +29,6 @@ IndividualPtr copy_of(EvolutionState& st, const Individual& parent) {
     return c;
 }
 
-int generator_depth(const GpConfig& cfg) { return cfg.max_init_depth; }
 
 // Parents by id: an open-addressing table keyed by the id's low bits. Ids are
 // handed out in sequence, so they spread evenly and a look-up is one probe or
@@ -70,7 +69,7 @@ std::string to_string(StopReason r) {
     return "?";
 }
 
-GenerationRecord summarise(const Population& pop, const EvolutionState& st) {
+GenerationRecord summarise(const Population& pop, const EvolutionState& st, ForestDepth measure) {
     GenerationRecord r;
     r.generation = pop.iteration;
     r.limit = st.bloat.limit;
@@ -79,20 +78,26 @@ GenerationRecord summarise(const Population& pop, const EvolutionState& st) {
     thread_local std::vector<double> f;   // reused: no allocation per generation
     f.clear();
     f.reserve(pop.size());
-    double depth_sum = 0, size_sum = 0;
+    double sum_of_sums = 0, sum_of_maxes = 0, size_sum = 0;
     for (const auto& ind : pop) {
         f.push_back(ind->fitness);
-        const int d = ind->depth();
+        const int d_sum = ind->depth(ForestDepth::Sum), d_max = ind->depth(ForestDepth::Max);
         const std::size_t s = ind->size();
-        depth_sum += d;
+        sum_of_sums += d_sum;
+        sum_of_maxes += d_max;
         size_sum += static_cast<double>(s);
-        r.max_depth = std::max(r.max_depth, d);
+        r.max_depth_sum = std::max(r.max_depth_sum, d_sum);
+        r.max_depth_max = std::max(r.max_depth_max, d_max);
         r.max_size = std::max(r.max_size, s);
         if (ind->has("illegal")) ++r.illegal;
     }
     const auto n = static_cast<double>(pop.size());
     r.mean = std::accumulate(f.begin(), f.end(), 0.0) / n;
-    r.mean_depth = depth_sum / n;
+    r.mean_depth_sum = sum_of_sums / n;
+    r.mean_depth_max = sum_of_maxes / n;
+    const bool by_sum = measure == ForestDepth::Sum;
+    r.mean_depth = by_sum ? r.mean_depth_sum : r.mean_depth_max;
+    r.max_depth = by_sum ? r.max_depth_sum : r.max_depth_max;
     r.mean_size = size_sum / n;
     const std::size_t m = f.size() / 2;
     if (std::any_of(f.begin(), f.end(), [](double v) { return std::isnan(v); })) {
@@ -112,7 +117,9 @@ GenerationRecord summarise(const Population& pop, const EvolutionState& st) {
 // ---------------------------------------------------------------- Initialise
 
 Initialise::Initialise(const GpConfig& cfg, const tree::PrimitiveSet& ps)
-    : cfg_(cfg), gen_(ps, cfg.init_method, cfg.expected_tree_size, cfg.min_init_depth, cfg.max_init_depth) {}
+    : cfg_(cfg),
+      gen_(ps, cfg.init_method, cfg.expected_tree_size, levels(cfg, cfg.init_method, cfg.min_init_depth),
+           cfg.generated_tree_levels()) {}
 
 void Initialise::apply(Population& pop, EvolutionState& st) {
     pop.individuals.clear();
@@ -154,7 +161,9 @@ void Evaluate::apply(Population& pop, EvolutionState& st) {
 // --------------------------------------------------------------------- Breed
 
 Breed::Breed(const GpConfig& cfg, const tree::PrimitiveSet& ps)
-    : cfg_(cfg), gen_(ps, InitMethod::Grow, cfg.expected_tree_size, 1, generator_depth(cfg)) {}
+    : cfg_(cfg),
+      gen_(ps, cfg.mutation_generator, cfg.expected_tree_size, 1,
+           levels(cfg, cfg.mutation_generator, cfg.max_mutation_depth)) {}
 
 std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered_set<std::uint64_t>& seen,
                                               std::size_t room) {
@@ -190,11 +199,13 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered
         const Individual& p1 = *parents[select(st.rng, parents, cfg_)];
         if (r < cfg_.crossover_rate) {
             const Individual& p2 = *parents[select(st.rng, parents, cfg_)];
-            auto [a, b] = crossover(st.rng, p1.genotype, p2.genotype);
+            auto [a, b] = crossover(st.rng, p1.genotype, p2.genotype, cfg_.node_selection);
             admit(std::move(a), {p1.id, p2.id}, p1, &p2);
             admit(std::move(b), {p2.id, p1.id}, p2, &p1);
         } else if (r < cfg_.crossover_rate + cfg_.mutation_rate) {
-            admit(mutate(st.rng, p1.genotype, gen_, cfg_.max_mutation_depth), {p1.id}, p1, nullptr);
+            admit(mutate(st.rng, p1.genotype, gen_, levels(cfg_, cfg_.mutation_generator, cfg_.max_mutation_depth),
+                         cfg_.node_selection),
+                  {p1.id}, p1, nullptr);
         } else {
             // Reproduction: an unchanged copy keeps its known fitness.
             if (cfg_.prevent_duplicates) {
@@ -259,9 +270,13 @@ std::vector<std::size_t> Breed::replace_duplicates(Population& pop, EvolutionSta
 BloatControl::BloatControl(const GpConfig& gp, const BloatConfig& cfg, const Breed& breed)
     : gp_(gp), cfg_(cfg), breed_(breed) {}
 
+DynamicLimits BloatControl::limits() const {
+    return DynamicLimits(cfg_.variant, gp_.generated_forest_depth(), gp_.forest_depth);
+}
+
 void BloatControl::initialise(const Population& evaluated, EvolutionState& st) {
     if (!cfg_.enabled) return;
-    DynamicLimits dl(cfg_.variant, gp_.max_init_depth);
+    DynamicLimits dl = limits();
     dl.initialise(evaluated);
     st.bloat = dl.state();
 }
@@ -272,7 +287,7 @@ void BloatControl::filter(Population& pop, EvolutionState& st, std::span<const s
 
     std::optional<DynamicLimits> dl;
     if (cfg_.enabled) {
-        dl.emplace(cfg_.variant, gp_.max_init_depth);
+        dl.emplace(limits());
         dl->set_state(st.bloat);
     }
     for (const std::size_t i : slots) {
@@ -282,8 +297,9 @@ void BloatControl::filter(Population& pop, EvolutionState& st, std::span<const s
         if (!p1) continue;   // an elite carried over
         if (ind->parents.size() == 1 && ind->genotype == p1->genotype) continue;  // a copy
         const Individual* p2 = ind->parents.size() > 1 ? find(ind->parents[1]) : nullptr;
-        bool ok = ind->depth() <= gp_.max_tree_depth;
-        if (ok && dl) ok = dl->accept(*ind, *p1, p2);
+        // Dynamic Limits, or else Koza's per-tree cap (maximumTreeDepth 0 = none).
+        const bool ok = dl ? dl->accept(*ind, *p1, p2)
+                           : gp_.max_tree_depth == 0 || ind->depth(ForestDepth::Max) <= gp_.max_tree_depth;
         if (!ok) ind = copy_of(st, *p1);
     }
     if (dl) st.bloat = dl->state();
@@ -298,7 +314,7 @@ void BloatControl::apply(Population& pop, EvolutionState& st) {
 
 void BloatControl::end_generation(Population& pop, EvolutionState& st) {
     if (!cfg_.enabled) return;
-    DynamicLimits dl(cfg_.variant, gp_.max_init_depth);
+    DynamicLimits dl = limits();
     dl.set_state(st.bloat);
     dl.end_generation(pop);
     st.bloat = dl.state();
@@ -332,7 +348,7 @@ EvolutionResult evolve(const GpConfig& gp, const BloatConfig& bloat, const StopC
     }
 
     auto report = [&](bool fresh) {
-        GenerationRecord rec = summarise(pop, state);
+        GenerationRecord rec = summarise(pop, state, gp.forest_depth);
         rec.max_generations = stop.maximum_iterations;
         rec.wall_seconds = wall();
         rec.generation_seconds = std::chrono::duration<double>(Clock::now() - gen_start).count();

@@ -139,6 +139,16 @@ tree::Tree TreeGenerator::ptc1(Rng& rng, int max_depth) const {
     return Tree(std::move(out));
 }
 
+tree::Tree TreeGenerator::subtree(Rng& rng, int max_depth) const {
+    switch (method_) {
+    case InitMethod::Full: return full(rng, max_depth);
+    case InitMethod::Ptc1: return ptc1(rng, max_depth);
+    case InitMethod::Grow:
+    case InitMethod::RampedHalfAndHalf: return grow(rng, max_depth);
+    }
+    throw std::invalid_argument("subtree: unknown generation method");
+}
+
 tree::Tree TreeGenerator::generate(Rng& rng, std::size_t slot, std::size_t slots) const {
     if (slots == 0 || slot >= slots)
         throw std::invalid_argument("generate: slot " + std::to_string(slot) + " is not below slots " +

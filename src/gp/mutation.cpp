@@ -6,9 +6,11 @@
 
 namespace cic::gp {
 
-std::size_t pick_node(Rng& rng, const tree::Tree& t) {
+std::size_t pick_node(Rng& rng, const tree::Tree& t, NodeSelection how) {
     if (t.empty()) throw std::invalid_argument("pick_node: empty tree");
     const auto nodes = t.nodes();
+    if (how == NodeSelection::Uniform) return rng.index(nodes.size());
+    if (how != NodeSelection::Koza) throw std::invalid_argument("pick_node: unknown node selection");
     std::size_t functions = 0;
     for (const auto& n : nodes) functions += tree::arity(n.op) > 0 ? 1 : 0;   // inline table look-up
     // Koza's 90/10 rule: a function node with probability 0.9, else a leaf.
@@ -25,21 +27,23 @@ std::size_t pick_node(Rng& rng, const tree::Tree& t) {
     throw std::logic_error("pick_node: unreachable");
 }
 
-tree::Tree mutate(Rng& rng, const tree::Tree& t, const TreeGenerator& gen, int max_sub_depth) {
+tree::Tree mutate(Rng& rng, const tree::Tree& t, const TreeGenerator& gen, int max_sub_depth,
+                  NodeSelection how) {
     if (t.empty()) throw std::invalid_argument("mutate: empty tree");
     if (max_sub_depth < 1)
         throw std::invalid_argument("mutate: maximum subtree depth must be >= 1, got " + std::to_string(max_sub_depth));
-    const std::size_t at = pick_node(rng, t);
-    const tree::Tree sub = gen.grow(rng, max_sub_depth);
+    const std::size_t at = pick_node(rng, t, how);
+    const tree::Tree sub = gen.subtree(rng, max_sub_depth);
     return t.replace_subtree(at, sub.nodes());
 }
 
-tree::Forest mutate(Rng& rng, const tree::Forest& f, const TreeGenerator& gen, int max_sub_depth) {
+tree::Forest mutate(Rng& rng, const tree::Forest& f, const TreeGenerator& gen, int max_sub_depth,
+                    NodeSelection how) {
     if (f.empty()) throw std::invalid_argument("mutate: empty forest");
     // Thesis 7.3.1: a new instance of the operator for each tree in turn.
     tree::Forest out;
     out.reserve(f.size());
-    for (const auto& t : f) out.push_back(mutate(rng, t, gen, max_sub_depth));
+    for (const auto& t : f) out.push_back(mutate(rng, t, gen, max_sub_depth, how));
     return out;
 }
 

@@ -151,7 +151,7 @@ std::string to_xml(const PopulationFile& p) {
         n.set_attribute("id", std::to_string(ind->id));
         n.set_attribute("fitness", exact(ind->fitness));
         n.set_attribute("evaluated", ind->evaluated ? "1" : "0");
-        n.set_attribute("depth", std::to_string(ind->depth()));
+        n.set_attribute("depth", std::to_string(ind->depth(gp::ForestDepth::Max)));   // the deepest tree
         n.set_attribute("size", std::to_string(ind->size()));
         n.set_attribute("hash", hash_text(tree::hash(ind->genotype)));
         if (!ind->parents.empty()) {

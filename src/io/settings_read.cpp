@@ -77,7 +77,8 @@ InputError value_error(const Assignment& a, const std::string& why) {
 
 std::vector<Assignment> gather_document(const xml::Document& doc) {
     std::vector<Assignment> out;
-    std::map<std::string, int> seen_sections, seen_keys;
+    std::map<std::string, int> seen_sections;
+    std::map<std::string, std::size_t> seen_keys;   // "Section.key" -> index in out
     for (const auto& sec : doc.root().children()) {
         std::string section(sec.name());
         if (std::find(settings_sections().begin(), settings_sections().end(), section) == settings_sections().end())
@@ -90,12 +91,17 @@ std::vector<Assignment> gather_document(const xml::Document& doc) {
             if (!k) throw node.error(unknown_key_message(section, key));
             if (node.has_element_children())
                 throw node.error("<" + section + "> " + key + ": expected a value, found nested elements");
-            if (auto [it, fresh] = seen_keys.emplace(section + "." + key, node.line()); !fresh)
-                throw node.error("<" + section + "> " + key + " is given twice (first at line " +
-                                 std::to_string(it->second) + ")");
             if (node.text().empty() && node.get()->properties != nullptr)
                 throw node.error("<" + section + "> " + key + ": write the value as the element's text, <" + key +
                                  ">value</" + key + ">, not as an attribute");
+            // A key repeated with the same value is harmless (thesis table B.1 itself
+            // lists functionProbabilities twice); with another value it is a conflict.
+            if (auto [it, fresh] = seen_keys.emplace(section + "." + key, out.size()); !fresh) {
+                const Assignment& first = out[it->second];
+                if (xml::trim(first.value) == xml::trim(node.text())) continue;
+                throw node.error("<" + section + "> " + key + " = \"" + node.text() + "\" is given twice, first as \"" +
+                                 first.value + "\" at line " + std::to_string(first.line));
+            }
             out.push_back({k, node.text(), node.file(), node.line()});
         }
     }
@@ -177,6 +183,13 @@ void apply_layer(Settings& s, std::vector<Assignment> layer, detail::Locations& 
         p.function_weights.assign(p.functions.size(), 1.0);
 }
 
+// Experiment.type when the file does not give it: a <SymbolicRegression> section
+// means symbolic regression, anything else HyperGP (docs/settings.md).
+void infer_experiment_type(Settings& s, const xml::Document& doc) {
+    for (const auto& sec : doc.root().children())
+        if (sec.name() == "SymbolicRegression") s.experiment.type = ExperimentType::Symreg;
+}
+
 } // namespace
 
 Settings load_settings(const fs::path& file, const std::vector<std::string>& overrides) {
@@ -185,6 +198,7 @@ Settings load_settings(const fs::path& file, const std::vector<std::string>& ove
     if (!file.empty()) {
         auto doc = xml::Document::load_file(file);
         fs::path base = fs::absolute(file).parent_path();
+        infer_experiment_type(s, doc);
         apply_layer(s, gather_document(doc), locs, &base);
         s.source_file = file.string();
     }
@@ -199,6 +213,7 @@ Settings read_settings_string(std::string_view text, const std::string& name) {
     Settings s;
     detail::Locations locs;
     auto doc = xml::Document::parse_string(text, name);
+    infer_experiment_type(s, doc);
     apply_layer(s, gather_document(doc), locs, nullptr);
     s.source_file = name;
     detail::validate(s, locs);

@@ -272,13 +272,17 @@ SettingKey forest_map_row() {
 
 std::vector<SettingKey> build_table() {
     using gp::BloatVariant;
+    using gp::ForestDepth;
     using gp::InitMethod;
+    using gp::NodeSelection;
     using gp::SelectionType;
     std::vector<SettingKey> t;
     // ---- Experiment (ours)
     t.push_back(enum_row<ExperimentType>("Experiment", "type",
-                                         {{ExperimentType::Symreg, {"symreg"}}, {ExperimentType::HyperGP, {"hypergp"}}},
-                                         "Which experiment runs: symbolic regression or HyperGP robot control",
+                                         {{ExperimentType::HyperGP, {"hypergp"}}, {ExperimentType::Symreg, {"symreg"}}},
+                                         "Which experiment runs: HyperGP robot control or symbolic regression. "
+                                         "Not given: symreg when the file has a <SymbolicRegression> section, "
+                                         "else hypergp (so a file of thesis table B.1 keys runs HyperGP)",
                                          FIELD(experiment.type)));
     {
         auto k = row("Experiment", "seed", ValueType::UInt64, "Master random seed; the same seed gives the same run");
@@ -313,6 +317,10 @@ std::vector<SettingKey> build_table() {
                                       {InitMethod::Full, {"full"}}, {InitMethod::RampedHalfAndHalf, {"rhh"}}},
                                      "Tree initialisation: PTC1, grow, full or ramped half-and-half",
                                      FIELD(gp.init_method)));
+    t.push_back(int_row("GP", "ptc1RootDepth", 0, 1,
+                        "Depth PTC1 counts for the root: 0 as the thesis's pseudocode (6.3.4.4; maximum depth 6 "
+                        "allows 7 levels, and the minimum depth counts alike), 1 as Grow and Full count (a leaf = 1)",
+                        FIELD(gp.ptc1_root_depth)));
     t.push_back(int_row("GP", "terminalVariableCount", 0, 64,
                         "Variables x0..x{N-1} among the terminals (HyperGP: 4, x1 y1 x2 y2)",
                         FIELD(gp.primitives.variable_count)));
@@ -353,12 +361,29 @@ std::vector<SettingKey> build_table() {
     t.push_back(double_row("GP", "mutationRate", kUnit,
                            "Probability that a child comes from mutation (the rest is reproduction)",
                            FIELD(gp.mutation_rate)));
-    t.push_back(int_row("GP", "elitism", 0, 10000000, "Best individuals copied unchanged into the next generation",
+    t.push_back(int_row("GP", "elitism", 0, 10000000,
+                        "Best individuals copied unchanged into the next generation (the thesis: none)",
                         FIELD(gp.elitism)));
+    t.push_back(enum_row<NodeSelection>("GP", "nodeSelection",
+                                        {{NodeSelection::Koza, {"koza"}}, {NodeSelection::Uniform, {"uniform"}}},
+                                        "Node that crossover and mutation pick: koza = a function node with "
+                                        "probability 0.9 (else a leaf), uniform = any node alike",
+                                        FIELD(gp.node_selection)));
+    t.push_back(enum_row<InitMethod>("GP", "mutationGenerator",
+                                     {{InitMethod::Grow, {"grow"}}, {InitMethod::Full, {"full"}},
+                                      {InitMethod::Ptc1, {"ptc1"}}},
+                                     "Method that grows mutation's new subtrees (to maximumMutationDepth)",
+                                     FIELD(gp.mutation_generator)));
     t.push_back(int_row("GP", "maximumMutationDepth", 1, 20, "Maximum depth of subtrees grown by mutation",
                         FIELD(gp.max_mutation_depth)));
-    t.push_back(int_row("GP", "maximumTreeDepth", 1, 100, "Hard depth limit of offspring when bloat control is off",
+    t.push_back(int_row("GP", "maximumTreeDepth", 0, 100,
+                        "Depth cap of each offspring tree when bloat control is off (Koza's 17); 0 = none",
                         FIELD(gp.max_tree_depth)));
+    t.push_back(enum_row<ForestDepth>("GP", "forestDepth",
+                                      {{ForestDepth::Sum, {"sum"}}, {ForestDepth::Max, {"max"}}},
+                                      "Depth of a forest genotype for Dynamic Limits and statistics: the sum of its "
+                                      "trees' depths (thesis 7.2.1, fig. 7.4b) or its deepest tree",
+                                      FIELD(gp.forest_depth)));
     // ---- Simulator
     t.push_back(double_row("Simulator", "sample_from", kNonNegative, "Simulation start time, s", FIELD(sim.sample_from)));
     t.push_back(double_row("Simulator", "sample_step", kPositive,
@@ -393,10 +418,21 @@ std::vector<SettingKey> build_table() {
     t.push_back(double_row("Simulator", "maxMotorForce", kPositive, "Maximum joint motor force, N", FIELD(sim.max_motor_force)));
     t.push_back(double_row("Simulator", "blowupBound", kPositive,
                            "A position or velocity beyond this counts as a physics blow-up", FIELD(sim.blowup_bound)));
+    t.push_back(double_row("Simulator", "maxBodySpeed", kPositive,
+                           "A body faster than this (m/s) counts as a physics blow-up (failed evaluation)",
+                           FIELD(sim.max_body_speed)));
     t.push_back(double_row("Simulator", "failureFitness", kAnyFinite, "Fitness given to a failed (blown-up) evaluation",
                            FIELD(sim.failure_fitness)));
+    t.push_back(bool_row("Simulator", "selfCollision",
+                         "Bodies of the robot collide with each other (except those joined by a hinge)",
+                         FIELD(sim.self_collision)));
+    t.push_back(bool_row("Simulator", "allowCoarseStep",
+                         "Accept a physics step sample_step / extraTimeStepDivider above the stability bound "
+                         "(docs/simulator.md); results are then physics artefacts",
+                         FIELD(sim.allow_coarse_step)));
     // ---- Control
-    t.push_back(int_row("Control", "maximumIterations", 0, 10000000, "Maximum number of generations",
+    t.push_back(int_row("Control", "maximumIterations", 1, 10000000,
+                        "Maximum number of generations, counting generation 0",
                         FIELD(control.maximum_iterations)));
     t.push_back(double_row("Control", "minimumFitness", {-kHuge, kHuge, false, true},
                            "Stop early once the best fitness reaches this (inf = never)", FIELD(control.minimum_fitness)));

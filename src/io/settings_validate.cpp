@@ -2,6 +2,7 @@
 // Single-key checks (type, range) happen in the table's setters.
 #include "cic/core/error.hpp"
 #include "cic/io/settings_table.hpp"
+#include "cic/nn/geometry.hpp"
 #include "settings_values.hpp"
 
 namespace cic::io::detail {
@@ -46,8 +47,10 @@ void validate(const Settings& s, const Locations& locs) {
     c.require(gp.min_init_depth <= gp.max_init_depth,
               {"GP.minimumGeneratedTreeDepth", "GP.maximumGeneratedTreeDepth"},
               "the minimum depth must not exceed the maximum depth");
-    c.require(gp.max_init_depth <= gp.max_tree_depth, {"GP.maximumGeneratedTreeDepth", "GP.maximumTreeDepth"},
-              "generated trees must fit the hard depth limit");
+    c.require(s.bloat.enabled || gp.max_tree_depth == 0 || gp.generated_tree_levels() <= gp.max_tree_depth,
+              {"GP.maximumGeneratedTreeDepth", "GP.maximumTreeDepth", "GP.ptc1RootDepth"},
+              "generated trees must fit the depth cap (" + std::to_string(gp.generated_tree_levels()) +
+                  " levels; the cap applies when bloat control is off)");
     c.require(gp.crossover_rate + gp.mutation_rate <= 1.0 + 1e-12, {"GP.crossoverRate", "GP.mutationRate"},
               "crossover and mutation rates must sum to at most 1");
     c.require(gp.tournament_size <= gp.population_size, {"GP.tournament_size", "GP.generatedPopulationSize"},
@@ -68,11 +71,21 @@ void validate(const Settings& s, const Locations& locs) {
     c.require(sim.sample_from <= sim.delayed_start && sim.delayed_start < sim.sample_to,
               {"Simulator.delayed_start", "Simulator.sample_from", "Simulator.sample_to"},
               "delayed_start must lie in [sample_from, sample_to)");
+    c.require(sim.allow_coarse_step || sim.physics_step() <= sim::kMaxStablePhysicsStep,
+              {"Simulator.sample_step", "Simulator.extraTimeStepDivider"},
+              "the physics step sample_step / extraTimeStepDivider = " + format_double(sim.physics_step()) +
+                  " s is above the stability bound " + format_double(sim::kMaxStablePhysicsStep) +
+                  " s (docs/simulator.md); raise extraTimeStepDivider, or set Simulator.allowCoarseStep = 1 "
+                  "to accept physics artefacts");
     c.require(sim.sample_step <= sim.sample_to - sim.sample_from,
               {"Simulator.sample_step", "Simulator.sample_from", "Simulator.sample_to"},
               "the control step is longer than the simulated time");
 
     const auto& nn = s.neural;
+    c.require(s.experiment.type != ExperimentType::HyperGP || p.variable_count <= nn::cppf_variable_count(nn),
+              {"GP.terminalVariableCount", "Neural.extraCppfInputs"},
+              "HyperGP's CPPF has " + std::to_string(nn::cppf_variable_count(nn)) +
+                  " inputs (x1 y1 x2 y2, and 3 more with extraCppfInputs); a tree cannot use more variables");
     c.require(nn.forest_map.empty() || nn.forest_map.size() == static_cast<std::size_t>(nn::kSynapseTypes),
               {"Neural.forestMap"}, "give one tree index per synapse type (5) or none");
     for (int t : nn.forest_map)

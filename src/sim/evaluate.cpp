@@ -21,6 +21,9 @@ void check_config(const SimConfig& c, const EvalOptions& o) {
         fail("delayed_start must lie in [sample_from, sample_to]");
     if ((c.sample_to - c.sample_from) / c.sample_step > 1e9) fail("too many control steps");
     if (c.step_divider < 1) fail("step_divider must be >= 1");
+    if (c.physics_step() > kMaxStablePhysicsStep && !c.allow_coarse_step)
+        fail("physics step sample_step / step_divider = " + std::to_string(c.physics_step()) + " s is above " +
+             std::to_string(kMaxStablePhysicsStep) + " s (allow_coarse_step is off)");
     if (c.quickstep_iterations < 1) fail("quickstep_iterations must be >= 1");
     if (c.max_contacts < 1 || c.max_contacts > 64) fail("max_contacts must be in [1, 64]");
     if (!finite(c.gravity) || !finite(c.erp) || !finite(c.cfm) || c.erp < 0 || c.erp > 1 || c.cfm < 0)
@@ -30,8 +33,8 @@ void check_config(const SimConfig& c, const EvalOptions& o) {
         fail("soft_cfm must be >= 0 and bounce in [0, 1]");
     if (!finite(c.joint_gain) || !finite(c.max_motor_force) || c.max_motor_force < 0)
         fail("joint_gain must be finite and max_motor_force >= 0");
-    if (!(c.blowup_bound > 0) || !finite(c.failure_fitness))
-        fail("blowup_bound must be > 0 and failure_fitness finite");
+    if (!(c.blowup_bound > 0) || !(c.max_body_speed > 0) || !finite(c.failure_fitness))
+        fail("blowup_bound and max_body_speed must be > 0 and failure_fitness finite");
     if (!finite(o.record_fps) || o.record_fps < 0) fail("record_fps must be >= 0");
 }
 
@@ -100,7 +103,15 @@ EvalResult evaluate(const RobotSpec& robot, Controller& controller, const SimCon
                 world.set_joint_velocity(j, cfg.joint_gain * (world.joint_angle(j) - desired[j]));
             world.step(dt);
             ++r.steps;
-            if (std::string why = world.check(cfg.blowup_bound); !why.empty())
+            r.ground_contacts += world.last_ground_contacts();
+            r.self_contacts += world.last_self_contacts();
+            r.max_ground_contacts = std::max(r.max_ground_contacts, world.last_ground_contacts());
+            r.max_self_contacts = std::max(r.max_self_contacts, world.last_self_contacts());
+            r.max_ground_depth = std::max(r.max_ground_depth, world.last_ground_depth());
+            double fastest = 0.0;
+            const std::string why = world.check(cfg.blowup_bound, cfg.max_body_speed, fastest);
+            if (std::isfinite(fastest)) r.max_body_speed = std::max(r.max_body_speed, fastest);
+            if (!why.empty())
                 return fail("physics blow-up at t=" + std::to_string(t) + ": " + why, t);
         }
     }

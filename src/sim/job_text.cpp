@@ -53,7 +53,10 @@ void for_each_field(SimConfig& c, F f) {
     f("joint_gain", c.joint_gain);
     f("max_motor_force", c.max_motor_force);
     f("blowup_bound", c.blowup_bound);
+    f("max_body_speed", c.max_body_speed);
     f("failure_fitness", c.failure_fitness);
+    f("self_collision", c.self_collision);
+    f("allow_coarse_step", c.allow_coarse_step);
 }
 
 } // namespace
@@ -141,7 +144,7 @@ SimConfig read_config_text(std::istream& in) {
         if constexpr (std::is_same_v<std::decay_t<decltype(v)>, double>)
             v = read_double(in);
         else
-            v = static_cast<int>(read_int(in));
+            v = static_cast<std::decay_t<decltype(v)>>(read_int(in));
     });
     expect_word(in, "end");
     return c;

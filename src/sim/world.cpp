@@ -1,6 +1,7 @@
 // Building and stepping one robot world (see docs/simulator.md for the model).
 #include "src/sim/world.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
@@ -16,6 +17,7 @@ void ensure_ode_initialised() {
 World::World(const Layout& layout, const SimConfig& cfg) : layout_(layout) {
     ensure_ode_initialised();
     max_contacts_ = cfg.max_contacts;
+    self_collision_ = cfg.self_collision;
     scratch_.resize(static_cast<std::size_t>(max_contacts_));
     dSurfaceParameters& s = contact_template_.surface;
     s.mode = dContactApprox1 | dContactSoftCFM | dContactBounce;
@@ -102,28 +104,50 @@ void World::release() {
     threading_ = nullptr;
 }
 
-void World::near_callback(void* data, dGeomID a, dGeomID b) {
-    auto* self = static_cast<World*>(data);
-    const int n = dCollide(a, b, self->max_contacts_, &self->scratch_[0].geom, sizeof(dContact));
+// Contacts between two geoms, with the one set of contact parameters.
+int World::add_contacts(dGeomID a, dGeomID b) {
+    const int n = dCollide(a, b, max_contacts_, &scratch_[0].geom, sizeof(dContact));
     dBodyID ba = dGeomGetBody(a), bb = dGeomGetBody(b);
     for (int i = 0; i < n; ++i) {
-        dContact c = self->contact_template_;
-        c.geom = self->scratch_[static_cast<std::size_t>(i)].geom;
-        dJointID j = dJointCreateContact(self->world_, self->contact_group_, &c);
+        dContact c = contact_template_;
+        c.geom = scratch_[static_cast<std::size_t>(i)].geom;
+        dJointID j = dJointCreateContact(world_, contact_group_, &c);
         dJointAttach(j, ba, bb);
     }
-    self->contacts_ += n;
+    return n;
+}
+
+void World::ground_callback(void* data, dGeomID a, dGeomID b) {
+    auto* self = static_cast<World*>(data);
+    const int n = self->add_contacts(a, b);
+    for (int i = 0; i < n; ++i)
+        self->ground_depth_ = std::max(self->ground_depth_, self->scratch_[static_cast<std::size_t>(i)].geom.depth);
+    self->ground_contacts_ += n;
+}
+
+// A pair of robot geoms whose bounding boxes overlap. ODE's space never offers
+// two geoms of one body; bodies joined by a hinge (a module's chassis and its
+// panel) touch by construction and are left to the joint.
+void World::self_callback(void* data, dGeomID a, dGeomID b) {
+    auto* self = static_cast<World*>(data);
+    if (dAreConnectedExcluding(dGeomGetBody(a), dGeomGetBody(b), dJointTypeContact)) return;
+    self->self_contacts_ += self->add_contacts(a, b);
 }
 
 void World::step(double dt) {
-    contacts_ = 0;
-    // Robot geoms only meet the ground: no collisions inside the robot.
-    dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::near_callback);
+    ground_contacts_ = 0;
+    self_contacts_ = 0;
+    ground_depth_ = 0.0;
+    // Ground contacts first, then the robot against itself: a fixed order, so
+    // QuickStep sees the same constraint rows in every run.
+    dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::ground_callback);
+    if (self_collision_) dSpaceCollide(robot_space_, this, &World::self_callback);
     dWorldQuickStep(world_, dt);
     dJointGroupEmpty(contact_group_);
 }
 
-std::string World::check(double bound) const {
+std::string World::check(double bound, double max_speed, double& fastest) const {
+    fastest = 0.0;
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const dReal* p = dBodyGetPosition(bodies_[b]);
         const dReal* v = dBodyGetLinearVel(bodies_[b]);
@@ -133,6 +157,11 @@ std::string World::check(double bound) const {
             if (!(std::fabs(v[k]) <= bound) || !(std::fabs(w[k]) <= bound))
                 return "body " + std::to_string(b) + " velocity out of bounds or NaN";
         }
+        const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        fastest = std::max(fastest, speed);
+        if (speed > max_speed)
+            return "body " + std::to_string(b) + " moves at " + std::to_string(speed) + " m/s (maxBodySpeed " +
+                   std::to_string(max_speed) + ")";
     }
     return {};
 }

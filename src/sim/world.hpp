@@ -29,25 +29,34 @@ public:
     double joint_angle(std::size_t j) const { return dJointGetHingeAngle(joints_[j]); }
     void set_joint_velocity(std::size_t j, double v) { dJointSetHingeParam(joints_[j], dParamVel, v); }
 
-    // One physics step of dt: collide against the ground, QuickStep, drop contacts.
+    // One physics step of dt: collide against the ground and, with self-collision,
+    // body against body; QuickStep; drop the contacts.
     void step(double dt);
 
-    // Empty when every body is finite and within `bound`; otherwise why not.
-    std::string check(double bound) const;
+    // Empty when every body is finite, within `bound` (position and velocity) and
+    // slower than `max_speed` m/s; otherwise why not. `fastest` gets the top speed.
+    std::string check(double bound, double max_speed, double& fastest) const;
 
     Vec3 geom_position(int geom) const;    // world position of a layout geom's centre
     Pose body_pose(int body) const;
     int body_count() const { return static_cast<int>(bodies_.size()); }
-    int last_contacts() const { return contacts_; }
+    int last_ground_contacts() const { return ground_contacts_; }
+    int last_self_contacts() const { return self_contacts_; }
+    double last_ground_depth() const { return ground_depth_; }   // deepest ground contact, m
 
 private:
     void release();
-    static void near_callback(void* data, dGeomID a, dGeomID b);
+    int add_contacts(dGeomID a, dGeomID b);
+    static void ground_callback(void* data, dGeomID a, dGeomID b);
+    static void self_callback(void* data, dGeomID a, dGeomID b);
 
     const Layout& layout_;
     dContact contact_template_{};
     int max_contacts_ = 4;
-    int contacts_ = 0;
+    bool self_collision_ = true;
+    int ground_contacts_ = 0;
+    int self_contacts_ = 0;
+    double ground_depth_ = 0.0;
 
     dThreadingImplementationID threading_ = nullptr;
     dWorldID world_ = nullptr;

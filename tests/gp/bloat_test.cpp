@@ -157,3 +157,127 @@ TEST(DynamicLimits, StateRoundTripsAndBadUseThrows) {
     EXPECT_EQ(copy.state().best_fitness, dl.state().best_fitness);
     EXPECT_EQ(copy.variant(), BloatVariant::Heavy);
 }
+
+namespace {
+
+// One scripted generation: the population's (fitness, depth) pairs, and what
+// the limit and the illegal marks must be after end_generation.
+struct Generation {
+    std::vector<std::pair<double, int>> individuals;
+    int limit;
+    std::vector<bool> illegal;
+};
+
+Population population(const std::vector<std::pair<double, int>>& fitness_depth) {
+    Population pop;
+    std::uint64_t id = 1;
+    for (auto [f, d] : fitness_depth) pop.individuals.push_back(make(id++, f, d));
+    return pop;
+}
+
+// Drives `dl` through the script: initialise on the first generation, then
+// end_generation on each, checking the limit and every mark as it goes.
+void run_script(DynamicLimits& dl, const std::vector<Generation>& script) {
+    for (std::size_t g = 0; g < script.size(); ++g) {
+        SCOPED_TRACE("generation " + std::to_string(g));
+        Population pop = population(script[g].individuals);
+        if (g == 0) dl.initialise(pop);
+        dl.end_generation(pop);
+        EXPECT_EQ(dl.state().limit, script[g].limit);
+        for (std::size_t i = 0; i < pop.size(); ++i)
+            EXPECT_EQ(pop[i].has("illegal"), script[g].illegal[i]) << "individual " << i;
+    }
+}
+
+} // namespace
+
+// Thesis 5.2: the simple limit starts at the best's depth, never falls, and
+// nobody is ever illegal, however deep.
+TEST(DynamicLimitsScript, SimpleNeverFallsAndHasNoIllegals) {
+    DynamicLimits dl(BloatVariant::Simple, 7);
+    run_script(dl, {
+                       {{{3.0, 5}, {1.0, 9}, {2.0, 7}}, 5, {false, false, false}},
+                       {{{4.0, 3}, {1.0, 12}}, 5, {false, false}},    // best shallower: no fall
+                       {{{5.0, 2}, {0.0, 6}}, 5, {false, false}},
+                   });
+    // A deeper child that beats the best raises it for good.
+    Population pop = population({{5.0, 2}});
+    EXPECT_TRUE(dl.accept(*make(50, 6.0, 8), pop[0], nullptr));
+    EXPECT_EQ(dl.state().limit, 8);
+    Population next = population({{6.0, 8}, {1.0, 9}});
+    dl.end_generation(next);
+    EXPECT_EQ(dl.state().limit, 8);
+    EXPECT_FALSE(next[1].has("illegal"));
+    // The child of a deep parent is held to the limit, not to its parent's depth.
+    EXPECT_EQ(dl.limit_for(next[1], nullptr), 8);
+}
+
+// 5.2.1-5.2.2: the heavy limit follows the best's depth down, never below the
+// initial maximum depth; whoever is deeper is illegal until it is not.
+TEST(DynamicLimitsScript, HeavyFallsToTheBestButNotBelowTheInitialMaximum) {
+    DynamicLimits dl(BloatVariant::Heavy, 7);
+    run_script(dl, {
+                       {{{3.0, 10}, {1.0, 12}, {2.0, 7}}, 10, {false, true, false}},
+                       {{{4.0, 9}, {1.0, 10}, {0.5, 8}}, 9, {false, true, false}},
+                       {{{5.0, 3}, {1.0, 8}, {0.5, 7}}, 7, {false, true, false}},   // floor 7
+                       {{{6.0, 2}, {1.0, 7}}, 7, {false, false}},
+                   });
+    // A child of an illegal parent is held to the larger parent's depth.
+    Population pop = population({{6.0, 2}, {1.0, 9}});
+    pop[1].attributes["illegal"] = "1";
+    EXPECT_EQ(dl.limit_for(pop[0], &pop[1]), 9);
+    EXPECT_TRUE(dl.accept(*make(60, 0.0, 9), pop[0], &pop[1]));
+    EXPECT_FALSE(dl.accept(*make(61, 0.0, 10), pop[0], &pop[1]));
+    EXPECT_EQ(dl.limit_for(pop[0], nullptr), 7);
+}
+
+// 5.2.3: the very heavy limit may fall below the initial maximum depth.
+TEST(DynamicLimitsScript, VeryHeavyFallsBelowTheInitialMaximum) {
+    DynamicLimits dl(BloatVariant::VeryHeavy, 7);
+    run_script(dl, {
+                       {{{3.0, 10}, {1.0, 12}}, 10, {false, true}},
+                       {{{5.0, 3}, {1.0, 8}, {0.5, 3}}, 3, {false, true, false}},
+                       {{{6.0, 1}, {1.0, 2}}, 1, {false, true}},
+                       {{{7.0, 4}, {1.0, 2}}, 1, {true, true}},   // never rises at a generation's end
+                   });
+}
+
+// Thesis 7.2.1: a forest is as deep as the sum of its trees, unless asked otherwise.
+TEST(DynamicLimits, ForestDepthIsTheSumOfTheTreesByDefault) {
+    auto forest = [](double fitness, std::vector<int> depths) {
+        auto p = make(1, fitness, 1);
+        p->genotype.clear();
+        for (int d : depths) p->genotype.push_back(chain(d));
+        return p;
+    };
+    Population pop;
+    pop.individuals = {forest(5.0, {3, 4, 2, 1})};
+    DynamicLimits by_sum(BloatVariant::Simple, 4 * 7);
+    by_sum.initialise(pop);
+    EXPECT_EQ(by_sum.state().limit, 10);
+    DynamicLimits by_max(BloatVariant::Simple, 7, ForestDepth::Max);
+    by_max.initialise(pop);
+    EXPECT_EQ(by_max.state().limit, 4);
+    // A child with trees 4+4+2+1 = 11 deep by sum breaks the sum limit, not the max one.
+    const auto child = forest(1.0, {4, 4, 2, 1});
+    EXPECT_FALSE(by_sum.accept(*child, pop[0], nullptr));
+    EXPECT_TRUE(by_max.accept(*child, pop[0], nullptr));
+    EXPECT_THROW(DynamicLimits(BloatVariant::Simple, 7, static_cast<ForestDepth>(5)), std::invalid_argument);
+    // A 1-tree genotype has one depth whichever the measure.
+    EXPECT_EQ(make(2, 0.0, 6)->depth(ForestDepth::Sum), make(2, 0.0, 6)->depth(ForestDepth::Max));
+}
+
+// The heavy floor is the deepest genotype initialisation can make, in the same measure.
+TEST(DynamicLimits, InitialMaximumFollowsTheSettings) {
+    GpConfig cfg;   // PTC1, maximum depth 6 counted from a root of depth 0: 7 levels
+    EXPECT_EQ(cfg.generated_tree_levels(), 7);
+    cfg.trees_per_genotype = 4;
+    EXPECT_EQ(cfg.generated_forest_depth(), 28);
+    cfg.forest_depth = ForestDepth::Max;
+    EXPECT_EQ(cfg.generated_forest_depth(), 7);
+    cfg.ptc1_root_depth = 1;
+    EXPECT_EQ(cfg.generated_tree_levels(), 6);
+    cfg.ptc1_root_depth = 0;
+    cfg.init_method = InitMethod::Grow;   // Grow counts a leaf as 1, as the thesis's pseudocode
+    EXPECT_EQ(cfg.generated_tree_levels(), 6);
+}

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 
@@ -163,4 +164,32 @@ TEST(Generators, ImprobableMinimumDepthThrowsAfterBoundedAttempts) {
     const TreeGenerator gen(ps, InitMethod::Ptc1, 1.0, 3, 6);   // E = 1: p = 0, only leaves
     Rng rng(1);
     EXPECT_THROW(gen.generate(rng), std::runtime_error);
+}
+
+// Thesis table B.1: PTC1 with expected size 30 between depths 2 and 6. Luke's
+// expected size holds only without a depth limit; the thesis's depths, counted
+// from a root of depth 0 (6.3.4.4), allow 3 to 7 levels and cut the trees far
+// shorter. docs/thesis.md quotes the sizes printed here.
+TEST(Generators, Ptc1RealisedSizeAtTableB1) {
+    const PrimitiveSet ps = thesis_set();
+    const GpConfig b1;   // the table's values are the defaults
+    auto mean_size = [&](int min_levels, int max_levels) {
+        const TreeGenerator gen(ps, InitMethod::Ptc1, b1.expected_tree_size, min_levels, max_levels);
+        Rng rng(7);
+        double total = 0.0;
+        const int n = 100000;
+        for (int i = 0; i < n; ++i) total += static_cast<double>(gen.generate(rng).size());
+        return total / n;
+    };
+    ASSERT_EQ(levels(b1, InitMethod::Ptc1, b1.min_init_depth), 3);
+    ASSERT_EQ(b1.generated_tree_levels(), 7);
+    const double thesis_depths = mean_size(3, 7);     // ptc1RootDepth 0 (the default)
+    const double one_based = mean_size(2, 6);         // ptc1RootDepth 1
+    const double unlimited = mean_size(1, 2000);      // Luke's expected size, no depth limit
+    std::printf("PTC1 mean tree size, E = 30: depths 2-6 from root 0 (3-7 levels) %.2f; "
+                "from root 1 (2-6 levels) %.2f; no depth limit %.2f\n",
+                thesis_depths, one_based, unlimited);
+    EXPECT_NEAR(thesis_depths, 10.6, 0.3);
+    EXPECT_NEAR(one_based, 7.5, 0.3);
+    EXPECT_NEAR(unlimited, 30.0, 3.0);   // heavy-tailed near the critical branching rate
 }

@@ -31,7 +31,8 @@ TEST(Individual, BetterOrdersByFitnessThenSizeThenId) {
     EXPECT_TRUE(better(*worse, *nan));
     EXPECT_FALSE(better(*nan, *worse));
     EXPECT_EQ(big->size(), 3u);
-    EXPECT_EQ(big->depth(), 2);
+    EXPECT_EQ(big->depth(ForestDepth::Sum), 2);
+    EXPECT_EQ(big->depth(ForestDepth::Max), 2);
 }
 
 TEST(Population, BestUsesBetter) {

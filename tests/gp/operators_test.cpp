@@ -61,6 +61,43 @@ TEST(PickNode, PrefersFunctionNodesNinetyPercent) {
     EXPECT_THROW(pick_node(rng, Tree()), std::invalid_argument);
 }
 
+TEST(PickNode, UniformPicksEveryNodeAlike) {
+    const Tree t = Tree::parse("(add (mul x0 x1) (sin x2))");   // 6 nodes
+    Rng rng(1);
+    std::vector<int> count(t.size());
+    const int n = 30000;
+    for (int i = 0; i < n; ++i) ++count[pick_node(rng, t, NodeSelection::Uniform)];
+    for (int c : count) EXPECT_NEAR(c / static_cast<double>(n), 1.0 / 6.0, 0.01);
+    Rng a(4), b(4);
+    for (int i = 0; i < 50; ++i)
+        ASSERT_EQ(pick_node(a, t, NodeSelection::Uniform), pick_node(b, t, NodeSelection::Uniform));
+    EXPECT_THROW(pick_node(rng, t, static_cast<NodeSelection>(7)), std::invalid_argument);
+    EXPECT_THROW(pick_node(rng, Tree(), NodeSelection::Uniform), std::invalid_argument);
+}
+
+TEST(Mutation, SubtreesComeFromTheConfiguredGenerator) {
+    // GP.mutationGenerator: Full grows exactly to the depth, Grow and PTC1 up to it.
+    const PrimitiveSet ps = wide_set();
+    Rng rng(6);
+    const TreeGenerator full(ps, InitMethod::Full, 30, 1, 6);
+    const TreeGenerator grow(ps, InitMethod::Grow, 30, 1, 6);
+    const TreeGenerator ptc1(ps, InitMethod::Ptc1, 30, 1, 6);
+    bool shallower = false;
+    for (int n = 0; n < 300; ++n) {
+        ASSERT_EQ(full.subtree(rng, 4).depth(), 4);
+        ASSERT_LE(grow.subtree(rng, 4).depth(), 4);
+        const int d = ptc1.subtree(rng, 4).depth();
+        ASSERT_LE(d, 4);
+        shallower = shallower || d < 4;
+    }
+    EXPECT_TRUE(shallower);
+    // A leaf replaced by a Full subtree of depth 3 gives a tree of depth 3 + (its level - 1).
+    const Tree leaf = Tree::parse("x0");
+    EXPECT_EQ(mutate(rng, leaf, full, 3).depth(), 3);
+    Rng a(9), b(9);
+    EXPECT_EQ(mutate(a, leaf, full, 3, NodeSelection::Uniform), mutate(b, leaf, full, 3, NodeSelection::Uniform));
+}
+
 TEST(Mutation, ReplacesOneSubtreeWithABoundedGrowSubtree) {
     const PrimitiveSet ps = wide_set();
     const TreeGenerator gen(ps, InitMethod::Grow, 30, 1, 6);

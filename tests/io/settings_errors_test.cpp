@@ -93,7 +93,9 @@ TEST(SettingsErrors, EmptyValues) {
 
 TEST(SettingsErrors, DuplicatesAndNesting) {
     auto m = error_of(gp("<elitism>1</elitism>\n<elitism>2</elitism>"));
-    EXPECT_HAS(m, "bad.xml:4: <GP> elitism is given twice (first at line 3)");
+    EXPECT_HAS(m, "bad.xml:4: <GP> elitism = \"2\" is given twice, first as \"1\" at line 3");
+    // The same value twice is read once (table B.1 lists functionProbabilities twice).
+    EXPECT_EQ(error_of(gp("<elitism>1</elitism>\n<elitism> 1 </elitism>")), "(no error)");
     m = error_of(gp("<elitism value=\"1\"/>"));
     EXPECT_HAS(m, "bad.xml:3: <GP> elitism: write the value as the element's text");
     m = error_of("<settings><Simulator><sample_step>0,5</sample_step></Simulator></settings>");
@@ -119,6 +121,26 @@ TEST(SettingsErrors, CrossFieldChecksPointAtTheLine) {
     EXPECT_HAS(m, "delayed_start must lie in [sample_from, sample_to)");
     m = error_of(gp("<elitism>50</elitism>"));
     EXPECT_HAS(m, "elitism < population size");
+    m = error_of("<settings><Simulator><sample_step>0.5</sample_step></Simulator></settings>");
+    EXPECT_HAS(m, "bad.xml:1: <Simulator> sample_step = \"0.5\", <Simulator> extraTimeStepDivider = \"1\": the "
+                  "physics step sample_step / extraTimeStepDivider = 0.5 s is above the stability bound 0.025 s");
+    EXPECT_HAS(m, "Simulator.allowCoarseStep = 1");
+    EXPECT_EQ(error_of("<settings><Simulator><sample_step>0.5</sample_step><extraTimeStepDivider>20"
+                       "</extraTimeStepDivider></Simulator></settings>"),
+              "(no error)");
+    EXPECT_EQ(error_of("<settings><Simulator><sample_step>0.5</sample_step><allowCoarseStep>1"
+                       "</allowCoarseStep></Simulator></settings>"),
+              "(no error)");
+    // The depth cap applies without bloat control, to PTC1's 7 levels at depth 6.
+    m = error_of(gp("<maximumTreeDepth>6</maximumTreeDepth>") + "");
+    EXPECT_EQ(m, "(no error)");
+    m = error_of("<settings><GP><maximumTreeDepth>6</maximumTreeDepth></GP>"
+                 "<BloatControl><useBloatControl>0</useBloatControl></BloatControl></settings>");
+    EXPECT_HAS(m, "generated trees must fit the depth cap (7 levels");
+    m = error_of(gp("<terminalVariableCount>5</terminalVariableCount>"));
+    EXPECT_HAS(m, "HyperGP's CPPF has 4 inputs");
+    m = error_of("<settings><Control><maximumIterations>0</maximumIterations></Control></settings>");
+    EXPECT_HAS(m, "<Control> maximumIterations = \"0\": out of range");
 }
 
 TEST(SettingsErrors, OverridesNameTheirSource) {

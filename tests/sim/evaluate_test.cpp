@@ -107,6 +107,32 @@ TEST(Evaluate, BlowUpIsAFailedResultNotACrash) {
     for (double v : r.end) EXPECT_TRUE(std::isfinite(v));
 }
 
+TEST(Evaluate, CoarseStepsAreRefusedUnlessAllowed) {
+    // Thesis 7.2.3 with extraTimeStepDivider 1: a physics step of 0.5 s.
+    SimConfig cfg;
+    cfg.sample_step = 0.5;
+    SineController gait(tripod_gait(6, 3));
+    EXPECT_THROW(evaluate(preset(1, true), gait, cfg), std::invalid_argument);
+    cfg.allow_coarse_step = true;   // on request it runs (and parts sink into the ground)
+    EXPECT_FALSE(evaluate(preset(1, true), gait, cfg).failed);
+    // The thesis's own coarse set-up, 0.5 s / 20 = 25 ms, is within the bound.
+    cfg.allow_coarse_step = false;
+    cfg.step_divider = 20;
+    EXPECT_FALSE(evaluate(preset(1, true), gait, cfg).failed);
+}
+
+TEST(Evaluate, ABodyFasterThanTheBoundIsABlowUp) {
+    // The tripod gait moves parts at up to ~8 m/s; a bound of 2 m/s catches it.
+    SimConfig cfg;
+    SineController gait(tripod_gait(6, 3));
+    ASSERT_FALSE(evaluate(preset(1, true), gait, cfg).failed);
+    cfg.max_body_speed = 2.0;
+    const EvalResult r = evaluate(preset(1, true), gait, cfg);
+    EXPECT_TRUE(r.failed);
+    EXPECT_EQ(r.fitness, cfg.failure_fitness);
+    EXPECT_NE(r.failure.find("maxBodySpeed"), std::string::npos) << r.failure;
+}
+
 TEST(Evaluate, NonFiniteCommandFailsTheEvaluation) {
     ConstantController nan_angle(std::nan(""));
     const EvalResult r = evaluate(preset(0, false), nan_angle, short_config(1.0));
@@ -124,6 +150,7 @@ TEST(Evaluate, BadConfigThrows) {
     EXPECT_THROW(evaluate(robot, c, with([](SimConfig& s) { s.delayed_start = 99; })), std::invalid_argument);
     EXPECT_THROW(evaluate(robot, c, with([](SimConfig& s) { s.max_contacts = 0; })), std::invalid_argument);
     EXPECT_THROW(evaluate(robot, c, with([](SimConfig& s) { s.friction = -1; })), std::invalid_argument);
+    EXPECT_THROW(evaluate(robot, c, with([](SimConfig& s) { s.max_body_speed = 0; })), std::invalid_argument);
     EXPECT_THROW(SineController({}), std::invalid_argument);
 }
 

@@ -69,12 +69,14 @@ inline RunResult run_settings(const std::filesystem::path& dir, const std::strin
 }
 
 // HyperGP with population 6 on R0 and 2.5 s simulations: seconds, not minutes.
+// Elitism 1 (not the thesis's 0), so that the best never falls.
 inline std::string tiny_hypergp_settings(int generations, int workers, const std::string& extra_control = "") {
     return R"(<?xml version="1.0"?>
 <settings>
   <Experiment><type>hypergp</type><seed>5</seed><workers>)" + std::to_string(workers) + R"(</workers></Experiment>
   <GP><generatedPopulationSize>6</generatedPopulationSize><tournament_size>3</tournament_size>
-      <expectedGeneratedTreeSize>10</expectedGeneratedTreeSize><maximumGeneratedTreeDepth>4</maximumGeneratedTreeDepth></GP>
+      <expectedGeneratedTreeSize>10</expectedGeneratedTreeSize><maximumGeneratedTreeDepth>4</maximumGeneratedTreeDepth>
+      <elitism>1</elitism></GP>
   <Simulator><robot_type>0</robot_type><sample_to>2.5</sample_to><delayed_start>0.5</delayed_start></Simulator>
   <Control><maximumIterations>)" + std::to_string(generations) + "</maximumIterations>" + extra_control + R"(</Control>
 </settings>

@@ -26,6 +26,8 @@ int parse_robot_name(std::string_view name);
 struct PresetReplay {
     int robot_type = 1;
     bool middle_legs = false;
+    std::string robot_file;                      // a robot file instead of the preset
+    std::vector<std::string> overrides;          // --set Section.key=value for the simulator
     std::string controller = "sine:0.6,0.5";
     sim::SimConfig sim;                          // sample_to sets the length
 };
@@ -40,13 +42,14 @@ ReplayItem replay_preset(const PresetReplay& preset, double fps, bool trace);
 struct ReplaySource {
     std::string input;                 // RUN_DIR or POPULATION.xml
     std::string individual = "best";
-    std::string robot;                 // R0 | R1 | R2
+    std::string robot;                 // R0 | R1 | R2 | a robot file
+    std::vector<std::string> overrides;  // --set Section.key=value (simulator keys)
     bool middle_legs = false;
     std::string controller = "sine:0.6,0.5";
     double seconds = 0.0;              // 0 = the simulator default
 };
 
-// Adds the positional input and --individual, --robot, --middle-legs, --controller, --seconds.
+// Adds the positional input and --individual, --robot, --middle-legs, --controller, --seconds, --set.
 void add_replay_options(CLI::App& command, ReplaySource& source);
 
 // Resolves the options (throws cic::InputError when neither or both sources are given).

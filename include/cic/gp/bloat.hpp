@@ -1,6 +1,6 @@
 #pragma once
 // Dynamic Limits bloat control (Silva & Costa; thesis 5.2): simple, heavy and
-// very heavy variants, with illegal individuals.
+// very heavy variants; illegal individuals in the heavy ones.
 #include "cic/gp/config.hpp"
 #include "cic/gp/individual.hpp"
 
@@ -14,13 +14,16 @@ struct BloatState {
 
 class DynamicLimits {
 public:
-    DynamicLimits(BloatVariant variant, int initial_max_depth);
+    // `initial_max_depth` is the deepest genotype the initialisation can make,
+    // measured as `measure` measures every depth here.
+    DynamicLimits(BloatVariant variant, int initial_max_depth, ForestDepth measure = ForestDepth::Sum);
 
-    // After the first evaluation: limit = depth of the best individual (at least 1).
+    // After the first evaluation: limit = depth of the best individual (at least 1;
+    // Heavy: at least initial_max).
     void initialise(const Population& evaluated);
 
-    // The limit that applies to a child of these parents: if a parent is illegal
-    // (marked "illegal"), the larger parent depth; else the current limit.
+    // The limit that applies to a child of these parents: with an illegal parent
+    // (heavy variants only), the larger parent depth; else the current limit.
     int limit_for(const Individual& p1, const Individual* p2) const;
 
     // Decide on an evaluated child. Accepts if depth <= limit_for(parents); a
@@ -29,17 +32,20 @@ public:
     // replaced by a copy of a parent.
     bool accept(const Individual& child, const Individual& p1, const Individual* p2);
 
-    // End of generation: Heavy/VeryHeavy may lower the limit to the best's depth
-    // (Heavy never below initial_max); individuals deeper than the limit are marked
-    // "illegal", the others have the mark removed.
+    // End of generation. Simple: the limit never falls and nobody is illegal.
+    // Heavy/VeryHeavy: the limit falls to the best's depth (Heavy never below
+    // initial_max); individuals deeper than it are marked illegal, the others
+    // lose the mark.
     void end_generation(Population& pop);
 
+    int depth(const Individual& ind) const { return ind.depth(measure_); }
     const BloatState& state() const { return state_; }
     void set_state(const BloatState& s) { state_ = s; }
     BloatVariant variant() const { return variant_; }
 
 private:
     BloatVariant variant_;
+    ForestDepth measure_;
     BloatState state_;
 };
 

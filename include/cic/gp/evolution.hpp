@@ -44,8 +44,12 @@ struct GenerationRecord {
     int generation = 0;
     int max_generations = 0;
     double best = 0, mean = 0, median = 0;
-    double mean_depth = 0;
+    double mean_depth = 0;          // depth as GP.forestDepth measures it (what the limit bounds)
     int max_depth = 0;
+    double mean_depth_sum = 0;      // both measures, whichever is configured (thesis fig. 7.4b: sum)
+    int max_depth_sum = 0;
+    double mean_depth_max = 0;
+    int max_depth_max = 0;
     double mean_size = 0;
     std::size_t max_size = 0;
     int limit = 0;                  // dynamic depth limit (0 when bloat control is off)
@@ -56,7 +60,7 @@ struct GenerationRecord {
     std::uint64_t best_id = 0;
 };
 
-GenerationRecord summarise(const Population& pop, const EvolutionState& st);
+GenerationRecord summarise(const Population& pop, const EvolutionState& st, ForestDepth measure);
 
 struct StopConditions {
     int maximum_iterations = 50;    // generations evaluated, counting generation 0
@@ -116,7 +120,7 @@ private:
 
 // Dynamic Limits filter over freshly evaluated children (thesis 5.2): a child
 // that breaks its limit without beating the best is replaced by a copy of its
-// first parent. Also keeps the hard depth cap when bloat control is off.
+// first parent. Without bloat control it keeps the per-tree depth cap instead.
 class BloatControl final : public PopulationModifier {
 public:
     BloatControl(const GpConfig& gp, const BloatConfig& cfg, const Breed& breed);
@@ -132,6 +136,7 @@ private:
     const BloatConfig& cfg_;
     const Breed& breed_;
     std::vector<const Individual*> index_;   // scratch: parents by id (see filter)
+    DynamicLimits limits() const;            // with the configured variant and measure
 };
 
 struct EvolutionHooks {

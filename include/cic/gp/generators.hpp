@@ -17,9 +17,12 @@ public:
     tree::Tree grow(Rng& rng, int max_depth) const;
     tree::Tree full(Rng& rng, int depth) const;
     tree::Tree ptc1(Rng& rng, int max_depth) const;
-    // One tree by the configured method. `slot`/`slots` ramp depths for RHH.
+    // One tree by the configured method, regenerated (boundedly) until it reaches
+    // the minimum depth. `slot`/`slots` ramp depths for RHH.
     tree::Tree generate(Rng& rng, std::size_t slot = 0, std::size_t slots = 1) const;
-    // Rejection-free retries until min_depth <= depth <= max_depth.
+    // A subtree for mutation: at most max_depth levels by the configured method
+    // (Full: exactly max_depth; Grow, PTC1 and RHH's Grow half: up to it), no minimum.
+    tree::Tree subtree(Rng& rng, int max_depth) const;
     const tree::PrimitiveSet& primitives() const { return ps_; }
     double function_probability() const { return p_function_; }  // PTC1's p (eq. 6.4)
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cic/gp/config.hpp"
 #include "cic/tree/tree.hpp"
 
 namespace cic::gp {
@@ -28,7 +29,9 @@ struct Individual {
 
     bool has(const std::string& key) const { return attributes.count(key) != 0; }
     std::size_t size() const { return tree::total_size(genotype); }
-    int depth() const { return tree::max_depth(genotype); }
+    int depth(ForestDepth measure) const {
+        return measure == ForestDepth::Sum ? tree::total_depth(genotype) : tree::max_depth(genotype);
+    }
 };
 
 using IndividualPtr = std::shared_ptr<Individual>;

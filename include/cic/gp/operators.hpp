@@ -11,16 +11,22 @@
 
 namespace cic::gp {
 
-// Picks a node: functions with probability 0.9 when the tree has any (Koza), else uniform.
-std::size_t pick_node(Rng& rng, const tree::Tree& t);
+// Picks a node. Koza: a function node with probability 0.9 when the tree has
+// any, else a leaf, each uniformly among its kind. Uniform: any node alike.
+std::size_t pick_node(Rng& rng, const tree::Tree& t, NodeSelection how = NodeSelection::Koza);
 
-// Subtree mutation: a random node is replaced by a new Grow subtree of depth <= max_sub_depth.
-tree::Tree mutate(Rng& rng, const tree::Tree& t, const TreeGenerator& gen, int max_sub_depth);
-tree::Forest mutate(Rng& rng, const tree::Forest& f, const TreeGenerator& gen, int max_sub_depth);
+// Subtree mutation: a picked node is replaced by a new subtree of at most
+// max_sub_depth levels, made by gen's method (TreeGenerator::subtree).
+tree::Tree mutate(Rng& rng, const tree::Tree& t, const TreeGenerator& gen, int max_sub_depth,
+                  NodeSelection how = NodeSelection::Koza);
+tree::Forest mutate(Rng& rng, const tree::Forest& f, const TreeGenerator& gen, int max_sub_depth,
+                    NodeSelection how = NodeSelection::Koza);
 
-// One-point subtree crossover: swaps random subtrees; returns both children.
-std::pair<tree::Tree, tree::Tree> crossover(Rng& rng, const tree::Tree& a, const tree::Tree& b);
-std::pair<tree::Forest, tree::Forest> crossover(Rng& rng, const tree::Forest& a, const tree::Forest& b);
+// One-point subtree crossover: swaps picked subtrees; returns both children.
+std::pair<tree::Tree, tree::Tree> crossover(Rng& rng, const tree::Tree& a, const tree::Tree& b,
+                                            NodeSelection how = NodeSelection::Koza);
+std::pair<tree::Forest, tree::Forest> crossover(Rng& rng, const tree::Forest& a, const tree::Forest& b,
+                                                NodeSelection how = NodeSelection::Koza);
 
 // Tournament of k with lexicographic parsimony (on equal fitness the smaller
 // genotype wins). Returns an index into pop. Throws on k < 1 or empty pop.

@@ -15,7 +15,7 @@ namespace cic::io {
 enum class ExperimentType { Symreg, HyperGP };
 
 struct ExperimentConfig {
-    ExperimentType type = ExperimentType::Symreg;
+    ExperimentType type = ExperimentType::HyperGP;   // see the inference in settings_read
     std::uint64_t seed = 1;
     std::string output_directory = "runs";
     int workers = 0;                 // 0 = one per core

@@ -10,8 +10,12 @@
 namespace cic::io {
 
 // The column order of stats.csv (plots and sweeps read it by these names).
+// mean_depth/max_depth measure forests as GP.forestDepth does (what `limit`
+// bounds); the last four give both measures: the sum of the trees' depths and
+// the deepest tree.
 inline constexpr const char* kStatsColumns =
-    "generation,best,mean,median,mean_depth,max_depth,mean_size,max_size,limit,illegal,evaluations,wall_seconds";
+    "generation,best,mean,median,mean_depth,max_depth,mean_size,max_size,limit,illegal,evaluations,wall_seconds,"
+    "mean_depth_sum,max_depth_sum,mean_depth_max,max_depth_max";
 
 class StatsWriter {
 public:

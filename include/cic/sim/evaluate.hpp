@@ -26,13 +26,20 @@ struct EvalResult {
     std::array<double, 3> end{};    // centre position at sample_to
     double simulated_seconds = 0.0;
     long steps = 0;                 // physics steps taken
+    long ground_contacts = 0;       // contact points summed over the physics steps
+    long self_contacts = 0;         // between bodies of the robot (selfCollision)
+    int max_ground_contacts = 0;    // most in one step
+    int max_self_contacts = 0;
+    double max_ground_depth = 0.0;  // deepest contact with the ground, m (how far parts sink)
+    double max_body_speed = 0.0;    // fastest body at the end of any physics step, m/s
     std::optional<Recording> recording;
     std::vector<TraceRow> trace;
 };
 
 // Deterministic: resets ODE's global random state (dRandSetSeed) before
 // building the world, and the world uses its own self-threaded implementation.
-// Throws std::invalid_argument for invalid config (e.g. step <= 0).
+// Throws std::invalid_argument for invalid config (e.g. step <= 0, or a physics
+// step above kMaxStablePhysicsStep without allow_coarse_step).
 EvalResult evaluate(const RobotSpec& robot, Controller& controller, const SimConfig& cfg,
                     const EvalOptions& options = {});
 
