@@ -22,6 +22,9 @@ struct Context {
     // processes, and `workers` does not apply to them. The app sets it under
     // mpirun (MPI ranks, docs/mpi.md); experiments need not know where jobs run.
     std::function<std::unique_ptr<JobRunner>()> make_runner = {};
+    // Where an experiment reports trouble that does not stop the run (a worker
+    // replaced, a job retried or scored as failed): run.log and the console.
+    std::function<void(const std::string&)> warn = [](const std::string&) {};
 };
 
 class Experiment {
@@ -35,5 +38,10 @@ public:
 };
 
 std::unique_ptr<Experiment> make_experiment(const Context& ctx);
+
+// Loads and checks every input the experiment will read (robot, dataset),
+// throwing cic::InputError with file and line; writes nothing. The run calls
+// it before its folder exists, and `cic settings FILE` calls it too.
+void check_inputs(const io::Settings& s);
 
 } // namespace cic::experiments

@@ -1,9 +1,11 @@
-// HyperGP wiring (thesis 6.2.2): genotypes are evaluated in-process with one
-// worker, in `cic worker` processes with more, or on whatever runner the app
-// hands over in Context::make_runner (MPI ranks). Physics runs in separate
-// processes because ODE's QuickStep uses process-global random state; each
-// evaluation resets it, so any number of workers gives the same fitness bits.
+// HyperGP wiring (thesis 6.2.2): genotypes are evaluated in `cic worker`
+// processes, or on whatever runner the app hands over in Context::make_runner
+// (MPI ranks). Physics runs in separate processes because ODE's QuickStep uses
+// process-global random state; each evaluation resets it, so any number of
+// workers gives the same fitness bits, and every runner gives the same reply.
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "cic/core/process_pool.hpp"
 #include "experiments/experiment.hpp"
@@ -14,12 +16,14 @@ namespace {
 
 class HypergpEvaluator final : public gp::Evaluator {
 public:
-    HypergpEvaluator(const Context& ctx) : model_(hypergp::Model::from_settings(ctx.settings)) {
+    HypergpEvaluator(const Context& ctx) : model_(hypergp::Model::from_settings(ctx.settings)), warn_(ctx.warn) {
         if (ctx.make_runner) {
             pool_ = ctx.make_runner();
-        } else if (ctx.workers > 1) {
+        } else {
+            // Always worker processes, even for one worker: one path, so a crash or
+            // a hang of an evaluation is the same result whatever the worker count.
             PoolOptions opt;
-            opt.workers = ctx.workers;
+            opt.workers = std::max(1, ctx.workers);
             opt.argv = {ctx.worker_executable, "worker", "--settings", ctx.settings_file.string()};
             opt.timeout_seconds = ctx.settings.experiment.worker_timeout;
             pool_ = std::make_unique<ProcessPool>(opt);
@@ -27,23 +31,26 @@ public:
     }
 
     void evaluate(std::span<const gp::IndividualPtr> todo) override {
-        if (!pool_) {
-            for (const auto& ind : todo) store(*ind, hypergp::run(model_, ind->genotype));
-            return;
-        }
         std::vector<std::string> jobs;
         jobs.reserve(todo.size());
         for (const auto& ind : todo) jobs.push_back("hypergp\n" + hypergp::job_body(ind->genotype));
         const auto results = pool_->run(jobs);
+        for (const auto& note : pool_->take_notes()) warn_("warning: " + note);
         for (std::size_t i = 0; i < todo.size(); ++i) {
             auto& ind = *todo[i];
-            if (results[i].ok) {
-                const auto r = hypergp::parse_reply(results[i].output);
-                ind.fitness = r.fitness;
-                if (r.failed) ind.attributes["failed"] = "physics";
+            const JobResult& r = results[i];
+            for (const auto& t : r.trouble)
+                warn_(fmt::format("warning: individual {}: {}{}", ind.id, t, r.ok || &t != &r.trouble.back()
+                                                                                 ? ", job retried" : ""));
+            if (r.ok) {
+                const sim::EvalReply reply = sim::parse_eval_reply(r.output);
+                ind.fitness = reply.fitness;
+                if (reply.failed) ind.attributes["failed"] = reply.failure;
             } else {
                 ind.fitness = model_.sim.failure_fitness;
-                ind.attributes["failed"] = "worker: " + results[i].error;
+                ind.attributes["failed"] = "worker: " + r.error;
+                warn_(fmt::format("warning: individual {} scored as failed (fitness {}): {}", ind.id, ind.fitness,
+                                  r.error));
             }
             ind.evaluated = true;
         }
@@ -52,14 +59,9 @@ public:
     const hypergp::Model& model() const { return model_; }
 
 private:
-    void store(gp::Individual& ind, const hypergp::Outcome& o) const {
-        ind.fitness = o.fitness;
-        if (o.failed) ind.attributes["failed"] = o.failure;
-        ind.evaluated = true;
-    }
-
     hypergp::Model model_;
-    std::unique_ptr<JobRunner> pool_;   // null: evaluate in this process
+    std::function<void(const std::string&)> warn_;
+    std::unique_ptr<JobRunner> pool_;
 };
 
 class HypergpExperiment final : public Experiment {

@@ -6,9 +6,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cic/core/error.hpp"
+#include "cic/core/limits.hpp"
 #include "cic/io/robot_xml.hpp"
 #include "cic/io/settings_io.hpp"
 #include "experiments/hypergp/oscillation.hpp"
+#include "experiments/hypergp/substrate_geometry.hpp"
 
 namespace cic::hypergp {
 
@@ -20,6 +23,36 @@ Model Model::from_settings(const io::Settings& s) {
     m.sim = s.sim;
     m.neural = s.neural;
     return m;
+}
+
+void check_inputs(const io::Settings& s) {
+    const Model m = [&] {
+        try {
+            return Model::from_settings(s);
+        } catch (const InputError& e) {
+            if (s.robot.robot_file.empty()) throw;
+            throw InputError("<Simulator> robotFile: " + e.message(), e.file(), e.line());
+        }
+    }();
+    const std::string where = s.robot.robot_file.empty()
+        ? "<Simulator> robot_type = " + std::to_string(s.robot.robot_type)
+        : s.robot.robot_file + ": <Simulator> robotFile";
+    if (m.robot.actuated().empty())
+        throw InputError("robot '" + m.robot.name + "' has no joint (every module is fixed): HyperGP needs at "
+                         "least one module with axis x, y or z", where);
+    const nn::Layout layout = nn::make_layout(substrate_geometry(m.robot), m.neural);
+    const std::size_t in = layout.input.size(), hidden = layout.hidden.size(), out = layout.output.size();
+    if (in + hidden + out > limits::kMaxNeurons)
+        throw InputError("robot '" + m.robot.name + "' gives a substrate of " + std::to_string(in + hidden + out) +
+                         " neurons, past the limit of " + std::to_string(limits::kMaxNeurons), where);
+    // Potential synapses of the enabled types (ih ho hh oo oh), as nn::SynapseType orders them.
+    const std::size_t per_type[] = {in * hidden, hidden * out, hidden * hidden, out * out, out * hidden};
+    std::size_t synapses = 0;
+    for (std::size_t t = 0; t < std::size(per_type); ++t)
+        if (t < m.neural.synapse_enabled.size() && m.neural.synapse_enabled[t]) synapses += per_type[t];
+    if (synapses > limits::kMaxSynapses)
+        throw InputError("robot '" + m.robot.name + "' gives a substrate of " + std::to_string(synapses) +
+                         " potential synapses, past the limit of " + std::to_string(limits::kMaxSynapses), where);
 }
 
 Outcome run(const Model& m, const tree::Forest& genotype, const sim::EvalOptions& options, bool record_control) {
@@ -62,29 +95,13 @@ tree::Forest parse_job_body(const std::string& body) {
     return f;
 }
 
-std::string reply(const Outcome& o) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%a %d", o.fitness, o.failed ? 1 : 0);
-    return buf;
-}
+sim::EvalReply to_reply(const Outcome& o) { return {o.fitness, o.failed, o.failure}; }
 
-Reply parse_reply(const std::string& text) {
-    Reply r;
-    int failed = 0;
-    if (std::sscanf(text.c_str(), "%la %d", &r.fitness, &failed) != 2)
-        throw std::runtime_error("malformed hypergp worker reply '" + text + "'");
-    r.failed = failed != 0;
-    return r;
-}
-
-std::function<std::string(const std::string&)> make_job_handler(const std::string& settings_file) {
+std::function<std::string(const std::string&)> make_job_handler(std::function<io::Settings()> settings) {
     auto model = std::make_shared<std::optional<Model>>();
-    return [model, settings_file](const std::string& body) {
-        if (!*model) {
-            if (settings_file.empty()) throw std::invalid_argument("hypergp jobs need `cic worker --settings FILE`");
-            *model = Model::from_settings(io::read_settings(settings_file));
-        }
-        return reply(run(**model, parse_job_body(body)));
+    return [model, settings = std::move(settings)](const std::string& body) {
+        if (!*model) *model = Model::from_settings(settings());
+        return sim::format_eval_reply(to_reply(run(**model, parse_job_body(body))));
     };
 }
 

@@ -10,6 +10,7 @@
 
 #include "cic/io/settings.hpp"
 #include "cic/sim/evaluate.hpp"
+#include "cic/sim/job_text.hpp"
 #include "experiments/hypergp/neural_controller.hpp"
 
 namespace cic::hypergp {
@@ -34,22 +35,23 @@ struct Outcome {
     ControlRecord control;          // raw outputs and commands when asked for
 };
 
+// Every input a HyperGP run reads, checked before the run starts: the robot
+// (file or preset) with at least one joint, and a substrate within the limits
+// (core/limits.hpp). Throws cic::InputError naming the file or key.
+void check_inputs(const io::Settings& s);
+
 Outcome run(const Model& m, const tree::Forest& genotype, const sim::EvalOptions& options = {},
             bool record_control = false);
 
 // Worker protocol: the job body is the trees, one S-expression per line; the
-// reply is the fitness as a hex float (exact), a space, and 0/1 for failed.
+// reply is sim's evaluation reply (sim/job_text.hpp), the same for every runner.
 std::string job_body(const tree::Forest& genotype);
 tree::Forest parse_job_body(const std::string& body);
-std::string reply(const Outcome& o);
-struct Reply {
-    double fitness = 0.0;
-    bool failed = false;
-};
-Reply parse_reply(const std::string& text);
+sim::EvalReply to_reply(const Outcome& o);
 
-// The "hypergp" job kind of `cic worker --settings FILE`: reads the settings
-// once, on the first job, then evaluates each job's genotype.
-std::function<std::string(const std::string&)> make_job_handler(const std::string& settings_file);
+// The "hypergp" job kind of a worker: `settings` is called once, on the first
+// job (a worker reads the run's settings.xml; an MPI rank parses rank 0's text),
+// then each job's genotype is evaluated.
+std::function<std::string(const std::string&)> make_job_handler(std::function<io::Settings()> settings);
 
 } // namespace cic::hypergp

@@ -78,9 +78,11 @@ int run_main_job(const MainOptions& o, const CommandContext& ctx, int argc, char
     if (!o.output.empty()) overrides.push_back("Experiment.outputDirectory=" + o.output);
     io::Settings settings = io::load_settings(o.settings_file, overrides);
     settings.experiment.name = run_name(settings);
-    const std::string effective = io::write_settings(settings);
+    PreparedRun prepared = prepare_run(std::move(settings));   // every input checked: nothing written yet
+    const io::Settings& s = prepared.settings;
+    const std::string effective = io::write_settings(s);
 
-    const fs::path run_dir = create_run_folder(settings.experiment.output_directory, settings.experiment.name);
+    const fs::path run_dir = create_run_folder(s.experiment.output_directory, s.experiment.name);
     io::xml::write_file_atomically(run_dir / "settings.xml", effective);
     {
         std::ofstream log(run_dir / "run.log");
@@ -95,7 +97,7 @@ int run_main_job(const MainOptions& o, const CommandContext& ctx, int argc, char
     run.quiet = ctx.quiet;
     run.verbose = ctx.verbose;
     run.worker_executable = self_executable(argv[0]);
-    return run_experiment(settings, run);
+    return run_experiment(std::move(prepared), run);
 }
 
 } // namespace
@@ -179,7 +181,7 @@ int main(int argc, char** argv) {
             if (!o.output.empty()) overrides.push_back("Experiment.outputDirectory=" + o.output);
             for (const auto& sd : seeds) {
                 overrides.push_back("Experiment.seed=" + sd);
-                io::load_settings(o.settings_file, overrides);
+                prepare_run(io::load_settings(o.settings_file, overrides));
                 overrides.pop_back();
             }
         }
@@ -188,7 +190,7 @@ int main(int argc, char** argv) {
             MainOptions one = o;
             one.seed = sd;
             const int r = run_main_job(one, ctx, argc, argv);
-            if (r == 130) return r;   // interrupted: stop the sweep
+            if (r == 130 || r == 143) return r;   // interrupted: stop the sweep
             if (rc == 0) rc = r;
         }
         return rc;

@@ -5,6 +5,7 @@
 
 #include "cic/app/command_guard.hpp"
 #include "cic/app/commands.hpp"
+#include "cic/app/run.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/io/settings_table.hpp"
 #include "cic/io/xml.hpp"
@@ -56,7 +57,8 @@ void add_settings_command(CLI::App& app, CommandContext& ctx) {
             } else if (opts->keys) {
                 std::cout << key_table();
             } else {
-                auto settings = io::load_settings(opts->file, opts->sets);
+                // The same checks as a run: robot, dataset, population to resume from.
+                auto settings = prepare_run(io::load_settings(opts->file, opts->sets)).settings;
                 if (!opts->validate_xsd.empty()) {
                     auto problems = io::xml::Document::load_file(opts->file).validate(opts->validate_xsd);
                     if (!problems.empty()) throw InputError("schema: " + problems.front());

@@ -31,18 +31,33 @@ namespace cic::app {
 namespace {
 
 std::atomic<bool> g_interrupted{false};
+std::atomic<int> g_signal{0};   // SIGINT or SIGTERM, whichever came first
 
-extern "C" void on_sigint(int) {
+// Ctrl-C or a batch scheduler's SIGTERM (Slurm sends it before a kill): finish the
+// generation under way, write the checkpoint and leave. A second signal of either
+// kind ends the process at once (the handlers are reset to the default).
+extern "C" void on_stop_signal(int sig) {
+    int none = 0;
+    g_signal.compare_exchange_strong(none, sig);
     g_interrupted.store(true);
-    std::signal(SIGINT, SIG_DFL);   // a second Ctrl-C ends the process at once
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
 }
 
-// Restores the previous SIGINT handler when the run ends.
-struct SigintGuard {
+// Restores the previous handlers when the run ends.
+struct StopSignalGuard {
     using Handler = void (*)(int);
-    Handler previous;
-    SigintGuard() : previous(std::signal(SIGINT, on_sigint)) { g_interrupted = false; }
-    ~SigintGuard() { std::signal(SIGINT, previous); }
+    Handler previous_int, previous_term;
+    StopSignalGuard() {
+        g_interrupted = false;
+        g_signal = 0;
+        previous_int = std::signal(SIGINT, on_stop_signal);
+        previous_term = std::signal(SIGTERM, on_stop_signal);
+    }
+    ~StopSignalGuard() {
+        std::signal(SIGINT, previous_int);
+        std::signal(SIGTERM, previous_term);
+    }
 };
 
 std::string population_name(int generation) { return fmt::format("gen-{:04d}.xml", generation); }
@@ -108,8 +123,26 @@ void finish_run(const io::Settings& s, const RunOptions& opt, Say& say) {
 
 } // namespace
 
-int run_experiment(const io::Settings& s, const RunOptions& opt) {
+PreparedRun prepare_run(io::Settings s) {
+    experiments::check_inputs(s);
+    PreparedRun p;
+    if (!s.control.population_load_from.empty()) {
+        const std::string from = s.control.population_load_from;   // absolute: resolved when read
+        try {
+            io::PopulationFile loaded = io::load_population(from);
+            io::check_compatible(loaded, s, from);
+            p.resume = std::move(loaded);
+        } catch (const InputError& e) {
+            throw InputError("<Control> populationXmlLoadFrom: " + e.message(), e.file(), e.line());
+        }
+    }
+    p.settings = std::move(s);
+    return p;
+}
+
+int run_experiment(PreparedRun prepared, const RunOptions& opt) {
     namespace fs = std::filesystem;
+    const io::Settings& s = prepared.settings;
     const fs::path base_dir = s.source_file.empty() ? fs::current_path() : fs::path(s.source_file).parent_path();
     const int workers = s.experiment.workers > 0 ? s.experiment.workers : hardware_threads();
 
@@ -121,9 +154,16 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
         log << line << '\n' << std::flush;
         progress.message(line);
     };
+    // Trouble (a replaced worker, a retried or failed job) reaches the console even with --quiet.
+    auto warn = [&](const std::string& line) {
+        log << line << '\n' << std::flush;
+        if (opt.quiet) std::fprintf(stderr, "cic: %s\n", line.c_str());
+        else progress.message(line);
+    };
 
     const tree::PrimitiveSet ps(s.gp.primitives);
     experiments::Context ctx{s, base_dir, opt.run_dir / "settings.xml", opt.worker_executable, workers};
+    ctx.warn = warn;
     std::string mpi_note;
 #ifdef CIC_HAVE_MPI
     // Under mpirun with more than one rank, HyperGP jobs go to ranks 1..N-1 (they
@@ -144,17 +184,15 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
     state.seed = s.experiment.seed;
     state.rng = Rng(s.experiment.seed);
     std::optional<gp::Population> start;
-    if (!s.control.population_load_from.empty()) {
-        fs::path from = s.control.population_load_from;
-        if (from.is_relative() && !fs::exists(from)) from = base_dir / from;
-        io::PopulationFile loaded = io::load_population(from);
-        io::check_compatible(loaded, s, from.string());
+    if (prepared.resume) {
+        io::PopulationFile& loaded = *prepared.resume;
+        const std::string& from = s.control.population_load_from;
         if (loaded.settings_digest != header.settings_digest)
             say(fmt::format("note: {} was made with other settings (digest {} vs {}); continuing with these settings",
-                            from.string(), loaded.settings_digest, header.settings_digest));
+                            from, loaded.settings_digest, header.settings_digest));
         state = loaded.state;   // the saved RNG state: a resume continues the same run
         start = std::move(loaded.population);
-        say(fmt::format("resuming from {} at generation {} (seed {})", from.string(), start->iteration, state.seed));
+        say(fmt::format("resuming from {} at generation {} (seed {})", from, start->iteration, state.seed));
     }
 
     say(fmt::format("cic {}: {} experiment, seed {}, {} worker{}, output {}", CIC_VERSION,
@@ -201,7 +239,7 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
         io::xml::write_file_atomically(checkpoint, text);
         point_latest_at(checkpoint, opt.run_dir / "population.xml", text);
     };
-    SigintGuard sigint;
+    StopSignalGuard stop_signals;
     hooks.stop_requested = &g_interrupted;
 
     auto result = gp::evolve(s.gp, s.bloat, stop, ps, experiment->evaluator(), state, std::move(start), hooks);
@@ -223,8 +261,10 @@ int run_experiment(const io::Settings& s, const RunOptions& opt) {
     std::fputs(summary.c_str(), stdout);   // the result always reaches stdout, even with --quiet
     std::fflush(stdout);
     if (result.reason == gp::StopReason::Interrupted) {
-        say("interrupted: population saved to " + (opt.run_dir / "population.xml").string());
-        return 130;
+        const bool term = g_signal.load() == SIGTERM;
+        warn(std::string("interrupted by ") + (term ? "SIGTERM" : "SIGINT") + ": population saved to " +
+             (opt.run_dir / "population.xml").string() + "; resume with Control.populationXmlLoadFrom");
+        return term ? 143 : 130;
     }
     finish_run(s, opt, say);
     return 0;

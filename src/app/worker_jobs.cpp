@@ -3,7 +3,6 @@
 
 #include <chrono>
 #include <memory>
-#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -22,24 +21,16 @@ std::string sleep_job(const std::string& body) {
     return "slept";
 }
 
-// The "hypergp" kind from settings text (MPI ranks): the same work as
-// hypergp::make_job_handler, with the model read once, on the first job.
-JobHandler hypergp_from_text(const std::string& settings_text) {
-    auto model = std::make_shared<std::optional<hypergp::Model>>();
-    return [model, settings_text](const std::string& body) {
-        if (!*model)
-            *model = hypergp::Model::from_settings(io::read_settings_string(settings_text, "settings from rank 0"));
-        return hypergp::reply(hypergp::run(**model, hypergp::parse_job_body(body)));
-    };
-}
-
 } // namespace
 
 std::map<std::string, JobHandler> make_worker_job_kinds(const WorkerContext& context) {
     std::map<std::string, JobHandler> kinds;
     // genotype -> fitness
-    kinds["hypergp"] = context.settings_text.empty() ? hypergp::make_job_handler(context.settings_file)
-                                                     : hypergp_from_text(context.settings_text);
+    kinds["hypergp"] = hypergp::make_job_handler([context]() {
+        if (!context.settings_text.empty()) return io::read_settings_string(context.settings_text, "settings from rank 0");
+        if (context.settings_file.empty()) throw std::invalid_argument("hypergp jobs need `cic worker --settings FILE`");
+        return io::read_settings(context.settings_file);
+    });
     kinds["sine"] = &sim::run_sine_job;   // robot + SimConfig + sine joints -> fitness reply
     kinds["sleep"] = &sleep_job;
     return kinds;

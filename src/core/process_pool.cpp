@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <deque>
+#include <utility>
 #include <stdexcept>
 #include <thread>
 
@@ -83,6 +84,7 @@ struct ProcessPool::Impl {
     PoolOptions opt;
     std::vector<Worker> workers;
     int restarts = 0;
+    std::vector<std::string> notes;   // trouble with no job to pin it on
 
     void spawn(Worker& w) {
         int sv[2];
@@ -98,9 +100,11 @@ struct ProcessPool::Impl {
             throw std::runtime_error(std::string("ProcessPool: fork: ") + std::strerror(errno));
         }
         if (pid == 0) {   // child: only async-signal-safe calls until exec
-            // Ctrl-C reaches the whole process group; the parent decides when the run
-            // stops and ends its workers, so they ignore it (SIG_IGN survives exec).
+            // Ctrl-C reaches the whole process group, and a batch scheduler's SIGTERM
+            // every process of the job; the parent decides when the run stops and
+            // ends its workers, so they ignore both (SIG_IGN survives exec).
             ::signal(SIGINT, SIG_IGN);
+            ::signal(SIGTERM, SIG_IGN);
             ::dup2(sv[1], 0);
             ::dup2(sv[1], 1);
             ::execv(argv[0], argv.data());
@@ -162,6 +166,8 @@ ProcessPool::~ProcessPool() {
 int ProcessPool::workers() const { return static_cast<int>(impl_->workers.size()); }
 int ProcessPool::restarts() const { return impl_->restarts; }
 
+std::vector<std::string> ProcessPool::take_notes() { return std::exchange(impl_->notes, {}); }
+
 std::vector<int> ProcessPool::pids() const {
     std::vector<int> out;
     for (const Worker& w : impl_->workers) out.push_back(static_cast<int>(w.pid));
@@ -182,8 +188,12 @@ std::vector<JobResult> ProcessPool::run(const std::vector<std::string>& jobs) {
         const long j = w.job;
         w.job = -1;
         im.replace(w);
-        if (j < 0) return;
+        if (j < 0) {
+            im.notes.push_back(why + "; worker replaced");
+            return;
+        }
         JobResult& r = results[static_cast<std::size_t>(j)];
+        r.trouble.push_back("attempt " + std::to_string(r.attempts) + ": " + why + "; worker replaced");
         if (r.attempts <= im.opt.retries) {
             pending.push_front(j);
         } else {

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "cic/core/limits.hpp"
 #include "cic/gp/operators.hpp"
 
 namespace cic::gp {
@@ -149,11 +150,13 @@ void Evaluate::apply(Population& pop, EvolutionState& st) {
         if (!ind->evaluated) todo.push_back(ind);
     if (todo.empty()) return;
     eval_.evaluate(todo);
-    for (const auto& ind : todo)
+    for (const auto& ind : todo) {
         if (!ind->evaluated) {
             todo.clear();
             throw std::logic_error("evaluator left an individual unevaluated");
         }
+        if (ind->has("failed")) ++failed_;
+    }
     st.evaluations += static_cast<long>(todo.size());
     todo.clear();   // holds no individual between calls
 }
@@ -297,9 +300,12 @@ void BloatControl::filter(Population& pop, EvolutionState& st, std::span<const s
         if (!p1) continue;   // an elite carried over
         if (ind->parents.size() == 1 && ind->genotype == p1->genotype) continue;  // a copy
         const Individual* p2 = ind->parents.size() > 1 ? find(ind->parents[1]) : nullptr;
-        // Dynamic Limits, or else Koza's per-tree cap (maximumTreeDepth 0 = none).
-        const bool ok = dl ? dl->accept(*ind, *p1, p2)
-                           : gp_.max_tree_depth == 0 || ind->depth(ForestDepth::Max) <= gp_.max_tree_depth;
+        // No tree past the size limit (core/limits.hpp), whatever the bloat control;
+        // then Dynamic Limits, or else Koza's per-tree cap (maximumTreeDepth 0 = none).
+        const bool fits = std::all_of(ind->genotype.begin(), ind->genotype.end(),
+                                      [](const tree::Tree& t) { return t.size() <= limits::kMaxTreeNodes; });
+        const bool ok = fits && (dl ? dl->accept(*ind, *p1, p2)
+                                    : gp_.max_tree_depth == 0 || ind->depth(ForestDepth::Max) <= gp_.max_tree_depth);
         if (!ok) ind = copy_of(st, *p1);
     }
     if (dl) st.bloat = dl->state();
@@ -350,6 +356,7 @@ EvolutionResult evolve(const GpConfig& gp, const BloatConfig& bloat, const StopC
     auto report = [&](bool fresh) {
         GenerationRecord rec = summarise(pop, state, gp.forest_depth);
         rec.max_generations = stop.maximum_iterations;
+        rec.failed = evaluate.take_failed();
         rec.wall_seconds = wall();
         rec.generation_seconds = std::chrono::duration<double>(Clock::now() - gen_start).count();
         if (fresh && hooks.on_generation) hooks.on_generation(rec);

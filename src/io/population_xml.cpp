@@ -1,10 +1,13 @@
 #include "cic/io/population_xml.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <sstream>
 
+#include "cic/core/limits.hpp"
 #include "cic/io/xml.hpp"
 
 namespace cic::io {
@@ -74,12 +77,19 @@ gp::IndividualPtr read_individual(const xml::Node& n, int trees) {
     auto ind = std::make_shared<gp::Individual>();
     ind->id = required<std::uint64_t>(n, "id");
     ind->fitness = required<double>(n, "fitness");
+    // Fitness drives selection and stopping: NaN or inf has no place there.
+    if (!std::isfinite(ind->fitness))
+        throw n.error("individual " + std::to_string(ind->id) + ": fitness=\"" + *n.attribute("fitness") +
+                      "\" is not a finite number");
     ind->evaluated = required<int>(n, "evaluated") != 0;
     for (const auto& c : n.children()) {
         const auto name = c.name();
         if (name == "tree") {
             try {
                 ind->genotype.push_back(tree::Tree::parse(c.text()));
+                if (ind->genotype.back().size() > limits::kMaxTreeNodes)
+                    throw InputError("a tree of " + std::to_string(ind->genotype.back().size()) +
+                                     " nodes is past the limit of " + std::to_string(limits::kMaxTreeNodes));
             } catch (const InputError& e) {
                 throw c.error("individual " + std::to_string(ind->id) + ": bad tree: " + e.message());
             } catch (const std::exception& e) {
@@ -185,6 +195,8 @@ PopulationFile parse_population(std::string_view text, const std::string& name) 
     p.experiment = required_text(root, "experiment");
     p.settings_digest = root.attribute("settingsDigest").value_or("");
     p.population.iteration = required<int>(root, "generation");
+    if (p.population.iteration < 0)
+        throw root.error("generation=\"" + *root.attribute("generation") + "\" must be >= 0");
     bool have_rng = false, have_shape = false, have_list = false;
     std::size_t declared = 0;
     xml::Node list_node;
@@ -194,6 +206,8 @@ PopulationFile parse_population(std::string_view text, const std::string& name) 
             have_shape = true;
             p.variables = required<int>(c, "variables");
             p.trees = required<int>(c, "trees");
+            if (p.variables < 0 || p.variables > 65535) throw c.error("variables must be in [0, 65535]");
+            if (p.trees < 1 || p.trees > 16) throw c.error("trees must be in [1, 16]");
             std::istringstream in(required_text(c, "functions"));
             std::string f;
             while (in >> f) p.functions.push_back(f);
@@ -208,17 +222,30 @@ PopulationFile parse_population(std::string_view text, const std::string& name) 
         } else if (nm == "counters") {
             p.state.next_id = required<std::uint64_t>(c, "nextId");
             p.state.evaluations = required<long>(c, "evaluations");
+            if (p.state.evaluations < 0) throw c.error("evaluations must be >= 0");
         } else if (nm == "bloat") {
             p.state.bloat.limit = required<int>(c, "limit");
             p.state.bloat.initial_max = required<int>(c, "initialMax");
             p.state.bloat.best_fitness = required<double>(c, "bestFitness");
+            if (p.state.bloat.limit < 0 || p.state.bloat.initial_max < 0 || !std::isfinite(p.state.bloat.best_fitness))
+                throw c.error("<bloat> needs limit >= 0, initialMax >= 0 and a finite bestFitness");
         } else if (nm == "individuals") {
             have_list = true;
             list_node = c;
             declared = required<std::size_t>(c, "count");
+            if (declared > limits::kMaxPopulation)
+                throw c.error("count=\"" + std::to_string(declared) + "\" is past the population limit of " +
+                              std::to_string(limits::kMaxPopulation));
+            if (!have_shape) throw c.error("<genotype> must come before <individuals>");
+            std::set<std::uint64_t> ids;
             for (const auto& n : c.children()) {
                 if (n.name() != "individual") throw n.error("unknown element <" + std::string(n.name()) + "> in <individuals>");
+                if (p.population.size() >= declared)
+                    throw n.error("more individuals than <individuals count=\"" + std::to_string(declared) + "\">");
                 p.population.individuals.push_back(read_individual(n, p.trees));
+                if (!ids.insert(p.population.individuals.back()->id).second)
+                    throw n.error("individual id " + std::to_string(p.population.individuals.back()->id) +
+                                  " appears twice");
             }
         } else {
             throw c.error("unknown element <" + std::string(nm) + "> in <population>; allowed: genotype, rng, counters, bloat, individuals");
@@ -255,6 +282,12 @@ void check_compatible(const PopulationFile& loaded, const Settings& s, const std
                 if (node.op == tree::Op::Var && node.var >= want.variables)
                     throw InputError("individual " + std::to_string(ind->id) + " uses variable x" + std::to_string(node.var) +
                                      " but terminalVariableCount is " + std::to_string(want.variables), file);
+                if (tree::arity(node.op) > 0 && std::find(s.gp.primitives.functions.begin(),
+                                                          s.gp.primitives.functions.end(),
+                                                          node.op) == s.gp.primitives.functions.end())
+                    throw InputError("individual " + std::to_string(ind->id) + " uses function " +
+                                     std::string(tree::name(node.op)) + ", which is not in the settings' functions '" +
+                                     join(want.functions) + "'", file);
             }
 }
 

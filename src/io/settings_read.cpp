@@ -202,7 +202,10 @@ Settings load_settings(const fs::path& file, const std::vector<std::string>& ove
         apply_layer(s, gather_document(doc), locs, &base);
         s.source_file = file.string();
     }
-    apply_layer(s, gather_overrides(overrides), locs, nullptr);
+    // Paths on the command line are relative to the current folder; every path is
+    // stored absolute, so workers, replays and resumes find the same file.
+    const fs::path cwd = fs::current_path();
+    apply_layer(s, gather_overrides(overrides), locs, &cwd);
     detail::validate(s, locs);
     return s;
 }

@@ -7,6 +7,7 @@
 #include <functional>
 #include <set>
 
+#include "cic/core/limits.hpp"
 #include "settings_values.hpp"
 
 namespace cic::io {
@@ -304,7 +305,8 @@ std::vector<SettingKey> build_table() {
     // ---- GP (thesis Appendix B)
     t.push_back(double_row("GP", "defaultFitness", kAnyFinite, "Fitness of individuals before they are evaluated",
                            FIELD(gp.default_fitness)));
-    t.push_back(int_row("GP", "generatedPopulationSize", 2, 10000000, "Individuals in each generation",
+    t.push_back(int_row("GP", "generatedPopulationSize", 2, static_cast<long long>(limits::kMaxPopulation),
+                        "Individuals in each generation",
                         FIELD(gp.population_size)));
     t.push_back(double_row("GP", "expectedGeneratedTreeSize", {1.0, 1e6},
                            "Expected tree size for PTC1 initialisation (thesis 6.3.4.4)", FIELD(gp.expected_tree_size)));

@@ -2,6 +2,7 @@
 // Single-key checks (type, range) happen in the table's setters.
 #include "cic/core/error.hpp"
 #include "cic/io/settings_table.hpp"
+#include "cic/io/xml.hpp"
 #include "cic/nn/geometry.hpp"
 #include "settings_values.hpp"
 
@@ -42,6 +43,13 @@ private:
 
 void validate(const Settings& s, const Locations& locs) {
     Checker c(s, locs);
+    // Text goes into settings.xml and population files: refuse what XML cannot hold.
+    for (const auto& k : settings_table())
+        if (k.type == ValueType::String || k.type == ValueType::Path)
+            if (auto why = xml::unholdable(k.get(s))) {
+                const std::string full = k.section + "." + k.key;
+                c.require(false, {full.c_str()}, "contains " + *why + ", which an XML file cannot hold");
+            }
     const auto& gp = s.gp;
     const auto& p = gp.primitives;
     c.require(gp.min_init_depth <= gp.max_init_depth,

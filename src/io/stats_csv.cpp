@@ -7,10 +7,10 @@ namespace cic::io {
 
 std::string to_csv_row(const gp::GenerationRecord& r) {
     char buf[512];
-    std::snprintf(buf, sizeof buf, "%d,%.17g,%.17g,%.17g,%.6g,%d,%.6g,%zu,%d,%d,%ld,%.3f,%.6g,%d,%.6g,%d", r.generation,
+    std::snprintf(buf, sizeof buf, "%d,%.17g,%.17g,%.17g,%.6g,%d,%.6g,%zu,%d,%d,%ld,%.3f,%.6g,%d,%.6g,%d,%d", r.generation,
                   r.best, r.mean, r.median, r.mean_depth, r.max_depth, r.mean_size, r.max_size, r.limit, r.illegal,
                   r.evaluations, r.wall_seconds, r.mean_depth_sum, r.max_depth_sum, r.mean_depth_max,
-                  r.max_depth_max);
+                  r.max_depth_max, r.failed);
     return buf;
 }
 

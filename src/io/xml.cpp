@@ -9,6 +9,8 @@
 #include <libxml/xmlschemas.h>
 
 #include <cerrno>
+#include <cstdio>
+#include <stdexcept>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -110,11 +112,49 @@ bool Node::has_element_children() const {
     return false;
 }
 
+std::optional<std::string> unholdable(std::string_view text) {
+    const auto* b = reinterpret_cast<const unsigned char*>(text.data());
+    for (std::size_t i = 0; i < text.size();) {
+        const unsigned c = b[i];
+        auto at = [&](const std::string& what) { return what + " at byte " + std::to_string(i); };
+        if (c < 0x80) {
+            if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+                char buf[16];
+                std::snprintf(buf, sizeof buf, "U+%04X", c);
+                return at(buf);
+            }
+            ++i;
+            continue;
+        }
+        // A well-formed UTF-8 sequence of a character XML allows (no surrogates, no U+FFFE/FFFF).
+        const std::size_t len = c >= 0xF0 && c <= 0xF4 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 && c <= 0xDF ? 2 : 0;
+        if (len == 0 || i + len > text.size()) return at("invalid UTF-8");
+        unsigned cp = c & (len == 2 ? 0x1F : len == 3 ? 0x0F : 0x07);
+        for (std::size_t k = 1; k < len; ++k) {
+            if ((b[i + k] & 0xC0) != 0x80) return at("invalid UTF-8");
+            cp = (cp << 6) | (b[i + k] & 0x3F);
+        }
+        const bool overlong = (len == 3 && cp < 0x800) || (len == 4 && cp < 0x10000);
+        if (overlong || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF) || cp == 0xFFFE || cp == 0xFFFF)
+            return at("invalid UTF-8");
+        i += len;
+    }
+    return std::nullopt;
+}
+
+namespace {
+void check_holdable(std::string_view what, std::string_view text) {
+    if (auto why = unholdable(text))
+        throw std::invalid_argument("XML cannot hold " + std::string(what) + ": it contains " + *why);
+}
+} // namespace
+
 InputError Node::error(const std::string& message) const {
     return InputError(message, file(), node_ ? line() : 0);
 }
 
 Node Node::add_child(std::string_view element, std::string_view text) {
+    check_holdable("the text of <" + std::string(element) + ">", text);
     std::string e(element), t(text);
     return Node(xmlNewTextChild(node_, nullptr, X(e.c_str()), X(t.c_str())));
 }
@@ -125,6 +165,7 @@ Node Node::add_element(std::string_view element) {
 }
 
 void Node::set_attribute(std::string_view attr, std::string_view value) {
+    check_holdable("attribute " + std::string(attr), value);
     std::string a(attr), v(value);
     xmlSetProp(node_, X(a.c_str()), X(v.c_str()));
 }

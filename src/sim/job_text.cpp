@@ -150,12 +150,13 @@ SimConfig read_config_text(std::istream& in) {
     return c;
 }
 
-std::string format_eval_reply(const EvalResult& r) {
+std::string format_eval_reply(const EvalReply& r) {
     std::ostringstream out;
-    out << "fitness " << hexfloat(r.fitness) << "\nfailed " << (r.failed ? 1 : 0) << '\n'
-        << r.failure;
+    out << "fitness " << hexfloat(r.fitness) << "\nfailed " << (r.failed ? 1 : 0) << '\n' << r.failure;
     return out.str();
 }
+
+std::string format_eval_reply(const EvalResult& r) { return format_eval_reply(EvalReply{r.fitness, r.failed, r.failure}); }
 
 EvalReply parse_eval_reply(const std::string& text) {
     std::istringstream in(text);

@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "cic/core/error.hpp"
+#include "cic/core/limits.hpp"
 
 namespace cic::sim {
 
@@ -35,6 +36,9 @@ std::vector<int> RobotSpec::actuated() const {
 std::optional<RobotProblem> RobotSpec::find_problem() const {
     const int n = static_cast<int>(modules.size());
     if (n == 0) return RobotProblem{-1, "robot '" + name + "' has no modules"};
+    if (modules.size() > limits::kMaxModules)
+        return RobotProblem{-1, std::to_string(n) + " modules is past the limit of " +
+                                    std::to_string(limits::kMaxModules) + " modules per robot"};
     if (preferred != Axis::X && preferred != Axis::Y)
         return RobotProblem{-1, "preferred axis must be x or y, not " + to_string(preferred)};
     if (centre < 0 || centre >= n)

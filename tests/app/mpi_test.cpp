@@ -92,6 +92,14 @@ TEST_F(Mpi, ThreeRanksGiveTheSamePopulationAsOneWorker) {
     EXPECT_EQ(read_text(one / "run.log").find("MPI"), std::string::npos);
 }
 
+// The golden run with forced physics failures: 3 ranks give the bytes that 1
+// and 2 worker processes give (tests/experiments/golden_test.cpp).
+TEST_F(Mpi, ThreeRanksGiveTheGoldenHash) {
+    const auto settings = write("golden.xml", cic::testing::golden_hypergp_settings(1));
+    ASSERT_EQ(run("mpi", kMpirun + "-np 3 ", job(settings, "mpi")), 0) << log("mpi");
+    EXPECT_EQ(cic::testing::file_hash(only_run("mpi") / "population.xml"), cic::testing::kGoldenHypergp);
+}
+
 TEST_F(Mpi, BadSettingsEndEveryRankWithExitCode2AndWriteNothing) {
     const auto settings = write("bad.xml", "<settings><Experiment><type>bogus</type></Experiment></settings>\n");
     EXPECT_EQ(run("bad", kMpirun + "-np 3 ", job(settings, "out")), 2) << log("bad");

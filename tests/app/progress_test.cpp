@@ -29,11 +29,11 @@ TEST(Progress, FormatsDurations) {
 
 TEST(Progress, RecordLineHoldsEveryField) {
     const std::string line = format_record(record(12));
-    EXPECT_EQ(line, "generation 12/50  123.4 eval/s  best 14.5  mean 1.25  limit 17  eta 1m30s");
+    EXPECT_EQ(line, "generation 11 (12/50)  123.4 eval/s  best 14.5  mean 1.25  limit 17  eta 1m30s");
     GenerationRecord open = record(3);
     open.max_generations = 0;
     open.eta_seconds = -1;
-    EXPECT_EQ(format_record(open).substr(0, 14), "generation 3  ");
+    EXPECT_EQ(format_record(open).substr(0, 18), "generation 2 (3)  ");
     EXPECT_NE(format_record(open).find("eta ?"), std::string::npos);
 }
 
@@ -57,9 +57,9 @@ TEST(Progress, OneLiveLineOnATerminal) {
     p(record(2));
     EXPECT_EQ(count(out.str(), "\n"), 0);
     EXPECT_EQ(count(out.str(), "\r\x1b[2K"), 2);
-    EXPECT_NE(out.str().find("[....................] generation 2/50"), std::string::npos);
+    EXPECT_NE(out.str().find("[....................] generation 1 (2/50)"), std::string::npos);
     p.message("note");   // printed above the live line, which is redrawn
-    EXPECT_NE(out.str().find("\r\x1b[2Knote\n[....................] generation 2/50"), std::string::npos);
+    EXPECT_NE(out.str().find("\r\x1b[2Knote\n[....................] generation 1 (2/50)"), std::string::npos);
     p.finish();
     EXPECT_EQ(out.str().back(), '\n');
     const auto size = out.str().size();

@@ -91,5 +91,27 @@ TEST(HypergpRun, ReplayReproducesTheStoredFitness) {
     fs::remove_all(dir);
 }
 
+// A timeout too short for any evaluation: every job is retried on a fresh
+// worker, then scored as failed. Each step leaves a warning in run.log, and
+// stats.csv counts the failures.
+TEST(HypergpRun, TroubleWithWorkersIsReported) {
+    const auto dir = temp_dir("hgp-trouble");
+    std::string text = tiny_hypergp_settings(2, 2);
+    text.replace(text.find("</Experiment>"), 0, "<workerTimeout>0.000001</workerTimeout>");
+    const auto r = run_settings(dir, "a", text);
+    ASSERT_EQ(r.rc, 0) << r.log;
+    const std::string log = read_text(r.run / "run.log");
+    EXPECT_NE(log.find("job timed out after 0.000001 s; worker replaced, job retried"), std::string::npos) << log;
+    EXPECT_NE(log.find("scored as failed (fitness -1000): job timed out"), std::string::npos) << log;
+    EXPECT_NE(r.log.find("scored as failed"), std::string::npos) << "warnings reach the console even with --quiet";
+    std::istringstream stats(read_text(r.run / "stats.csv"));
+    std::string header, row;
+    std::getline(stats, header);
+    std::getline(stats, row);
+    ASSERT_EQ(header.substr(header.rfind(',') + 1), "failed");
+    EXPECT_GT(std::stoi(row.substr(row.rfind(',') + 1)), 0) << row;
+    fs::remove_all(dir);
+}
+
 } // namespace
 } // namespace cic

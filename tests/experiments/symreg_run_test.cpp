@@ -77,8 +77,11 @@ TEST(SymregRun, CorruptPopulationIsRefusedAndNothingIsWritten) {
     fs::remove_all(dir);
 }
 
-TEST(SymregRun, InterruptWritesACheckpointThenExits) {
-    const auto dir = temp_dir("sr-sigint");
+// Ctrl-C, or the SIGTERM a batch scheduler sends before it kills a job: the
+// generation under way finishes, the checkpoint is written, and cic exits with
+// 128 + the signal number.
+void interrupt_writes_a_checkpoint(int sig, int expected_rc) {
+    const auto dir = temp_dir("sr-signal-" + std::to_string(sig));
     // Big enough that it is still running when the signal arrives.
     write_text(dir / "long.xml", settings(100000, 1));
     const pid_t pid = fork();
@@ -93,7 +96,7 @@ TEST(SymregRun, InterruptWritesACheckpointThenExits) {
               static_cast<char*>(nullptr));
         _exit(127);
     }
-    // Wait for the first checkpoint, then press Ctrl-C.
+    // Wait for the first checkpoint, then send the signal.
     fs::path population;
     int status = 0;
     for (int i = 0; i < 600 && population.empty(); ++i) {
@@ -105,16 +108,21 @@ TEST(SymregRun, InterruptWritesACheckpointThenExits) {
         }
     }
     ASSERT_FALSE(population.empty()) << read_text(dir / "long.log");
-    kill(pid, SIGINT);
+    kill(pid, sig);
     waitpid(pid, &status, 0);
     ASSERT_TRUE(WIFEXITED(status)) << read_text(dir / "long.log");
-    EXPECT_EQ(WEXITSTATUS(status), 130) << read_text(dir / "long.log");
-    EXPECT_NE(read_text(dir / "long.log").find("interrupted"), std::string::npos);
+    EXPECT_EQ(WEXITSTATUS(status), expected_rc) << read_text(dir / "long.log");
+    EXPECT_NE(read_text(dir / "long.log").find(std::string("interrupted by ") + (sig == SIGTERM ? "SIGTERM" : "SIGINT")),
+              std::string::npos);
     const std::string text = read_text(population);
     EXPECT_NE(text.find("</population>"), std::string::npos);   // complete, not half-written
     EXPECT_TRUE(fs::exists(population.parent_path() / "summary.txt"));
     fs::remove_all(dir);
 }
+
+TEST(SymregRun, InterruptWritesACheckpointThenExits) { interrupt_writes_a_checkpoint(SIGINT, 130); }
+
+TEST(SymregRun, SigtermWritesACheckpointThenExits) { interrupt_writes_a_checkpoint(SIGTERM, 143); }
 
 } // namespace
 } // namespace cic

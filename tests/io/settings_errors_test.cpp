@@ -59,7 +59,7 @@ TEST(SettingsErrors, UnknownSectionSuggestsTheNearest) {
 TEST(SettingsErrors, WrongTypeNamesSectionKeyValueAndAllowed) {
     auto m = error_of(gp("<generatedPopulationSize>fifty</generatedPopulationSize>"));
     EXPECT_HAS(m, "bad.xml:3: <GP> generatedPopulationSize = \"fifty\": not an integer "
-                  "(allowed: integer in [2, 10000000])");
+                  "(allowed: integer in [2, 1000000])");
     m = error_of(gp("<generatedPopulationSize>50.5</generatedPopulationSize>"));
     EXPECT_HAS(m, "not a whole number");
     m = error_of(gp("<preventDuplicates>yes</preventDuplicates>"));

@@ -1,5 +1,7 @@
 #pragma once
 // Helpers for end-to-end tests that run the real `cic` binary on a settings file.
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -81,6 +83,41 @@ inline std::string tiny_hypergp_settings(int generations, int workers, const std
   <Control><maximumIterations>)" + std::to_string(generations) + "</maximumIterations>" + extra_control + R"(</Control>
 </settings>
 )";
+}
+
+// The golden HyperGP run: tiny_hypergp_settings with 4 generations and a speed
+// bound so low (1 m/s) that about half the evaluations fail as physics blow-ups.
+inline std::string golden_hypergp_settings(int workers) {
+    std::string s = tiny_hypergp_settings(4, workers);
+    s.replace(s.find("<robot_type>"), 0, "<maxBodySpeed>1</maxBodySpeed>");
+    return s;
+}
+
+// The golden symbolic-regression run: Nguyen-7, 200 individuals, 6 generations.
+inline std::string golden_symreg_settings(int threads) {
+    return R"(<settings>
+  <Experiment><type>symreg</type><seed>11</seed><workers>)" + std::to_string(threads) + R"(</workers></Experiment>
+  <GP><generatedPopulationSize>200</generatedPopulationSize><terminalVariableCount>1</terminalVariableCount>
+      <functions>add sub mul div sin cos</functions><tournament_size>5</tournament_size><elitism>1</elitism></GP>
+  <BloatControl><bloatControlVariant>1</bloatControlVariant></BloatControl>
+  <Control><maximumIterations>6</maximumIterations><minimumFitness>inf</minimumFitness></Control>
+  <SymbolicRegression><target>nguyen-7</target></SymbolicRegression>
+</settings>
+)";
+}
+
+// The hashes of golden_hypergp_settings' and golden_symreg_settings' final
+// population.xml (tests/experiments/golden_test.cpp, tests/app/mpi_test.cpp).
+inline const std::string kGoldenHypergp = "ab3a3e7d29aa37ad";
+inline const std::string kGoldenSymreg = "1267ae7aacf5fb20";
+
+// 64-bit FNV-1a of a file's bytes, as 16 hex digits: the golden hashes.
+inline std::string file_hash(const std::filesystem::path& p) {
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    for (unsigned char c : read_text(p)) h = (h ^ c) * 0x100000001b3ULL;
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
 }
 
 } // namespace cic::testing

@@ -2,8 +2,10 @@
 // The main job: run the experiment the settings describe.
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
+#include "cic/io/population_xml.hpp"
 #include "cic/io/settings.hpp"
 
 namespace cic::app {
@@ -15,8 +17,21 @@ struct RunOptions {
     std::string worker_executable;   // path of the cic binary, for worker processes
 };
 
-// Returns an exit code (0 success, 1 failure). Throws cic::InputError on bad input
-// discovered late (e.g. an incompatible population file).
-int run_experiment(const io::Settings& settings, const RunOptions& options);
+// Everything a run reads, loaded and checked before its folder exists.
+struct PreparedRun {
+    io::Settings settings;
+    std::optional<io::PopulationFile> resume;   // populationXmlLoadFrom, parsed and checked
+};
+
+// Checks every input of a run: the experiment's own (robot file and its
+// joints, dataset; experiments::check_inputs) and the population to resume
+// from (parsed completely, its values checked, and checked against the
+// settings). Throws cic::InputError with file and line; writes nothing.
+// `cic settings FILE` runs the same checks.
+PreparedRun prepare_run(io::Settings settings);
+
+// Returns an exit code: 0 done, 1 failure, 130 interrupted by SIGINT, 143 by
+// SIGTERM (the checkpoint is written first; a second signal ends it at once).
+int run_experiment(PreparedRun run, const RunOptions& options);
 
 } // namespace cic::app

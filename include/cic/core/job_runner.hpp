@@ -13,6 +13,7 @@ struct JobResult {
     std::string output;                 // the worker's reply when ok
     std::string error;                  // why not, when !ok
     int attempts = 0;
+    std::vector<std::string> trouble;   // why each failed attempt failed (a retried job has some)
 };
 
 class JobRunner {
@@ -22,6 +23,8 @@ public:
     virtual std::vector<JobResult> run(const std::vector<std::string>& jobs) = 0;
     // How many jobs can run at once.
     virtual int workers() const = 0;
+    // Trouble not tied to a job since the last call (e.g. a worker replaced while idle).
+    virtual std::vector<std::string> take_notes() { return {}; }
 };
 
 } // namespace cic

@@ -32,6 +32,7 @@ public:
     std::vector<JobResult> run(const std::vector<std::string>& jobs) override;
 
     int workers() const override;
+    std::vector<std::string> take_notes() override;
     int restarts() const;                        // workers replaced so far
     std::vector<int> pids() const;               // for tests (kill one)
 

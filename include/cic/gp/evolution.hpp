@@ -11,6 +11,7 @@
 #include <span>
 #include <string>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "cic/core/rng.hpp"
@@ -55,6 +56,7 @@ struct GenerationRecord {
     int limit = 0;                  // dynamic depth limit (0 when bloat control is off)
     int illegal = 0;
     long evaluations = 0;           // cumulative
+    int failed = 0;                 // evaluations of this generation that failed (physics, worker)
     double wall_seconds = 0;        // since this session started
     double generation_seconds = 0;  // this generation alone
     std::uint64_t best_id = 0;
@@ -91,9 +93,12 @@ public:
     explicit Evaluate(Evaluator& e) : eval_(e) {}
     std::string name() const override { return "evaluate"; }
     void apply(Population& pop, EvolutionState& st) override;
+    // Evaluations marked "failed" since the last call.
+    int take_failed() { return std::exchange(failed_, 0); }
 private:
     Evaluator& eval_;
     std::vector<IndividualPtr> todo_;   // scratch, empty between calls
+    int failed_ = 0;
 };
 
 // Builds the next generation: elitism, then selection + crossover / mutation /

@@ -11,11 +11,12 @@ namespace cic::io {
 
 // The column order of stats.csv (plots and sweeps read it by these names).
 // mean_depth/max_depth measure forests as GP.forestDepth does (what `limit`
-// bounds); the last four give both measures: the sum of the trees' depths and
-// the deepest tree.
+// bounds); the four after wall_seconds give both measures: the sum of the
+// trees' depths and the deepest tree. `failed` counts this generation's
+// evaluations that failed (physics blow-up, crashed or hung worker).
 inline constexpr const char* kStatsColumns =
     "generation,best,mean,median,mean_depth,max_depth,mean_size,max_size,limit,illegal,evaluations,wall_seconds,"
-    "mean_depth_sum,max_depth_sum,mean_depth_max,max_depth_max";
+    "mean_depth_sum,max_depth_sum,mean_depth_max,max_depth_max,failed";
 
 class StatsWriter {
 public:

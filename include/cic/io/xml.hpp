@@ -16,6 +16,11 @@ struct _xmlNode;
 
 namespace cic::io::xml {
 
+// Why XML 1.0 cannot hold `text` ("U+0001 at byte 5", "invalid UTF-8 at byte 3"),
+// or nothing when it can. Writers refuse such text rather than write a file
+// that no reader would take back.
+std::optional<std::string> unholdable(std::string_view text);
+
 // A non-owning handle on one element of a Document (valid while it lives).
 class Node {
 public:
@@ -37,8 +42,9 @@ public:
     // An InputError naming this node's file and line: "FILE:LINE: message".
     InputError error(const std::string& message) const;
 
-    // Building documents.
-    Node add_child(std::string_view element, std::string_view text = {});   // text is escaped
+    // Building documents. Text and values are escaped; text XML cannot hold
+    // (see unholdable) throws std::invalid_argument.
+    Node add_child(std::string_view element, std::string_view text = {});
     Node add_element(std::string_view element);          // no text; for nested elements
     void set_attribute(std::string_view attr, std::string_view value);
     void add_comment(std::string_view comment);          // "--" is replaced to stay valid XML

@@ -24,12 +24,14 @@ SimConfig read_config_text(std::istream& in);
 std::string hexfloat(double v);        // "%a"
 double parse_hexfloat(const std::string& s);   // also accepts decimal, "inf"
 
-// The reply of an evaluation job: fitness (exact), failed flag, failure text.
+// The one reply of every evaluation job (sine, hypergp), whether it ran in a
+// worker process or on an MPI rank: fitness (exact), failed flag, failure text.
 struct EvalReply {
     double fitness = 0.0;
     bool failed = false;
-    std::string failure;
+    std::string failure;   // the rest of the reply (may span lines)
 };
+std::string format_eval_reply(const EvalReply& r);
 std::string format_eval_reply(const EvalResult& r);
 EvalReply parse_eval_reply(const std::string& text);
 

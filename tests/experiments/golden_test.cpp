@@ -1,0 +1,44 @@
+// Golden hashes: the final population files of two short, fixed-seed runs.
+// A HyperGP run in which about half the evaluations fail as physics blow-ups
+// gives the same bytes with 1 and 2 worker processes (and with 3 MPI ranks,
+// tests/app/mpi_test.cpp); a symbolic-regression run gives the same bytes with
+// 1 and 2 threads. A change that alters results must update these hashes on
+// purpose and say why in its commit message.
+#include <gtest/gtest.h>
+
+#include "support/run_helpers.hpp"
+
+namespace cic {
+namespace {
+
+using namespace cic::testing;
+namespace fs = std::filesystem;
+
+// Runs `settings(1)` and `settings(2)` (workers or threads); both final
+// population files must hash to `want`. Returns the 1-worker run folder.
+fs::path expect_golden(const std::string& name, std::string (*settings)(int), const std::string& want) {
+    const auto dir = temp_dir("golden-" + name);
+    const auto one = run_settings(dir, "one", settings(1));
+    const auto two = run_settings(dir, "two", settings(2));
+    EXPECT_EQ(one.rc, 0) << one.log;
+    EXPECT_EQ(two.rc, 0) << two.log;
+    EXPECT_EQ(file_hash(one.run / "population.xml"), want);
+    EXPECT_EQ(file_hash(two.run / "population.xml"), want);
+    return one.run;
+}
+
+TEST(Golden, HypergpWithPhysicsFailures) {
+    const fs::path run = expect_golden("hgp", golden_hypergp_settings, kGoldenHypergp);
+    EXPECT_NE(read_text(run / "populations" / "gen-0000.xml").find("key=\"failed\">physics blow-up"),
+              std::string::npos)
+        << "no forced failure";
+    fs::remove_all(run.parent_path().parent_path());
+}
+
+TEST(Golden, SymbolicRegression) {
+    const fs::path run = expect_golden("sr", golden_symreg_settings, kGoldenSymreg);
+    fs::remove_all(run.parent_path().parent_path());
+}
+
+} // namespace
+} // namespace cic
