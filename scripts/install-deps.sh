@@ -11,9 +11,11 @@ PACKAGES=(
   libode-dev libeigen3-dev libxml2-dev libcli11-dev libfmt-dev
   libopenscenegraph-dev libopenmpi-dev openmpi-bin
   # tests and benchmarks
-  libgtest-dev libgmock-dev googletest libbenchmark-dev libxml2-utils valgrind
+  libgtest-dev libgmock-dev googletest libbenchmark-dev libxml2-utils valgrind python3-scipy
   # plots, POV-Ray scenes and videos, offscreen viewer screenshots
   gnuplot-nox povray ffmpeg xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0
+  # fuzzing (scripts/fuzz.sh): clang's libFuzzer runtime and a symbolizer for reports
+  clang libclang-rt-14-dev llvm
   # DEAP comparison (scripts/compare-deap.sh)
   python3 python3-deap
 )

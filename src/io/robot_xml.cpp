@@ -1,6 +1,7 @@
 // Reading and writing robot files (format in robot_xml.hpp and docs/simulator.md).
 #include "cic/io/robot_xml.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <map>
 
@@ -77,6 +78,25 @@ sim::RobotSpec read_robot(const xml::Document& doc) {
     return r;
 }
 
+// What robot_to_xml writes as centre="...", so that read_robot finds the same
+// module again. read_robot trims the attribute, looks it up among the module
+// names first and only then reads it as an index. So a name is written only
+// when it has no surrounding whitespace (" a" would come back as "a" and match
+// nothing), and an index gets leading zeros while its digits spell another
+// module's name ("0" when a module is named "0"). Both were round-trip
+// failures of the fuzz_robot check (fuzz/fuzz_checks.hpp); the reproducers are
+// in tests/io/fuzz_regression_test.cpp.
+std::string centre_reference(const sim::RobotSpec& robot) {
+    const std::string& name = robot.modules[static_cast<std::size_t>(robot.centre)].name;
+    if (!name.empty() && xml::trim(name) == name) return name;
+    auto is_a_name = [&](const std::string& s) {
+        return std::any_of(robot.modules.begin(), robot.modules.end(), [&](const sim::Module& m) { return m.name == s; });
+    };
+    std::string ref = std::to_string(robot.centre);
+    while (is_a_name(ref)) ref.insert(0, "0");
+    return ref;
+}
+
 } // namespace
 
 sim::RobotSpec read_robot_file(const std::filesystem::path& path) {
@@ -92,8 +112,7 @@ std::string robot_to_xml(const sim::RobotSpec& robot) {
     xml::Document doc = xml::Document::create("robot");
     xml::Node root = doc.root();
     root.set_attribute("name", robot.name);
-    const sim::Module& centre = robot.modules[static_cast<std::size_t>(robot.centre)];
-    root.set_attribute("centre", centre.name.empty() ? std::to_string(robot.centre) : centre.name);
+    root.set_attribute("centre", centre_reference(robot));
     root.set_attribute("preferred", sim::to_string(robot.preferred));
     for (const sim::Module& m : robot.modules) {
         xml::Node n = root.add_element("module");
