@@ -131,7 +131,9 @@ int main(int argc, char** argv) {
     add_worker_command(app, ctx);
     add_render_command(app, ctx);
     add_plot_command(app, ctx);
+    add_compare_command(app, ctx);
     add_trace_command(app, ctx);
+    add_sweep_command(app, ctx);
 #ifdef CIC_HAVE_VIEWER
     add_view_command(app, ctx);
 #endif

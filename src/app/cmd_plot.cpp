@@ -1,4 +1,4 @@
-// `cic plot`: fitness, depth and size per generation from run folders, or a network trace.
+// `cic plot`: fitness, depth and size per generation from run folders or a study, or a network trace.
 #include <fmt/format.h>
 
 #include <iostream>
@@ -21,12 +21,15 @@ void add_plot_command(CLI::App& app, CommandContext& ctx) {
         double from = -std::numeric_limits<double>::infinity();
         double to = std::numeric_limits<double>::infinity();
         int width = 0, height = 0;
+        bool median = false;
+        bool include_unfinished = false;
     };
     auto opts = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand(
         "plot", "Plot best/mean fitness, depth and size per generation of run folders (folders named NAME-NNN "
-                "are grouped by NAME: mean curve, +-1 sd band), or a trace CSV with --trace");
-    cmd->add_option("runs", opts->runs, "run folders (each holds stats.csv)");
+                "are grouped by NAME: mean curve, +-1 sd band) or of a study folder from cic sweep (one colour per "
+                "configuration), or a trace CSV with --trace");
+    cmd->add_option("runs", opts->runs, "run folders (each holds stats.csv), or one study folder (holds index.csv)");
     cmd->add_option("--trace", opts->trace, "plot this trace CSV (from cic trace) instead");
     cmd->add_option("--out", opts->out, "output .svg or .png (default: plot.svg, or trace.svg with --trace)");
     cmd->add_option("--title", opts->title, "figure title");
@@ -35,6 +38,9 @@ void add_plot_command(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--to", opts->to, "with --trace: end time, s");
     cmd->add_option("--width", opts->width, "pixels")->check(CLI::PositiveNumber);
     cmd->add_option("--height", opts->height, "pixels")->check(CLI::PositiveNumber);
+    cmd->add_flag("--median", opts->median, "with a study: median curves with Q1..Q3 bands (default: mean, +-1 sd)");
+    cmd->add_flag("--include-unfinished", opts->include_unfinished,
+                  "with a study: also runs whose status is not done (default: done runs only)");
     cmd->callback([opts, &ctx] {
         run_guarded(ctx, "plot", [&] {
             if (opts->trace.empty() == opts->runs.empty())
@@ -50,6 +56,31 @@ void add_plot_command(CLI::App& app, CommandContext& ctx) {
                 const std::string out = opts->out.empty() ? "trace.svg" : opts->out;
                 plot_trace(opts->trace, out, plot);
                 if (!ctx.quiet) std::cerr << "wrote " << out << '\n';
+                return 0;
+            }
+            const bool study = opts->runs.size() == 1 && is_study_folder(opts->runs[0]);
+            if (!study) {
+                for (const auto& dir : opts->runs)
+                    if (is_study_folder(dir))
+                        throw InputError("a study folder is plotted on its own (give one study, or run folders)",
+                                         dir);
+                if (opts->median || opts->include_unfinished)
+                    throw InputError("--median and --include-unfinished apply to a study folder (holds index.csv)");
+            } else {
+                StudyPlotOptions plot;
+                plot.title = opts->title;
+                plot.width = opts->width;
+                plot.height = opts->height;
+                plot.median = opts->median;
+                plot.include_unfinished = opts->include_unfinished;
+                const std::string out = opts->out.empty() ? "plot.svg" : opts->out;
+                plot_study(opts->runs[0], out, plot);
+                if (!ctx.quiet) {
+                    const StudyIndex index = read_study_index(opts->runs[0]);
+                    for (const auto& g : group_study(index, opts->include_unfinished))
+                        std::cerr << fmt::format("{}: {} run(s)\n", g.config, g.runs.size());
+                    std::cerr << "wrote " << out << '\n';
+                }
                 return 0;
             }
             PlotOptions plot;

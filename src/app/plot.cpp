@@ -164,6 +164,80 @@ void plot_runs(const std::vector<fs::path>& run_dirs, const fs::path& out_file, 
     render(options.gnuplot, scratch.path(), script, out_file);
 }
 
+void plot_study(const fs::path& study, const fs::path& out_file, const StudyPlotOptions& options) {
+    check_output_folder(out_file);
+    const StudyIndex index = read_study_index(study);
+    struct Series {
+        std::string label;
+        std::size_t runs = 0;
+        std::string data;   // gnuplot-quoted data file
+    };
+    std::vector<Series> series;
+    ScratchDir scratch;
+    for (const auto& group : group_study(index, options.include_unfinished)) {
+        std::vector<std::vector<StatsRow>> runs;
+        for (const StudyRun* run : group.runs) {
+            auto rows = read_study_run_stats(index, *run);
+            if (!rows.empty()) runs.push_back(std::move(rows));
+        }
+        if (runs.empty()) continue;
+        std::string text = "# generation runs then centre low high of: best mean mean_depth max_depth\n";
+        for (const auto& g : summarise_bands(runs, options.median)) {
+            text += fmt::format("{} {}", g.generation, g.runs);
+            for (const Band& b : {g.best, g.mean, g.mean_depth, g.max_depth})
+                text += fmt::format(" {:.10g} {:.10g} {:.10g}", b.centre, b.low, b.high);
+            text += '\n';
+        }
+        const fs::path data = scratch.path() / fmt::format("config{}.dat", series.size());
+        write_file(data, text);
+        series.push_back({group.config, runs.size(), quote(data.string())});
+    }
+    if (series.empty())
+        throw InputError(options.include_unfinished ? "the study has no run with statistics yet"
+                                                    : "the study has no done run to plot (--include-unfinished "
+                                                      "also plots the others)",
+                         index.file.string());
+
+    auto colour = [](std::size_t k) { return fmt::format("rgb '{}'", kColours[k % kColours.size()]); };
+    auto label = [&](std::size_t k) {
+        return fmt::format("{} ({} run{})", series[k].label, series[k].runs, series[k].runs == 1 ? "" : "s");
+    };
+    const std::string band_name = options.median ? "median, IQR band" : "mean, +-1 sd band";
+    // Centre column `col`, band columns col+1 (low) and col+2 (high).
+    auto panel = [&](const std::string& title, const char* ylabel, int col) {
+        std::vector<std::string> items;
+        for (std::size_t k = 0; k < series.size(); ++k) {
+            if (series[k].runs > 1)
+                items.push_back(fmt::format("{} using 1:{}:{} with filledcurves fs transparent solid 0.18 noborder "
+                                            "lc {} notitle",
+                                            series[k].data, col + 1, col + 2, colour(k)));
+            items.push_back(fmt::format("{} using 1:{} with lines lw 2 lc {} title {}", series[k].data, col,
+                                        colour(k), quote(label(k))));
+        }
+        return fmt::format("set title {}\nset ylabel {}\nplot {}\n", quote(title + " (" + band_name + ")"),
+                           quote(ylabel), fmt::join(items, ", \\\n  "));
+    };
+
+    const int width = options.width > 0 ? options.width : 1200;
+    const int height = options.height > 0 ? options.height : 900;
+    std::string title = options.title;
+    if (title.empty()) {
+        fs::path p = study;
+        if (!p.has_filename()) p = p.parent_path();
+        title = "study " + fs::weakly_canonical(p).filename().string();
+    }
+    std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
+    script += fmt::format("set output {}\n", quote(out_file.string()));
+    script += fmt::format("set multiplot layout 2,2 title {}\n", quote(title));
+    script += "set grid\nset key left top box opaque\nset xlabel 'generation'\nset autoscale xfix\n";
+    script += panel("best fitness", "fitness", 3);
+    script += panel("mean fitness", "fitness", 6);
+    script += panel("max depth", "depth", 12);
+    script += panel("mean depth", "depth", 9);
+    script += "unset multiplot\nset output\n";
+    render(options.gnuplot, scratch.path(), script, out_file);
+}
+
 void plot_trace(const fs::path& trace_csv, const fs::path& out_file, const TracePlotOptions& options) {
     check_output_folder(out_file);
     if (!(options.from < options.to)) throw InputError("plot: --from must be before --to");

@@ -1,4 +1,5 @@
-// The data side of plotting: stats.csv reading, run grouping and per-generation summaries.
+// The data side of plotting: stats.csv and study index.csv reading, run grouping
+// and per-generation summaries.
 #include <fmt/format.h>
 
 #include <charconv>
@@ -8,6 +9,7 @@
 #include <regex>
 
 #include "cic/app/plot.hpp"
+#include "cic/app/statistics.hpp"
 #include "cic/core/error.hpp"
 
 namespace cic::app {
@@ -24,6 +26,49 @@ std::vector<std::string> split_csv(const std::string& line) {
         out.push_back(std::move(cell));
         if (comma == std::string::npos) return out;
         start = comma + 1;
+    }
+}
+
+// One line of a CSV file with RFC 4180 quoting ("a,b" and "say ""hi""");
+// unquoted cells are trimmed of blanks, a trailing \r is dropped.
+std::vector<std::string> split_quoted_csv(std::string line, const std::string& file, int line_no) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::vector<std::string> out;
+    std::size_t i = 0;
+    for (;;) {
+        std::string cell;
+        while (i < line.size() && line[i] == ' ') ++i;
+        if (i < line.size() && line[i] == '"') {
+            ++i;
+            for (;;) {
+                if (i >= line.size()) throw InputError("a quoted cell has no closing quote", file, line_no);
+                if (line[i] == '"') {
+                    if (i + 1 < line.size() && line[i + 1] == '"') {
+                        cell += '"';
+                        i += 2;
+                        continue;
+                    }
+                    ++i;
+                    break;
+                }
+                cell += line[i++];
+            }
+            while (i < line.size() && line[i] == ' ') ++i;
+            if (i < line.size() && line[i] != ',')
+                throw InputError("text after a quoted cell's closing quote", file, line_no);
+        } else {
+            const std::size_t comma = line.find(',', i);
+            cell = line.substr(i, comma == std::string::npos ? std::string::npos : comma - i);
+            while (!cell.empty() && cell.back() == ' ') cell.pop_back();
+            i = comma == std::string::npos ? line.size() : comma;
+        }
+        out.push_back(std::move(cell));
+        if (i >= line.size()) return out;
+        ++i;   // the comma
+        if (i == line.size()) {   // a trailing comma: one more empty cell
+            out.emplace_back();
+            return out;
+        }
     }
 }
 
@@ -110,6 +155,139 @@ std::vector<RunGroup> group_runs(const std::vector<std::filesystem::path>& run_d
         it->runs.push_back(dir);
     }
     return groups;
+}
+
+bool is_study_folder(const std::filesystem::path& path) {
+    std::error_code ec;
+    return std::filesystem::is_directory(path, ec) && std::filesystem::is_regular_file(path / "index.csv", ec);
+}
+
+StudyIndex read_study_index(const std::filesystem::path& study) {
+    StudyIndex index;
+    index.folder = study;
+    index.file = study / "index.csv";
+    const std::string file = index.file.string();
+    std::ifstream in(index.file);
+    if (!in) throw InputError("cannot read the study index (is this a study folder from cic sweep?)", file);
+    std::string line;
+    if (!std::getline(in, line)) throw InputError("empty study index (expected a header line)", file, 1);
+    const auto header = split_quoted_csv(line, file, 1);
+    auto column = [&](std::string_view name) {
+        const auto it = std::find(header.begin(), header.end(), name);
+        if (it == header.end())
+            throw InputError(fmt::format("header has no column '{}' (expected run_dir,config,<varied keys...>,seed,"
+                                         "status,final_best,generations,evaluations,wall_seconds)",
+                                         name),
+                             file, 1);
+        if (std::find(it + 1, header.end(), name) != header.end())
+            throw InputError(fmt::format("header has column '{}' twice", name), file, 1);
+        return static_cast<std::size_t>(it - header.begin());
+    };
+    const std::size_t c_run = column("run_dir"), c_config = column("config"), c_seed = column("seed"),
+                      c_status = column("status"), c_best = column("final_best"),
+                      c_generations = column("generations"), c_evaluations = column("evaluations"),
+                      c_wall = column("wall_seconds");
+    if (c_seed < c_config) throw InputError("header has 'seed' before 'config'", file, 1);
+    // The varied keys: the other columns between config and seed.
+    const std::array<std::size_t, 8> known = {c_run, c_config, c_seed, c_status,
+                                              c_best, c_generations, c_evaluations, c_wall};
+    std::vector<std::size_t> varied;
+    for (std::size_t c = c_config + 1; c < c_seed; ++c) {
+        if (std::find(known.begin(), known.end(), c) != known.end()) continue;
+        if (header[c].empty()) throw InputError(fmt::format("header column {} has no name", c + 1), file, 1);
+        index.varied_keys.push_back(header[c]);
+        varied.push_back(c);
+    }
+
+    int line_no = 1;
+    while (std::getline(in, line)) {
+        ++line_no;
+        if (line.empty() || line == "\r") continue;
+        const auto cells = split_quoted_csv(line, file, line_no);
+        if (cells.size() != header.size())
+            throw InputError(fmt::format("{} values, expected {} (one per header column)", cells.size(),
+                                         header.size()),
+                             file, line_no);
+        StudyRun run;
+        run.line = line_no;
+        run.run_dir = cells[c_run];
+        run.config = cells[c_config];
+        run.seed = cells[c_seed];
+        run.status = cells[c_status];
+        if (run.run_dir.empty()) throw InputError("column 'run_dir' is empty", file, line_no);
+        if (run.config.empty()) throw InputError("column 'config' is empty", file, line_no);
+        if (std::find(kStudyStatuses.begin(), kStudyStatuses.end(), run.status) == kStudyStatuses.end())
+            throw InputError(fmt::format("column 'status': '{}' is not one of {}", run.status,
+                                         fmt::join(kStudyStatuses, ", ")),
+                             file, line_no);
+        for (std::size_t c : varied) run.values.push_back(cells[c]);
+        auto number = [&](std::size_t c) -> std::optional<double> {
+            const std::string& cell = cells[c];
+            if (cell.empty()) return std::nullopt;
+            double v = 0;
+            const auto res = std::from_chars(cell.data(), cell.data() + cell.size(), v);
+            if (res.ec != std::errc() || res.ptr != cell.data() + cell.size() || std::isnan(v))
+                throw InputError(fmt::format("column '{}': '{}' is not a number", header[c], cell), file, line_no);
+            return v;
+        };
+        run.final_best = number(c_best);
+        run.generations = number(c_generations);
+        run.evaluations = number(c_evaluations);
+        run.wall_seconds = number(c_wall);
+        index.runs.push_back(std::move(run));
+    }
+    return index;
+}
+
+std::vector<StudyGroup> group_study(const StudyIndex& index, bool include_unfinished) {
+    std::vector<StudyGroup> groups;
+    for (const auto& run : index.runs) {
+        auto it = std::find_if(groups.begin(), groups.end(), [&](const StudyGroup& g) { return g.config == run.config; });
+        if (it == groups.end()) {
+            groups.push_back({run.config, run.values, {}});
+            it = groups.end() - 1;
+        }
+        if (include_unfinished || run.status == "done") it->runs.push_back(&run);
+    }
+    return groups;
+}
+
+std::vector<StatsRow> read_study_run_stats(const StudyIndex& index, const StudyRun& run) {
+    const std::filesystem::path file = index.run_path(run) / "stats.csv";
+    if (run.status == "done") return read_stats_csv(file);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) return {};
+    try {
+        return read_stats_csv(file);
+    } catch (const InputError&) {
+        return {};   // header only, or a line being written right now
+    }
+}
+
+std::vector<GenerationBands> summarise_bands(const std::vector<std::vector<StatsRow>>& runs, bool median) {
+    std::map<int, std::vector<const StatsRow*>> by_generation;
+    for (const auto& run : runs)
+        for (const auto& row : run) by_generation[row.generation].push_back(&row);
+    std::vector<GenerationBands> out;
+    for (const auto& [generation, rows] : by_generation) {
+        auto band = [&](double StatsRow::*field) {
+            std::vector<double> v;
+            for (const StatsRow* r : rows)
+                if (!std::isnan(r->*field)) v.push_back(r->*field);
+            if (v.empty()) return Band{NAN, NAN, NAN};
+            const stats::Descriptive d = stats::describe(v);
+            return median ? Band{d.median, d.q1, d.q3} : Band{d.mean, d.mean - d.sd, d.mean + d.sd};
+        };
+        GenerationBands g;
+        g.generation = generation;
+        g.runs = static_cast<int>(rows.size());
+        g.best = band(&StatsRow::best);
+        g.mean = band(&StatsRow::mean);
+        g.mean_depth = band(&StatsRow::mean_depth);
+        g.max_depth = band(&StatsRow::max_depth);
+        out.push_back(g);
+    }
+    return out;
 }
 
 std::vector<GenerationSummary> summarise(const std::vector<std::vector<StatsRow>>& runs) {

@@ -200,7 +200,9 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
                     workers == 1 ? "" : "s", opt.run_dir.string()));
     if (!mpi_note.empty()) say(mpi_note);
 
-    io::StatsWriter stats(opt.run_dir / "stats.csv");
+    io::StatsWriter stats = opt.continue_in_place && start
+        ? io::StatsWriter(opt.run_dir / "stats.csv", start->iteration)
+        : io::StatsWriter(opt.run_dir / "stats.csv");
     fs::create_directories(opt.run_dir / "populations");
 
     gp::StopConditions stop{s.control.maximum_iterations, s.control.minimum_fitness};

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "cic/io/xml.hpp"
+
 namespace cic::io {
 
 std::string to_csv_row(const gp::GenerationRecord& r) {
@@ -17,6 +19,23 @@ std::string to_csv_row(const gp::GenerationRecord& r) {
 StatsWriter::StatsWriter(const std::filesystem::path& path) : path_(path), out_(path) {
     if (!out_) throw std::runtime_error(path.string() + ": cannot write statistics file");
     out_ << kStatsColumns << '\n' << std::flush;
+}
+
+StatsWriter::StatsWriter(const std::filesystem::path& path, int through) : path_(path) {
+    std::string kept;
+    {
+        std::ifstream in(path);
+        std::string line;
+        if (std::getline(in, line)) kept = line + '\n';
+        while (std::getline(in, line)) {
+            int generation = -1;
+            if (std::sscanf(line.c_str(), "%d,", &generation) == 1 && generation <= through) kept += line + '\n';
+        }
+    }
+    if (kept.empty()) kept = std::string(kStatsColumns) + '\n';
+    xml::write_file_atomically(path, kept);
+    out_.open(path, std::ios::app);
+    if (!out_) throw std::runtime_error(path.string() + ": cannot write statistics file");
 }
 
 void StatsWriter::write(const gp::GenerationRecord& r) {

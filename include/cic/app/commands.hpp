@@ -16,7 +16,9 @@ void add_simulate_command(CLI::App& app, CommandContext& ctx);   // cmd_simulate
 void add_worker_command(CLI::App& app, CommandContext& ctx);     // cmd_worker.cpp
 void add_render_command(CLI::App& app, CommandContext& ctx);     // cmd_render.cpp
 void add_plot_command(CLI::App& app, CommandContext& ctx);       // cmd_plot.cpp
+void add_compare_command(CLI::App& app, CommandContext& ctx);    // cmd_compare.cpp
 void add_trace_command(CLI::App& app, CommandContext& ctx);      // cmd_trace.cpp
+void add_sweep_command(CLI::App& app, CommandContext& ctx);      // cmd_sweep.cpp
 #ifdef CIC_HAVE_VIEWER
 void add_view_command(CLI::App& app, CommandContext& ctx);       // src/viz/cmd_view.cpp
 #endif

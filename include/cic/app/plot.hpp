@@ -5,6 +5,7 @@
 #include <array>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,6 +51,65 @@ struct GenerationSummary {
 };
 std::vector<GenerationSummary> summarise(const std::vector<std::vector<StatsRow>>& runs);
 
+// A study folder (written by `cic sweep`): STUDY/index.csv lists one run per line,
+//   run_dir,config,<varied key columns...>,seed,status,final_best,generations,evaluations,wall_seconds
+// with run_dir relative to STUDY and status one of pending, running, done,
+// interrupted, failed. Cells holding a comma or a double quote are quoted
+// ("..." with "" for a quote).
+inline constexpr std::array<std::string_view, 5> kStudyStatuses = {"pending", "running", "done", "interrupted",
+                                                                   "failed"};
+struct StudyRun {
+    std::string run_dir;                  // as written: relative to the study folder
+    std::string config;
+    std::vector<std::string> values;      // of the varied keys, in index order
+    std::string seed;
+    std::string status;
+    std::optional<double> final_best;     // empty cells stay empty
+    std::optional<double> generations, evaluations, wall_seconds;
+    int line = 0;                         // line in index.csv
+};
+struct StudyIndex {
+    std::filesystem::path folder;
+    std::filesystem::path file;           // folder / "index.csv"
+    std::vector<std::string> varied_keys; // the columns between config and seed
+    std::vector<StudyRun> runs;           // in file order
+    std::filesystem::path run_path(const StudyRun& run) const { return folder / run.run_dir; }
+};
+// A folder that holds an index.csv.
+bool is_study_folder(const std::filesystem::path& path);
+// Reads STUDY/index.csv; columns are found by name. Throws cic::InputError with
+// the file and line: missing file or column, a wrong number of cells, an unknown
+// status, a non-numeric number cell, an empty run_dir or config.
+StudyIndex read_study_index(const std::filesystem::path& study);
+
+// Configurations of a study in order of first appearance, with their runs
+// (status done only unless include_unfinished).
+struct StudyGroup {
+    std::string config;
+    std::vector<std::string> values;      // the first run's varied key values
+    std::vector<const StudyRun*> runs;
+};
+std::vector<StudyGroup> group_study(const StudyIndex& index, bool include_unfinished);
+
+// The stats.csv rows of one run of a study. A done run's stats.csv must read
+// (read_stats_csv's errors); for any other status a missing, header-only or
+// half-written file gives no rows.
+std::vector<StatsRow> read_study_run_stats(const StudyIndex& index, const StudyRun& run);
+
+// Per generation over runs: a centre with a band for best and mean fitness and
+// mean and max depth. Mean with mean +- sd (sd with n-1; 0 for one run), or with
+// `median` the median with Q1..Q3 (numpy's linear quantiles, statistics.hpp).
+// Generations that only some runs reached use those runs.
+struct Band {
+    double centre = 0, low = 0, high = 0;
+};
+struct GenerationBands {
+    int generation = 0;
+    int runs = 0;
+    Band best, mean, mean_depth, max_depth;
+};
+std::vector<GenerationBands> summarise_bands(const std::vector<std::vector<StatsRow>>& runs, bool median);
+
 struct PlotOptions {
     std::string gnuplot = "gnuplot";   // executable, looked up on PATH
     std::string title;                 // figure title; empty = none
@@ -63,6 +123,18 @@ struct PlotOptions {
 // (its message is included).
 void plot_runs(const std::vector<std::filesystem::path>& run_dirs, const std::filesystem::path& out_file,
                const PlotOptions& options = {});
+
+// A study: one colour per configuration, four panels (best fitness, mean
+// fitness, max depth, mean depth), each a centre line with a band (see
+// summarise_bands). Runs are those group_study(index, include_unfinished) keeps
+// that have a stats.csv with rows; a configuration without any is left out.
+// Throws cic::InputError when the study has no run to plot.
+struct StudyPlotOptions : PlotOptions {
+    bool median = false;               // median and IQR instead of mean +- sd
+    bool include_unfinished = false;   // also runs whose status is not done
+};
+void plot_study(const std::filesystem::path& study, const std::filesystem::path& out_file,
+                const StudyPlotOptions& options = {});
 
 struct TracePlotOptions : PlotOptions {
     std::vector<std::string> joints;                                // empty = all joints

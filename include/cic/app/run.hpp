@@ -15,6 +15,9 @@ struct RunOptions {
     bool quiet = false;
     bool verbose = false;
     std::string worker_executable;   // path of the cic binary, for worker processes
+    // Resuming in the run's own folder (a sweep task): stats.csv keeps its rows up
+    // to the checkpoint's generation and grows from there, instead of starting anew.
+    bool continue_in_place = false;
 };
 
 // Everything a run reads, loaded and checked before its folder exists.

@@ -21,6 +21,10 @@ inline constexpr const char* kStatsColumns =
 class StatsWriter {
 public:
     explicit StatsWriter(const std::filesystem::path& path);   // throws std::runtime_error
+    // Continues an existing stats.csv (a run resumed in its own folder): keeps the
+    // header and the rows up to generation `through`, drops later ones (written
+    // after the checkpoint the run resumes from), then appends.
+    StatsWriter(const std::filesystem::path& path, int through);
     void write(const gp::GenerationRecord& r);
 private:
     std::filesystem::path path_;

@@ -1,0 +1,80 @@
+#pragma once
+// Studies: a sweep file names a base settings file, the keys to vary (a full
+// grid) and/or named variants, and how many repeats with which seeds. Every
+// (configuration, seed) is a task with its own run folder under one study
+// folder; a task is resumable in place, so a sweep can be interrupted, rerun,
+// or run as a Slurm job array with the same command (docs/cluster.md).
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cic::app {
+
+// How each repeat's seed follows from <repeats firstSeed="F" count="R">:
+// same: repeat r of every configuration has seed F + r (paired: configurations
+// meet the same random starts); distinct: configuration c gets F + c*R + r.
+enum class SeedRule { Same, Distinct };
+
+struct SweepConfig {
+    std::string name;                                        // folder-safe, unique
+    std::vector<std::pair<std::string, std::string>> varied; // Section.key -> value (grid, then "variant")
+    std::vector<std::string> overrides;                      // Section.key=value for this configuration
+};
+
+struct SweepTask {
+    std::size_t index = 0;        // 0..tasks-1: seed-major, so a partial study covers every configuration
+    std::size_t config = 0;
+    int repeat = 0;
+    std::uint64_t seed = 0;
+    std::filesystem::path run_dir;   // relative to the study folder: runs/CONFIG/sSEED
+};
+
+struct SweepPlan {
+    std::filesystem::path file;                // the sweep file (absolute)
+    std::string name;
+    std::filesystem::path base;                // base settings file (absolute)
+    std::vector<std::string> common;           // overrides for every run
+    std::vector<std::string> varied_keys;      // index.csv columns between config and seed
+    std::vector<SweepConfig> configs;
+    int repeats = 1;
+    std::uint64_t first_seed = 1;
+    SeedRule rule = SeedRule::Same;
+    std::filesystem::path study;               // output folder (absolute)
+
+    std::vector<SweepTask> tasks() const;
+    // Every --set of a task: common, the configuration's, then its seed.
+    std::vector<std::string> overrides(const SweepTask& task) const;
+};
+
+// Reads and checks a sweep file (format in docs/cluster.md, schema
+// settings/cic-sweep.xsd); `output` (if not empty) replaces its <output>.
+// Throws cic::InputError with file and line.
+SweepPlan read_sweep_file(const std::filesystem::path& file, const std::filesystem::path& output = {});
+
+// Where a task stands, from its run folder alone.
+enum class TaskStatus { Pending, Running, Done, Interrupted, Failed };
+std::string to_string(TaskStatus s);
+
+struct TaskState {
+    TaskStatus status = TaskStatus::Pending;
+    std::string final_best;       // last generation's best, as written in stats.csv
+    int generations = 0;
+    long evaluations = 0;
+    double wall_seconds = 0;      // summed over the sessions that ran it
+};
+TaskState task_state(const SweepPlan& plan, const SweepTask& task);
+
+// Rewrites STUDY/index.csv (atomically, under a lock shared by every task):
+// run_dir,config,<varied keys>,seed,status,final_best,generations,evaluations,wall_seconds
+void write_index(const SweepPlan& plan);
+
+// Runs one task in its folder: skipped when done, resumed in place from its
+// checkpoint when one exists, started afresh otherwise. `workers` > 0 sets
+// Experiment.workers. Returns cic's exit code (0, 1, 2, 130, 143); a task
+// already running elsewhere (its folder is locked) returns 0 with a note.
+int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool quiet,
+             const std::string& executable);
+
+} // namespace cic::app

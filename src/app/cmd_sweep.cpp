@@ -1,0 +1,246 @@
+// `cic sweep FILE`: runs every (configuration, seed) of a sweep file as its own
+// run folder under one study folder, N at a time; or writes a Slurm job array
+// that runs the same resumable command per task (docs/cluster.md).
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <map>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "cic/app/command_guard.hpp"
+#include "cic/app/commands.hpp"
+#include "cic/app/run.hpp"
+#include "cic/app/sweep.hpp"
+#include "cic/core/process_pool.hpp"
+#include "cic/io/settings_io.hpp"
+#include "cic/io/xml.hpp"
+
+namespace cic::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SweepOptions {
+    std::string file;
+    std::string output;
+    int jobs = 1;
+    int workers = 0;      // 0: cores / jobs
+    long task = -1;       // >= 0: run this one task (Slurm array tasks, and the local runner's children)
+    bool dry_run = false;
+    bool slurm = false;
+};
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+extern "C" void on_sweep_signal(int sig) {
+    if (g_stop_signal == 0) g_stop_signal = sig;
+}
+
+std::string self_path() {
+    std::error_code ec;
+    const fs::path p = fs::read_symlink("/proc/self/exe", ec);
+    return ec ? std::string("cic") : p.string();
+}
+
+// Loads and checks the settings of every configuration (seeds change no input)
+// before anything is written.
+void check_every_configuration(const SweepPlan& plan) {
+    std::vector<bool> seen(plan.configs.size());
+    for (const SweepTask& t : plan.tasks()) {
+        if (seen[t.config]) continue;
+        seen[t.config] = true;
+        try {
+            prepare_run(io::load_settings(plan.base, plan.overrides(t)));
+        } catch (const InputError& e) {
+            throw InputError(fmt::format("configuration {} of {}: {}", plan.configs[t.config].name,
+                                         plan.file.string(), e.what()));
+        }
+    }
+}
+
+std::vector<std::string> task_argv(const SweepPlan& plan, const SweepTask& t, int workers) {
+    return {self_path(), "--quiet",  "sweep", plan.file.string(), "--task", std::to_string(t.index), "--workers",
+            std::to_string(workers), "--output", plan.study.string()};
+}
+
+std::string shell_words(const std::vector<std::string>& argv) {
+    std::string out;
+    for (const auto& a : argv) {
+        const bool plain = a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./=:") ==
+                           std::string::npos;
+        out += (out.empty() ? "" : " ") + (plain ? a : "'" + a + "'");
+    }
+    return out;
+}
+
+int dry_run(const SweepPlan& plan, int workers) {
+    fmt::print("sweep {} ({}): {} configurations x {} repeats = {} runs; base {}\nstudy {}\n", plan.name,
+               plan.file.string(), plan.configs.size(), plan.repeats, plan.tasks().size(), plan.base.string(),
+               plan.study.string());
+    std::map<std::string, int> counts;
+    for (const SweepTask& t : plan.tasks()) {
+        const TaskStatus st = task_state(plan, t).status;
+        ++counts[to_string(st)];
+        std::string sets;
+        for (const auto& s : plan.overrides(t)) sets += " --set " + s;
+        fmt::print("{:>5} {:<12} {} {}\n", t.index, to_string(st), t.run_dir.string(),
+                   st == TaskStatus::Done ? std::string("(skipped)") : "cic --settings " + plan.base.string() + sets);
+    }
+    std::string summary;
+    for (const auto& [k, n] : counts) summary += fmt::format("{}{} {}", summary.empty() ? "" : ", ", n, k);
+    fmt::print("{}; {} worker process{} per run\n", summary, workers, workers == 1 ? "" : "es");
+    return 0;
+}
+
+int write_slurm_script(const SweepOptions& o, const SweepPlan& plan, int workers) {
+    const auto tasks = plan.tasks();
+    fs::create_directories(plan.study / "slurm");
+    std::vector<std::string> argv = task_argv(plan, tasks.front(), workers);
+    argv[5] = "\"$SLURM_ARRAY_TASK_ID\"";
+    std::string command = shell_words({argv.begin(), argv.begin() + 5}) + " " + argv[5] + " " +
+                          shell_words({argv.begin() + 6, argv.end()});
+    const std::string script = fmt::format(
+        "#!/bin/bash\n"
+        "# Slurm job array for the cic study {name}: one array task per run.\n"
+        "# Made by `cic sweep {file} --slurm`. Submit with: sbatch {script}\n"
+        "# Every task runs the same resumable command: a requeued or preempted task\n"
+        "# resumes from its checkpoint. cic treats SIGTERM like Ctrl-C: it finishes\n"
+        "# the generation, writes the checkpoint and exits 143.\n"
+        "#SBATCH --job-name=cic-{name}\n"
+        "#SBATCH --array=0-{last}%{at_once}\n"
+        "#SBATCH --ntasks=1\n"
+        "#SBATCH --cpus-per-task={workers}\n"
+        "#SBATCH --output={study}/slurm/%A_%a.out\n"
+        "#SBATCH --open-mode=append\n"
+        "#SBATCH --requeue\n"
+        "#SBATCH --signal=B:TERM@120\n"
+        "exec {command}\n",
+        fmt::arg("name", plan.name), fmt::arg("file", plan.file.string()),
+        fmt::arg("script", (plan.study / "slurm.sh").string()), fmt::arg("last", tasks.size() - 1),
+        fmt::arg("at_once", std::max(1, o.jobs)), fmt::arg("workers", workers), fmt::arg("study", plan.study.string()),
+        fmt::arg("command", command));
+    io::xml::write_file_atomically(plan.study / "slurm.sh", script);
+    fs::permissions(plan.study / "slurm.sh", fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
+                    fs::perm_options::add);
+    write_index(plan);
+    fmt::print("wrote {} ({} array tasks, at most {} at once, {} CPU{} each)\nsubmit with: sbatch {}\n",
+               (plan.study / "slurm.sh").string(), tasks.size(), std::max(1, o.jobs), workers, workers == 1 ? "" : "s",
+               (plan.study / "slurm.sh").string());
+    return 0;
+}
+
+// Runs the tasks not done yet, `jobs` at a time, as child processes (each one
+// `cic sweep FILE --task I`), rebuilding index.csv as they finish.
+int run_locally(const SweepOptions& o, const SweepPlan& plan, int workers, bool quiet) {
+    std::vector<SweepTask> todo;
+    for (const SweepTask& t : plan.tasks())
+        if (task_state(plan, t).status != TaskStatus::Done) todo.push_back(t);
+    const std::size_t total = plan.tasks().size();
+    if (!quiet)
+        std::fprintf(stderr, "cic sweep: %s: %zu of %zu runs to do, %d at a time, %d worker%s each; study %s\n",
+                     plan.name.c_str(), todo.size(), total, o.jobs, workers, workers == 1 ? "" : "s",
+                     plan.study.c_str());
+    g_stop_signal = 0;
+    auto old_int = std::signal(SIGINT, on_sweep_signal);
+    auto old_term = std::signal(SIGTERM, on_sweep_signal);
+    std::map<pid_t, SweepTask> running;
+    std::size_t next = 0;
+    int rc = 0;
+    bool forwarded = false;
+    while (next < todo.size() || !running.empty()) {
+        while (g_stop_signal == 0 && next < todo.size() && static_cast<int>(running.size()) < o.jobs) {
+            const SweepTask& t = todo[next++];
+            const auto argv = task_argv(plan, t, workers);
+            std::vector<char*> args;
+            for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+            args.push_back(nullptr);
+            const pid_t pid = ::fork();
+            if (pid < 0) throw std::runtime_error("cic sweep: fork failed");
+            if (pid == 0) {
+                // The run's summary is in its folder; the console keeps the sweep's own lines.
+                const int null = ::open("/dev/null", O_WRONLY);
+                if (null >= 0) ::dup2(null, 1);
+                ::execv(args[0], args.data());
+                ::_exit(127);
+            }
+            running.emplace(pid, t);
+        }
+        if (g_stop_signal == SIGTERM && !forwarded) {   // a terminal's Ctrl-C reaches the children itself
+            for (const auto& [pid, t] : running) ::kill(pid, SIGTERM);
+            forwarded = true;
+        }
+        int status = 0;
+        const pid_t pid = ::waitpid(-1, &status, 0);
+        if (pid < 0) {
+            if (errno == EINTR) continue;
+            break;
+        }
+        const auto it = running.find(pid);
+        if (it == running.end()) continue;
+        const SweepTask t = it->second;
+        running.erase(it);
+        const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        const TaskState st = task_state(plan, t);
+        if (!quiet)
+            std::fprintf(stderr, "cic sweep: task %zu %s (%s, seed %llu): %s%s\n", t.index, to_string(st.status).c_str(),
+                         plan.configs[t.config].name.c_str(), static_cast<unsigned long long>(t.seed),
+                         st.final_best.empty() ? "" : ("best " + st.final_best).c_str(),
+                         code == 0 ? "" : fmt::format(" (exit {})", code).c_str());
+        if (code != 0 && code != 130 && code != 143 && rc == 0) rc = 1;
+    }
+    write_index(plan);
+    std::signal(SIGINT, old_int);
+    std::signal(SIGTERM, old_term);
+    if (g_stop_signal != 0) {
+        std::fprintf(stderr, "cic sweep: interrupted; rerun the same command to resume\n");
+        return g_stop_signal == SIGTERM ? 143 : 130;
+    }
+    return rc;
+}
+
+} // namespace
+
+void add_sweep_command(CLI::App& app, CommandContext& ctx) {
+    auto o = std::make_shared<SweepOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "sweep", "Run a study: every (configuration, seed) of a sweep file in its own run folder, N at a time, "
+                 "resumable; or write a Slurm job array for it");
+    cmd->add_option("file", o->file, "sweep file (docs/cluster.md)")->required();
+    cmd->add_option("--jobs,-j", o->jobs, "runs at the same time (with --slurm: array tasks at once)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 4096));
+    cmd->add_option("--workers", o->workers, "worker processes per run (default: cores / jobs, at least 1)")
+        ->check(CLI::Range(0, 4096));
+    cmd->add_option("--output", o->output, "study folder (default: the sweep file's <output>, else runs/NAME)");
+    cmd->add_flag("--dry-run", o->dry_run, "list every run with its status and command; run nothing");
+    cmd->add_flag("--slurm", o->slurm, "write STUDY/slurm.sh, a job array with one task per run");
+    cmd->add_option("--task", o->task, "run only task I (0-based), resumably: what each array task runs")
+        ->check(CLI::Range(0L, 100000000L));
+    cmd->callback([o, &ctx] {
+        run_guarded(ctx, "sweep", [&] {
+            const SweepPlan plan = read_sweep_file(o->file, o->output);
+            const int workers = o->workers > 0 ? o->workers : std::max(1, hardware_threads() / o->jobs);
+            if (o->task >= 0) {
+                const auto tasks = plan.tasks();
+                if (static_cast<std::size_t>(o->task) >= tasks.size())
+                    throw InputError(fmt::format("--task {}: the sweep has tasks 0..{}", o->task, tasks.size() - 1),
+                                     plan.file.string());
+                return run_task(plan, tasks[static_cast<std::size_t>(o->task)], workers, ctx.quiet, self_path());
+            }
+            check_every_configuration(plan);
+            if (o->dry_run) return dry_run(plan, workers);
+            fs::create_directories(plan.study);
+            io::xml::write_file_atomically(plan.study / "sweep.xml", io::xml::Document::load_file(plan.file).to_string());
+            if (o->slurm) return write_slurm_script(*o, plan, workers);
+            write_index(plan);
+            return run_locally(*o, plan, workers, ctx.quiet);
+        });
+    });
+}
+
+} // namespace cic::app

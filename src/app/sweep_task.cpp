@@ -1,0 +1,195 @@
+// One sweep task in its own run folder, resumable in place, and the study's
+// index.csv, derived from the run folders alone (so any task, on any node,
+// can rebuild it).
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "cic/app/run.hpp"
+#include "cic/app/sweep.hpp"
+#include "cic/core/error.hpp"
+#include "cic/io/settings_io.hpp"
+#include "cic/io/xml.hpp"
+
+namespace cic::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// An exclusive flock on `path` for this object's lifetime (advisory: shared by
+// every cic on every node that sees the file system, where flock works).
+class FileLock {
+public:
+    FileLock(const fs::path& path, bool wait) {
+        fd_ = ::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+        if (fd_ < 0) throw std::runtime_error("cannot open lock file " + path.string());
+        if (::flock(fd_, LOCK_EX | (wait ? 0 : LOCK_NB)) != 0) {
+            ::close(fd_);
+            fd_ = -1;
+        }
+    }
+    ~FileLock() {
+        if (fd_ >= 0) ::close(fd_);   // closing releases the lock
+    }
+    FileLock(const FileLock&) = delete;
+    FileLock& operator=(const FileLock&) = delete;
+    bool held() const { return fd_ >= 0; }
+
+private:
+    int fd_ = -1;
+};
+
+std::string first_line(const fs::path& p) {
+    std::ifstream in(p);
+    std::string line;
+    std::getline(in, line);
+    return line;
+}
+
+std::vector<std::string> split(const std::string& line) {
+    std::vector<std::string> out;
+    std::stringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) out.push_back(cell);
+    return out;
+}
+
+// Generations, last best, evaluations and wall time (summed over sessions: the
+// column restarts from 0 when a run is resumed) from a run's stats.csv.
+void read_progress(const fs::path& stats, TaskState& st) {
+    std::ifstream in(stats);
+    std::string line;
+    if (!std::getline(in, line)) return;
+    const auto header = split(line);
+    auto column = [&](const std::string& name) {
+        for (std::size_t i = 0; i < header.size(); ++i)
+            if (header[i] == name) return static_cast<long>(i);
+        return -1L;
+    };
+    const long best = column("best"), evals = column("evaluations"), wall = column("wall_seconds");
+    double session = 0;
+    while (std::getline(in, line)) {
+        const auto cells = split(line);
+        if (best < 0 || evals < 0 || wall < 0 || static_cast<long>(cells.size()) <= std::max({best, evals, wall}))
+            continue;
+        ++st.generations;
+        st.final_best = cells[static_cast<std::size_t>(best)];
+        st.evaluations = std::atol(cells[static_cast<std::size_t>(evals)].c_str());
+        const double w = std::atof(cells[static_cast<std::size_t>(wall)].c_str());
+        if (w < session) st.wall_seconds += session;   // a new session began
+        session = w;
+    }
+    st.wall_seconds += session;
+}
+
+std::string csv_cell(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string out = "\"";
+    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+} // namespace
+
+std::string to_string(TaskStatus s) {
+    switch (s) {
+    case TaskStatus::Pending: return "pending";
+    case TaskStatus::Running: return "running";
+    case TaskStatus::Done: return "done";
+    case TaskStatus::Interrupted: return "interrupted";
+    case TaskStatus::Failed: return "failed";
+    }
+    return "?";
+}
+
+TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
+    const fs::path dir = plan.study / task.run_dir;
+    TaskState st;
+    if (!fs::exists(dir / "settings.xml")) {
+        st.status = fs::exists(dir / "failed.txt") ? TaskStatus::Failed : TaskStatus::Pending;
+        return st;
+    }
+    read_progress(dir / "stats.csv", st);
+    if (fs::exists(dir / "failed.txt")) {
+        st.status = TaskStatus::Failed;
+    } else if (fs::exists(dir / "summary.txt")) {
+        st.status = first_line(dir / "summary.txt").rfind("stopped: interrupted", 0) == 0 ? TaskStatus::Interrupted
+                                                                                           : TaskStatus::Done;
+    } else {
+        // No summary: running if some process holds the task's lock, else killed.
+        const FileLock probe(dir / ".lock", false);
+        st.status = probe.held() ? TaskStatus::Interrupted : TaskStatus::Running;
+    }
+    return st;
+}
+
+void write_index(const SweepPlan& plan) {
+    fs::create_directories(plan.study);
+    const FileLock lock(plan.study / ".index.lock", true);
+    std::string text = "run_dir,config";
+    for (const auto& k : plan.varied_keys) text += "," + csv_cell(k);
+    text += ",seed,status,final_best,generations,evaluations,wall_seconds\n";
+    for (const SweepTask& t : plan.tasks()) {
+        const TaskState st = task_state(plan, t);
+        const SweepConfig& cfg = plan.configs[t.config];
+        text += csv_cell(t.run_dir.string()) + "," + csv_cell(cfg.name);
+        for (const auto& [key, value] : cfg.varied) text += "," + csv_cell(value);
+        text += fmt::format(",{},{},{},{},{},{:.3f}\n", t.seed, to_string(st.status), st.final_best, st.generations,
+                            st.evaluations, st.wall_seconds);
+    }
+    io::xml::write_file_atomically(plan.study / "index.csv", text);
+}
+
+int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool quiet, const std::string& executable) {
+    const fs::path dir = plan.study / task.run_dir;
+    fs::create_directories(dir);
+    const FileLock lock(dir / ".lock", false);
+    if (!lock.held()) {
+        if (!quiet) std::fprintf(stderr, "cic sweep: task %zu (%s) is running elsewhere; skipped\n", task.index, dir.c_str());
+        return 0;
+    }
+    const TaskStatus before = task_state(plan, task).status;
+    if (before == TaskStatus::Done) return 0;
+
+    std::vector<std::string> overrides = plan.overrides(task);
+    if (workers > 0) overrides.push_back("Experiment.workers=" + std::to_string(workers));
+    overrides.push_back("Experiment.name=s" + std::to_string(task.seed));
+    const bool resume = fs::exists(dir / "population.xml") && fs::exists(dir / "settings.xml");
+    if (resume) overrides.push_back("Control.populationXmlLoadFrom=" + (dir / "population.xml").string());
+
+    PreparedRun prepared = prepare_run(io::load_settings(plan.base, overrides));
+    fs::remove(dir / "failed.txt");
+    if (!resume) {   // a fresh start: clear what a run killed before its first checkpoint left
+        for (const auto& e : fs::directory_iterator(dir))
+            if (e.path().filename() != ".lock") fs::remove_all(e.path());
+        io::Settings stored = prepared.settings;
+        stored.control.population_load_from.clear();
+        io::xml::write_file_atomically(dir / "settings.xml", io::write_settings(stored));
+        std::ofstream(dir / "run.log") << "cic " << CIC_VERSION << "\nsweep " << plan.file.string() << " task "
+                                       << task.index << " (" << plan.configs[task.config].name << ", seed " << task.seed
+                                       << ")\n";
+    } else {
+        std::ofstream(dir / "run.log", std::ios::app) << "resumed in place from population.xml\n";
+    }
+    RunOptions opt;
+    opt.run_dir = dir;
+    opt.quiet = quiet;
+    opt.worker_executable = executable;
+    opt.continue_in_place = resume;
+    int rc = 1;
+    try {
+        rc = run_experiment(std::move(prepared), opt);
+    } catch (const std::exception& e) {
+        io::xml::write_file_atomically(dir / "failed.txt", std::string(e.what()) + "\n");
+        write_index(plan);
+        throw;
+    }
+    write_index(plan);
+    return rc;
+}
+
+} // namespace cic::app

@@ -1,0 +1,206 @@
+// `cic sweep`: sweep files are checked with file:line before anything is
+// written; every (configuration, seed) runs in its own folder, N at a time;
+// an interrupted study resumes and ends as if it had never stopped; index.csv
+// tells where each run stands; --slurm writes a job array.
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <chrono>
+#include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "cic/app/sweep.hpp"
+#include "cic/io/xml.hpp"
+#include "support/run_helpers.hpp"
+
+namespace cic {
+namespace {
+
+using namespace cic::testing;
+namespace fs = std::filesystem;
+
+// A 2 x 2 grid with 3 repeats of tiny HyperGP runs on R0.
+std::string sweep_text(const fs::path& study, int generations = 3) {
+    return R"(<sweep name="tiny">
+  <base>)" + (fs::path(CIC_SOURCE_DIR) / "settings" / "r0_settings.xml").string() + R"(</base>
+  <output>)" + study.string() + R"(</output>
+  <set>GP.generatedPopulationSize=6</set>
+  <set>GP.tournament_size=3</set>
+  <set>Control.maximumIterations=)" + std::to_string(generations) + R"(</set>
+  <set>Simulator.sample_to=2.5</set>
+  <set>Simulator.delayed_start=0.5</set>
+  <grid>
+    <vary key="GP.elitism">0 1</vary>
+    <vary key="Neural.sampleAverageCount">1 2</vary>
+  </grid>
+  <repeats count="3" firstSeed="4"/>
+</sweep>
+)";
+}
+
+int lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+
+TEST(SweepFile, PlansEveryConfigurationAndSeed) {
+    const auto dir = temp_dir("sweep-plan");
+    write_text(dir / "s.xml", sweep_text(dir / "study"));
+    const app::SweepPlan plan = app::read_sweep_file(dir / "s.xml");
+    ASSERT_EQ(plan.configs.size(), 4u);
+    EXPECT_EQ(plan.configs[1].name, "elitism=0+sampleAverageCount=2");
+    EXPECT_EQ(plan.varied_keys, (std::vector<std::string>{"GP.elitism", "Neural.sampleAverageCount"}));
+    const auto tasks = plan.tasks();
+    ASSERT_EQ(tasks.size(), 12u);
+    EXPECT_EQ(tasks[5].config, 1u);   // seed-major: every configuration gets seed 4 first
+    EXPECT_EQ(tasks[5].seed, 5u);
+    EXPECT_EQ(tasks[5].run_dir, fs::path("runs/elitism=0+sampleAverageCount=2/s5"));
+    EXPECT_EQ(plan.overrides(tasks[5]).back(), "Experiment.seed=5");
+    // The schema accepts it too.
+    const auto problems = io::xml::Document::load_file(dir / "s.xml")
+                              .validate(fs::path(CIC_SOURCE_DIR) / "settings" / "cic-sweep.xsd");
+    EXPECT_TRUE(problems.empty()) << problems.front();
+    // Distinct seeds: configuration c gets firstSeed + c * repeats + r.
+    std::string distinct = sweep_text(dir / "study");
+    distinct.replace(distinct.find("firstSeed=\"4\""), 13, "firstSeed=\"4\" seeds=\"distinct\"");
+    write_text(dir / "d.xml", distinct);
+    EXPECT_EQ(app::read_sweep_file(dir / "d.xml").tasks()[5].seed, 4u + 1 * 3 + 1);
+    fs::remove_all(dir);
+}
+
+TEST(SweepFile, MistakesAreRefusedWithFileAndLine) {
+    const auto dir = temp_dir("sweep-errors");
+    const std::string good = sweep_text(dir / "study");
+    const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
+        {{"<repeats count=\"3\" firstSeed=\"4\"/>", "<repeats count=\"zero\"/>"}, "s.xml:13: <repeats> count=\"zero\""},
+        {{"<grid>", "<grid><vary key=\"GP.nonsense\">1</vary>"}, "s.xml:9: <set> names no settings key: <GP> nonsense"},
+        {{"<vary key=\"GP.elitism\">0 1</vary>", "<vary key=\"GP.elitism\">0 0</vary>"}, "lists a value twice"},
+        {{"<set>GP.tournament_size=3</set>", "<sett>GP.tournament_size=3</sett>"}, "s.xml:5: unknown element <sett>"},
+        {{"r0_settings.xml", "no_such_settings.xml"}, "s.xml:2: <base>"},
+    };
+    for (const auto& [edit, why] : cases) {
+        std::string text = good;
+        text.replace(text.find(edit.first), edit.first.size(), edit.second);
+        write_text(dir / "s.xml", text);
+        EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "log"), 2) << edit.second;
+        EXPECT_NE(read_text(dir / "log").find(why), std::string::npos) << read_text(dir / "log");
+        EXPECT_FALSE(fs::exists(dir / "study"));
+    }
+    // A value the settings refuse, in one configuration, stops the sweep before the study folder exists.
+    std::string text = good;
+    text.replace(text.find("0 1</vary>"), 3, "0 9");
+    write_text(dir / "s.xml", text);
+    EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "log"), 2);
+    EXPECT_NE(read_text(dir / "log").find("elitism"), std::string::npos) << read_text(dir / "log");
+    EXPECT_FALSE(fs::exists(dir / "study"));
+    fs::remove_all(dir);
+}
+
+TEST(Sweep, DryRunListsEveryRunAndWritesNothing) {
+    const auto dir = temp_dir("sweep-dry");
+    write_text(dir / "s.xml", sweep_text(dir / "study"));
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --dry-run", dir / "log"), 0) << read_text(dir / "log");
+    const std::string out = read_text(dir / "log");
+    EXPECT_NE(out.find("4 configurations x 3 repeats = 12 runs"), std::string::npos) << out;
+    EXPECT_NE(out.find("12 pending"), std::string::npos) << out;
+    EXPECT_NE(out.find("--set Neural.sampleAverageCount=2 --set Experiment.seed=6"), std::string::npos) << out;
+    EXPECT_FALSE(fs::exists(dir / "study"));
+    fs::remove_all(dir);
+}
+
+TEST(Sweep, RunsEveryTaskInItsFolderAndMatchesAPlainRun) {
+    const auto dir = temp_dir("sweep-run");
+    write_text(dir / "s.xml", sweep_text(dir / "study"));
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "log"), 0) << read_text(dir / "log");
+    const std::string index = read_text(dir / "study" / "index.csv");
+    EXPECT_EQ(index.rfind("run_dir,config,GP.elitism,Neural.sampleAverageCount,seed,status,final_best,generations,"
+                          "evaluations,wall_seconds\n",
+                          0),
+              0u)
+        << index;
+    EXPECT_EQ(lines(index), 13) << index;
+    EXPECT_EQ(std::count(index.begin(), index.end(), 'd') >= 12, true);
+    EXPECT_NE(index.find("runs/elitism=1+sampleAverageCount=2/s6,elitism=1+sampleAverageCount=2,1,2,6,done,"),
+              std::string::npos)
+        << index;
+    // One task equals a plain run of the same settings.
+    const std::string plain = "--quiet --settings " + (fs::path(CIC_SOURCE_DIR) / "settings" / "r0_settings.xml").string() +
+                              " --output " + (dir / "plain").string() +
+                              " --set GP.generatedPopulationSize=6 --set GP.tournament_size=3"
+                              " --set Control.maximumIterations=3 --set Simulator.sample_to=2.5"
+                              " --set Simulator.delayed_start=0.5 --set GP.elitism=1"
+                              " --set Neural.sampleAverageCount=2 --set Experiment.seed=6";
+    ASSERT_EQ(run_command(plain, dir / "plain.log"), 0) << read_text(dir / "plain.log");
+    EXPECT_EQ(read_text(dir / "study/runs/elitism=1+sampleAverageCount=2/s6/population.xml"),
+              read_text(only_run(dir / "plain") / "population.xml"));
+    // Run again: nothing left to do.
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "again.log"), 0);
+    EXPECT_NE(read_text(dir / "again.log").find("0 of 12 runs to do"), std::string::npos) << read_text(dir / "again.log");
+    fs::remove_all(dir);
+}
+
+TEST(Sweep, InterruptedStudyResumesToTheSameBytes) {
+    const auto dir = temp_dir("sweep-resume");
+    write_text(dir / "ref.xml", sweep_text(dir / "reference", 6));
+    ASSERT_EQ(run_command("sweep " + (dir / "ref.xml").string() + " --jobs 2", dir / "ref.log"), 0)
+        << read_text(dir / "ref.log");
+    write_text(dir / "s.xml", sweep_text(dir / "study", 6));
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        setpgid(0, 0);
+        freopen((dir / "first.log").c_str(), "w", stderr);
+        const std::string bin = cic_binary(), file = (dir / "s.xml").string();
+        execl(bin.c_str(), bin.c_str(), "sweep", file.c_str(), "--jobs", "2", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    // Let some runs finish and others start, then stop the whole study as Slurm would.
+    for (int i = 0; i < 400; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(25));
+        const std::string index = read_text(dir / "study" / "index.csv");
+        if (index.find(",done,") != std::string::npos) break;
+    }
+    kill(-pid, SIGTERM);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << read_text(dir / "first.log");
+    if (WEXITSTATUS(status) == 0) GTEST_SKIP() << "the study ended before the signal";
+    EXPECT_EQ(WEXITSTATUS(status), 143) << read_text(dir / "first.log");
+    const std::string partial = read_text(dir / "study" / "index.csv");
+    EXPECT_NE(partial.find(",pending,"), std::string::npos) << partial;
+
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "second.log"), 0)
+        << read_text(dir / "second.log");
+    for (const auto& e : fs::recursive_directory_iterator(dir / "reference" / "runs")) {
+        if (e.path().filename() != "population.xml") continue;
+        const fs::path rel = fs::relative(e.path(), dir / "reference");
+        EXPECT_EQ(read_text(dir / "study" / rel), read_text(e.path())) << rel;
+    }
+    const std::string index = read_text(dir / "study" / "index.csv");
+    EXPECT_EQ(index.find(",pending,"), std::string::npos) << index;
+    EXPECT_EQ(index.find(",interrupted,"), std::string::npos) << index;
+    fs::remove_all(dir);
+}
+
+TEST(Sweep, SlurmScriptRunsTheSameResumableCommandPerTask) {
+    const auto dir = temp_dir("sweep-slurm");
+    write_text(dir / "s.xml", sweep_text(dir / "study"));
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --slurm --jobs 3 --workers 1", dir / "log"), 0)
+        << read_text(dir / "log");
+    const std::string script = read_text(dir / "study" / "slurm.sh");
+    EXPECT_NE(script.find("#SBATCH --array=0-11%3\n"), std::string::npos) << script;
+    EXPECT_NE(script.find("#SBATCH --requeue\n"), std::string::npos) << script;
+    EXPECT_NE(script.find("sweep " + (dir / "s.xml").string() + " --task \"$SLURM_ARRAY_TASK_ID\" --workers 1"),
+              std::string::npos)
+        << script;
+    // What one array task does: run task 7 by itself.
+    ASSERT_EQ(run_command("--quiet sweep " + (dir / "s.xml").string() + " --task 7 --workers 1", dir / "task.log"), 0)
+        << read_text(dir / "task.log");
+    const std::string index = read_text(dir / "study" / "index.csv");
+    EXPECT_EQ(std::count(index.begin(), index.end(), '\n'), 13);
+    EXPECT_NE(index.find(",done,"), std::string::npos) << index;
+    EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --task 12", dir / "bad.log"), 2);
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace cic
