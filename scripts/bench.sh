@@ -4,6 +4,7 @@
 # script (the machine is shared: compare ratios, not absolute numbers, across days):
 #   GP node evaluations per second (Operon's protocol), 1 and 2 threads;
 #   simulator real-time factor, cost over bare ODE, evaluations/s with 1 and 2 workers;
+#   sweep overhead per run and --jobs 2 x 1 worker vs --jobs 1 x 2 workers;
 #   per-evaluation breakdown (substrate build, network steps, physics);
 #   with --deap N: DEAP vs cic on DEAP's symbreg example over N seeds (default off);
 #   with --r1: the default R1 run (50 x 50, seed 1, 2 workers): wall time and best fitness.
@@ -41,6 +42,9 @@ for b in json.load(sys.stdin)["benchmarks"]:
 echo
 echo "== Simulator"
 bash "$ROOT/scripts/bench-sim.sh" "$ROOT/build"
+echo
+echo "== Studies (cic sweep)"
+bash "$ROOT/scripts/bench-sweep.sh" "$ROOT/build"
 echo
 echo "== Per-evaluation breakdown, R1 6 legs, 15 s at 0.0125 s (1200 control steps)"
 "$B/cic_bench_nn" --benchmark_min_time="$min_time" --benchmark_format=json 2>/dev/null | python3 -c '

@@ -6,7 +6,7 @@ set -euo pipefail
 
 PACKAGES=(
   # build
-  build-essential cmake ninja-build pkg-config
+  build-essential cmake ninja-build pkg-config dpkg-dev
   # libraries
   libode-dev libeigen3-dev libxml2-dev libcli11-dev libfmt-dev
   libopenscenegraph-dev libopenmpi-dev openmpi-bin

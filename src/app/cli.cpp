@@ -14,6 +14,7 @@
 #endif
 #include "cic/app/run.hpp"
 #include "cic/app/run_folder.hpp"
+#include "cic/app/settings_lookup.hpp"
 #include "cic/core/error.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/io/xml.hpp"
@@ -137,6 +138,7 @@ int main(int argc, char** argv) {
 #ifdef CIC_HAVE_VIEWER
     add_view_command(app, ctx);
 #endif
+    add_docs_commands(app, ctx);   // last: `cic man` / `cic completion` document every subcommand
 
     try {
         app.parse(argc, argv);
@@ -176,6 +178,8 @@ int main(int argc, char** argv) {
     }
 #endif
     try {
+        // NAME.xml not found as given: the installed (or source-tree) settings folder.
+        o.settings_file = find_settings_file(o.settings_file).string();
         if (o.seeds.empty()) return run_main_job(o, ctx, argc, argv);
         const auto seeds = expand_seeds(o.seeds);
         {   // check the settings for every seed before the first run writes anything

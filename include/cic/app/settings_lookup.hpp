@@ -1,0 +1,21 @@
+#pragma once
+// Where `cic --settings NAME.xml` finds NAME.xml: as given (relative to the
+// current folder), else among the installed settings (<exe dir>/../share/cic/settings),
+// else in the source tree's settings/ folder.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace cic::app {
+
+// The folders searched, in order, when `given` is not found as given:
+// <exe dir>/../share/cic/settings, then CIC_SOURCE_DIR/settings.
+std::vector<std::filesystem::path> settings_search_folders();
+
+// `given` when it names an existing file; else the first folder of
+// settings_search_folders() holding it, announced on stderr as
+// "cic: settings GIVEN: using FULL_PATH". Only a relative `given` is looked
+// up elsewhere. Throws cic::InputError naming every place it looked.
+std::filesystem::path find_settings_file(const std::string& given);
+
+} // namespace cic::app
