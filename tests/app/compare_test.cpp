@@ -17,6 +17,7 @@
 
 #include "cic/app/plot.hpp"
 #include "cic/core/error.hpp"
+#include "support/input_error.hpp"
 #include "support/run_helpers.hpp"
 
 namespace {
@@ -27,6 +28,7 @@ using namespace cic::app;
 using cic::testing::read_text;
 using cic::testing::temp_dir;
 using cic::testing::write_text;
+using cic::testing::input_error;
 
 const std::string kStatsHeader =
     "generation,best,mean,median,mean_depth,max_depth,mean_size,max_size,limit,illegal,evaluations,wall_seconds,"
@@ -107,16 +109,6 @@ Result cic(const std::string& args) {
     r.out = read_text(dir / "out");
     r.err = read_text(dir / "err");
     return r;
-}
-
-template <class F>
-std::string input_error(F f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(no cic::InputError)";
 }
 
 // --- the index reader -------------------------------------------------------

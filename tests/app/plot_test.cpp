@@ -2,6 +2,8 @@
 // summaries, real SVG/PNG output, trace CSV round trip and trace plots.
 #include <gtest/gtest.h>
 
+#include "support/input_error.hpp"
+
 #include <unistd.h>
 
 #include <cmath>
@@ -18,6 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace cic;
+using cic::testing::input_error;
 using namespace cic::app;
 
 fs::path scratch(const std::string& name) {
@@ -48,16 +51,6 @@ fs::path make_run(const fs::path& parent, const std::string& name, int gens, dou
                 ",0.1,3.5,7,12.5,40,17,0,50,1.5\n";
     write(dir / "stats.csv", text);
     return dir;
-}
-
-template <class F>
-std::string input_error(F f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(no cic::InputError)";
 }
 
 TEST(StatsCsv, ColumnsMatchTheRunsWriter) {

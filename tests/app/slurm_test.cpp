@@ -29,18 +29,7 @@ std::string shell(const std::string& cmd) {
 
 // 2 configurations x 2 repeats of small HyperGP runs on R0.
 std::string sweep_text(const fs::path& study, int generations) {
-    return R"(<sweep name="slurm">
-  <base>)" + (fs::path(CIC_SOURCE_DIR) / "settings" / "r0_settings.xml").string() + R"(</base>
-  <output>)" + study.string() + R"(</output>
-  <set>GP.generatedPopulationSize=8</set>
-  <set>GP.tournament_size=3</set>
-  <set>Control.maximumIterations=)" + std::to_string(generations) + R"(</set>
-  <set>Simulator.sample_to=4</set>
-  <set>Simulator.delayed_start=0.5</set>
-  <grid><vary key="GP.elitism">0 1</vary></grid>
-  <repeats count="2" firstSeed="1"/>
-</sweep>
-)";
+    return tiny_sweep_text("slurm", study, 8, generations, 4, "<grid><vary key=\"GP.elitism\">0 1</vary></grid>", 2);
 }
 
 // Waits until no job of `name` is queued or running (at most `seconds`).

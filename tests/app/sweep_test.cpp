@@ -23,21 +23,10 @@ namespace fs = std::filesystem;
 
 // A 2 x 2 grid with 3 repeats of tiny HyperGP runs on R0.
 std::string sweep_text(const fs::path& study, int generations = 3) {
-    return R"(<sweep name="tiny">
-  <base>)" + (fs::path(CIC_SOURCE_DIR) / "settings" / "r0_settings.xml").string() + R"(</base>
-  <output>)" + study.string() + R"(</output>
-  <set>GP.generatedPopulationSize=6</set>
-  <set>GP.tournament_size=3</set>
-  <set>Control.maximumIterations=)" + std::to_string(generations) + R"(</set>
-  <set>Simulator.sample_to=2.5</set>
-  <set>Simulator.delayed_start=0.5</set>
-  <grid>
-    <vary key="GP.elitism">0 1</vary>
-    <vary key="Neural.sampleAverageCount">1 2</vary>
-  </grid>
-  <repeats count="3" firstSeed="4"/>
-</sweep>
-)";
+    return tiny_sweep_text("tiny", study, 6, generations, 2.5,
+                           "<grid>\n    <vary key=\"GP.elitism\">0 1</vary>\n"
+                           "    <vary key=\"Neural.sampleAverageCount\">1 2</vary>\n  </grid>",
+                           3, 4);
 }
 
 int lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }

@@ -111,6 +111,23 @@ inline std::string golden_symreg_settings(int threads) {
 inline const std::string kGoldenHypergp = "ab3a3e7d29aa37ad";
 inline const std::string kGoldenSymreg = "1267ae7aacf5fb20";
 
+// A sweep file of small HyperGP runs on R0 (2.5 s or `seconds` simulations,
+// tournament 3): `population` individuals, `generations` generations, the
+// given <grid> and `repeats` seeds from 1 (firstSeed), writing to `study`.
+inline std::string tiny_sweep_text(const std::string& name, const std::filesystem::path& study, int population,
+                                   int generations, double seconds, const std::string& grid, int repeats,
+                                   int first_seed = 1) {
+    char sample_to[32];
+    std::snprintf(sample_to, sizeof sample_to, "%g", seconds);
+    return "<sweep name=\"" + name + "\">\n  <base>" +
+           (std::filesystem::path(CIC_SOURCE_DIR) / "settings" / "r0_settings.xml").string() + "</base>\n  <output>" +
+           study.string() + "</output>\n  <set>GP.generatedPopulationSize=" + std::to_string(population) +
+           "</set>\n  <set>GP.tournament_size=3</set>\n  <set>Control.maximumIterations=" +
+           std::to_string(generations) + "</set>\n  <set>Simulator.sample_to=" + sample_to +
+           "</set>\n  <set>Simulator.delayed_start=0.5</set>\n  " + grid + "\n  <repeats count=\"" +
+           std::to_string(repeats) + "\" firstSeed=\"" + std::to_string(first_seed) + "\"/>\n</sweep>\n";
+}
+
 // 64-bit FNV-1a of a file's bytes, as 16 hex digits: the golden hashes.
 inline std::string file_hash(const std::filesystem::path& p) {
     std::uint64_t h = 0xcbf29ce484222325ULL;
