@@ -299,7 +299,7 @@ start_munged() {
     rm -f "$MUNGE_RUN/munge.socket.2.lock"
     runuser -u munge -- /usr/sbin/munged \
       --pid-file="$(pidfile_of munged)" --log-file="$(logfile_of munged)" \
-      --seed-file="$DIR/munge/munged.seed" ||
+      --seed-file="$DIR/munge/munged.seed" 9>&- ||
       fail_daemon munged "munged did not start"
   fi
   local i
@@ -316,7 +316,8 @@ start_slurmctld() {
     other=$(foreign_pids slurmctld)
     [ -z "$other" ] || die "slurmctld already runs (pid $other) but was not started by $PROG: stop it first"
     say "starting slurmctld"
-    slurmctld 2>>"$(logfile_of slurmctld)" || fail_daemon slurmctld "slurmctld exited with status $?"
+    # 9>&-: the daemons must not inherit the lock of this script, or it stays held
+    slurmctld 2>>"$(logfile_of slurmctld)" 9>&- || fail_daemon slurmctld "slurmctld exited with status $?"
   fi
   local i
   for ((i = 0; i < READY_TIMEOUT * 2; i++)); do
@@ -336,7 +337,7 @@ start_slurmd() {
     other=$(foreign_pids slurmd)
     [ -z "$other" ] || die "slurmd already runs (pid $other) but was not started by $PROG: stop it first"
     say "starting slurmd"
-    slurmd -N "$(node_name)" 2>>"$(logfile_of slurmd)" || fail_daemon slurmd "slurmd exited with status $?"
+    slurmd -N "$(node_name)" 2>>"$(logfile_of slurmd)" 9>&- || fail_daemon slurmd "slurmd exited with status $?"
     sleep 0.5
     daemon_pid slurmd >/dev/null || fail_daemon slurmd "slurmd died after starting"
   fi
