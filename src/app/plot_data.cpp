@@ -86,6 +86,14 @@ double sd_of(const std::vector<double>& v) {
     return std::sqrt(s / static_cast<double>(v.size() - 1));
 }
 
+// Every run's row of each generation, generations in order.
+std::map<int, std::vector<const StatsRow*>> rows_by_generation(const std::vector<std::vector<StatsRow>>& runs) {
+    std::map<int, std::vector<const StatsRow*>> by_generation;
+    for (const auto& run : runs)
+        for (const auto& row : run) by_generation[row.generation].push_back(&row);
+    return by_generation;
+}
+
 } // namespace
 
 std::vector<StatsRow> read_stats_csv(const std::filesystem::path& path) {
@@ -265,11 +273,8 @@ std::vector<StatsRow> read_study_run_stats(const StudyIndex& index, const StudyR
 }
 
 std::vector<GenerationBands> summarise_bands(const std::vector<std::vector<StatsRow>>& runs, bool median) {
-    std::map<int, std::vector<const StatsRow*>> by_generation;
-    for (const auto& run : runs)
-        for (const auto& row : run) by_generation[row.generation].push_back(&row);
     std::vector<GenerationBands> out;
-    for (const auto& [generation, rows] : by_generation) {
+    for (const auto& [generation, rows] : rows_by_generation(runs)) {
         auto band = [&](double StatsRow::*field) {
             std::vector<double> v;
             for (const StatsRow* r : rows)
@@ -291,11 +296,8 @@ std::vector<GenerationBands> summarise_bands(const std::vector<std::vector<Stats
 }
 
 std::vector<GenerationSummary> summarise(const std::vector<std::vector<StatsRow>>& runs) {
-    std::map<int, std::vector<const StatsRow*>> by_generation;
-    for (const auto& run : runs)
-        for (const auto& row : run) by_generation[row.generation].push_back(&row);
     std::vector<GenerationSummary> out;
-    for (const auto& [generation, rows] : by_generation) {
+    for (const auto& [generation, rows] : rows_by_generation(runs)) {
         auto column = [&](double StatsRow::*field) {
             std::vector<double> v;
             for (const StatsRow* r : rows) v.push_back(r->*field);

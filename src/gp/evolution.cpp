@@ -165,8 +165,8 @@ void Evaluate::apply(Population& pop, EvolutionState& st) {
 
 Breed::Breed(const GpConfig& cfg, const tree::PrimitiveSet& ps)
     : cfg_(cfg),
-      gen_(ps, cfg.mutation_generator, cfg.expected_tree_size, 1,
-           levels(cfg, cfg.mutation_generator, cfg.max_mutation_depth)) {}
+      mutation_levels_(levels(cfg, cfg.mutation_generator, cfg.max_mutation_depth)),
+      gen_(ps, cfg.mutation_generator, cfg.expected_tree_size, 1, mutation_levels_) {}
 
 std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered_set<std::uint64_t>& seen,
                                               std::size_t room) {
@@ -206,8 +206,7 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered
             admit(std::move(a), {p1.id, p2.id}, p1, &p2);
             admit(std::move(b), {p2.id, p1.id}, p2, &p1);
         } else if (r < cfg_.crossover_rate + cfg_.mutation_rate) {
-            admit(mutate(st.rng, p1.genotype, gen_, levels(cfg_, cfg_.mutation_generator, cfg_.max_mutation_depth),
-                         cfg_.node_selection),
+            admit(mutate(st.rng, p1.genotype, gen_, mutation_levels_, cfg_.node_selection),
                   {p1.id}, p1, nullptr);
         } else {
             // Reproduction: an unchanged copy keeps its known fitness.

@@ -117,6 +117,7 @@ private:
     std::vector<IndividualPtr> breed_event(EvolutionState& st, std::unordered_set<std::uint64_t>& seen,
                                            std::size_t room);
     const GpConfig& cfg_;
+    int mutation_levels_;   // maximumMutationDepth in levels (see gp::levels)
     TreeGenerator gen_;
     Population parents_;
     std::vector<const IndividualPtr*> ranked_;   // scratch for elitism
