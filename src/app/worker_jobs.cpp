@@ -1,27 +1,14 @@
 // The table of worker job kinds (see worker_jobs.hpp).
 #include "cic/app/worker_jobs.hpp"
 
-#include <chrono>
 #include <memory>
 #include <stdexcept>
-#include <thread>
 
 #include "cic/io/settings_io.hpp"
 #include "cic/sim/job_text.hpp"
 #include "experiments/hypergp/model.hpp"
 
 namespace cic::app {
-
-namespace {
-
-// Test-only: "sleep" + seconds; lets tests make a job that hangs past a timeout.
-std::string sleep_job(const std::string& body) {
-    const double seconds = std::stod(body);
-    std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
-    return "slept";
-}
-
-} // namespace
 
 std::map<std::string, JobHandler> make_worker_job_kinds(const WorkerContext& context) {
     std::map<std::string, JobHandler> kinds;
@@ -32,7 +19,6 @@ std::map<std::string, JobHandler> make_worker_job_kinds(const WorkerContext& con
         return io::read_settings(context.settings_file);
     });
     kinds["sine"] = &sim::run_sine_job;   // robot + SimConfig + sine joints -> fitness reply
-    kinds["sleep"] = &sleep_job;
     return kinds;
 }
 

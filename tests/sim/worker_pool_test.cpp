@@ -8,9 +8,13 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <sstream>
 #include <thread>
+
+#include <unistd.h>
 
 #include "cic/core/process_pool.hpp"
 #include "cic/core/rng.hpp"
@@ -31,6 +35,16 @@ PoolOptions worker_pool(int workers) {
     o.workers = workers;
     o.argv = {cic_binary(), "worker"};
     o.timeout_seconds = 60;
+    return o;
+}
+
+// cic_test_worker (tests/support/test_worker.cpp): the real sine evaluation
+// plus test-only job kinds.
+PoolOptions test_worker_pool(int workers, double timeout_seconds) {
+    PoolOptions o;
+    o.workers = workers;
+    o.argv = {CIC_TEST_WORKER};
+    o.timeout_seconds = timeout_seconds;
     return o;
 }
 
@@ -95,39 +109,50 @@ TEST(WorkerPool, SameFitnessBitsWithOneOrTwoWorkersAndInProcess) {
     }
 }
 
+// Worker 0 is killed while it holds a job (cic_test_worker's "once" job tells
+// us its pid only once it runs): the job is retried on a fresh worker, and the
+// evaluations around it keep their bits. No sleeps, no timing assumptions.
 TEST(WorkerPool, KilledWorkerIsSurvived) {
     const RobotSpec robot = preset(2, false);
     const SimConfig cfg = short_config();
-    std::vector<std::string> jobs = {"sleep\n0.5"};   // keeps worker 0 busy while it is killed
+    const auto marker = std::filesystem::temp_directory_path() / ("cic-once-" + std::to_string(::getpid()));
+    std::filesystem::remove(marker);
+    std::vector<std::string> jobs = {"once\n" + marker.string()};
     for (const auto& c : random_controllers(6, 12)) jobs.push_back(make_sine_job(robot, cfg, c));
 
-    ProcessPool pool(worker_pool(2));
-    const int victim = pool.pids()[0];
-    std::thread killer([victim] {
-        std::this_thread::sleep_for(std::chrono::milliseconds(150));
-        ::kill(victim, SIGKILL);
+    ProcessPool pool(test_worker_pool(2, 60));
+    std::thread killer([&marker] {
+        const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+        while (!std::filesystem::exists(marker) && std::chrono::steady_clock::now() < give_up)
+            std::this_thread::yield();
+        int pid = 0;
+        std::ifstream(marker) >> pid;
+        if (pid > 0) ::kill(pid, SIGKILL);
     });
     const auto results = pool.run(jobs);
     killer.join();
-    EXPECT_GE(pool.restarts(), 1);
+    std::filesystem::remove(marker);
+    EXPECT_EQ(pool.restarts(), 1);
     EXPECT_TRUE(results[0].ok) << results[0].error;
     EXPECT_EQ(results[0].attempts, 2);
-    EXPECT_EQ(results[0].output, "slept");
+    EXPECT_EQ(results[0].output, "retried");
     ProcessPool fresh(worker_pool(1));
     const auto reference = fitnesses(fresh.run({jobs.begin() + 1, jobs.end()}));
     for (std::size_t i = 1; i < jobs.size(); ++i)
         EXPECT_EQ(bits(parse_eval_reply(results[i].output).fitness), bits(reference[i - 1])) << i;
 }
 
+// A job that never answers is retried once on a fresh worker, then reported
+// failed; the next job runs on yet another fresh worker. The timeout is far
+// above what the small evaluation needs, even under a sanitizer.
 TEST(WorkerPool, HungJobIsRetriedThenFailedAndTheRunGoesOn) {
-    PoolOptions o = worker_pool(1);
-    o.timeout_seconds = 0.3;
-    ProcessPool pool(o);
-    const auto results = pool.run({"sleep\n30", make_sine_job(preset(0, false), short_config(), {{0.5, 0.5, 0}})});
+    ProcessPool pool(test_worker_pool(1, 3.0));
+    const auto results = pool.run({"hang", make_sine_job(preset(0, false), short_config(), {{0.5, 0.5, 0}})});
     EXPECT_FALSE(results[0].ok);
     EXPECT_EQ(results[0].attempts, 2);
     EXPECT_NE(results[0].error.find("timed out"), std::string::npos);
     EXPECT_TRUE(results[1].ok) << results[1].error;
+    EXPECT_EQ(results[1].attempts, 1);
     EXPECT_EQ(pool.restarts(), 2);
 }
 
