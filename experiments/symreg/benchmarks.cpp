@@ -8,6 +8,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "cic/core/hash.hpp"
+
 namespace cic::symreg {
 namespace {
 
@@ -193,12 +195,7 @@ std::optional<Benchmark> find_benchmark(std::string_view name) {
 }
 
 std::uint64_t benchmark_seed(std::string_view canonical_name) {
-    std::uint64_t h = 0xcbf29ce484222325ULL;  // FNV-1a, 64 bit
-    for (unsigned char c : canonical_name) {
-        h ^= c;
-        h *= 0x100000001b3ULL;
-    }
-    return h;
+    return fnv1a_64(canonical_name);
 }
 
 std::vector<std::vector<double>> sample(const Sampling& s, Rng& rng) {

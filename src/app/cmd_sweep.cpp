@@ -82,6 +82,7 @@ int dry_run(const SweepPlan& plan, int workers) {
     fmt::print("sweep {} ({}): {} configurations x {} repeats = {} runs; base {}\nstudy {}\n", plan.name,
                plan.file.string(), plan.configs.size(), plan.repeats, plan.tasks().size(), plan.base.string(),
                plan.study.string());
+    if (!plan.store.empty()) fmt::print("run store {} (runs another study has done are reused)\n", plan.store.string());
     std::map<std::string, int> counts;
     for (const SweepTask& t : plan.tasks()) {
         const TaskStatus st = task_state(plan, t).status;
@@ -235,6 +236,7 @@ void add_sweep_command(CLI::App& app, CommandContext& ctx) {
             check_every_configuration(plan);
             if (o->dry_run) return dry_run(plan, workers);
             fs::create_directories(plan.study);
+            link_to_store(plan);
             io::xml::write_file_atomically(plan.study / "sweep.xml", io::xml::Document::load_file(plan.file).to_string());
             if (o->slurm) return write_slurm_script(*o, plan, workers);
             write_index(plan);

@@ -80,7 +80,7 @@ SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
     std::vector<Vary> grid;
     std::vector<Variant> variants;
     bool have_repeats = false;
-    std::string out_text;
+    std::string out_text, store_text;
     for (const auto& c : root.children()) {
         const std::string_view nm = c.name();
         if (nm == "base") {
@@ -92,6 +92,9 @@ SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
             if (!fs::is_regular_file(plan.base)) throw c.error("<base> " + plan.base.string() + ": no such file");
         } else if (nm == "output") {
             out_text = c.text();
+        } else if (nm == "store") {
+            store_text = c.text();
+            if (store_text.empty()) throw c.error("<store> is empty: give a folder (relative to the study folder)");
         } else if (nm == "set") {
             plan.common.push_back(checked_override(c, c.text()));
         } else if (nm == "grid") {
@@ -127,7 +130,7 @@ SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
             else throw c.error("<repeats seeds=\"" + rule + "\">: allowed: same, distinct");
         } else {
             throw c.error("unknown element <" + std::string(nm) +
-                          "> in <sweep>; allowed: base, output, set, grid, variant, repeats");
+                          "> in <sweep>; allowed: base, output, store, set, grid, variant, repeats");
         }
     }
     if (plan.base.empty()) throw root.error("missing <base>: the settings file every run starts from");
@@ -168,6 +171,7 @@ SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
         }
     plan.study = !output.empty() ? fs::path(output) : !out_text.empty() ? fs::path(out_text) : fs::path("runs") / plan.name;
     plan.study = fs::absolute(plan.study).lexically_normal();
+    if (!store_text.empty()) plan.store = (plan.study / store_text).lexically_normal();
     return plan;
 }
 

@@ -13,6 +13,7 @@
 #include "cic/app/run.hpp"
 #include "cic/app/sweep.hpp"
 #include "cic/core/error.hpp"
+#include "cic/core/hash.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/io/xml.hpp"
 
@@ -107,7 +108,9 @@ std::string to_string(TaskStatus s) {
 }
 
 TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
-    const fs::path dir = plan.study / task.run_dir;
+    // Before its link is made, a stored task is read from the store (dry runs).
+    fs::path dir = plan.study / task.run_dir;
+    if (!plan.store.empty() && !fs::is_symlink(dir) && !fs::exists(dir)) dir = store_dir(plan, task);
     TaskState st;
     if (!fs::exists(dir / "settings.xml")) {
         st.status = fs::exists(dir / "failed.txt") ? TaskStatus::Failed : TaskStatus::Pending;
@@ -144,8 +147,30 @@ void write_index(const SweepPlan& plan) {
     io::xml::write_file_atomically(plan.study / "index.csv", text);
 }
 
+fs::path store_dir(const SweepPlan& plan, const SweepTask& task) {
+    if (plan.store.empty()) throw std::logic_error("store_dir: the sweep has no <store>");
+    io::Settings s = io::load_settings(plan.base, plan.overrides(task));
+    s.experiment.name.clear();
+    s.experiment.output_directory.clear();
+    s.experiment.workers = 0;
+    return plan.store / hex16(fnv1a_64(std::string("cic ") + CIC_VERSION + "\n" + io::write_settings(s)));
+}
+
+void link_to_store(const SweepPlan& plan) {
+    if (plan.store.empty()) return;
+    for (const SweepTask& task : plan.tasks()) {
+        const fs::path link = plan.study / task.run_dir;
+        if (fs::is_symlink(link) || fs::exists(link)) continue;
+        const fs::path target = store_dir(plan, task);
+        fs::create_directories(target);
+        fs::create_directories(link.parent_path());
+        fs::create_directory_symlink(target.lexically_relative(link.parent_path()), link);
+    }
+}
+
 int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool quiet, const std::string& executable) {
     const fs::path dir = plan.study / task.run_dir;
+    link_to_store(plan);
     fs::create_directories(dir);
     const FileLock lock(dir / ".lock", false);
     if (!lock.held()) {

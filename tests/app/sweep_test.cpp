@@ -127,6 +127,38 @@ TEST(Sweep, RunsEveryTaskInItsFolderAndMatchesAPlainRun) {
     fs::remove_all(dir);
 }
 
+// Two studies that share a run store and one configuration: the second
+// reuses the first's run (one folder, linked from both studies) and runs only
+// its own; a dry run already counts the shared run as done.
+TEST(Sweep, StudiesSharingAStoreRunACommonConfigurationOnce) {
+    const auto dir = temp_dir("sweep-store");
+    auto with_store = [](std::string text) {
+        return text.replace(text.find("</output>") + 9, 0, "\n  <store>../store</store>");
+    };
+    std::string b = tiny_sweep_text("b", dir / "b", 6, 2, 2.5,
+                                    "<grid><vary key=\"Neural.sampleAverageCount\">1 2</vary></grid>", 1, 4);
+    b.replace(b.find("<grid>"), 0, "<set>GP.elitism=0</set>\n  ");
+    write_text(dir / "a.xml", with_store(tiny_sweep_text("a", dir / "a", 6, 2, 2.5,
+                                                         "<grid><vary key=\"GP.elitism\">0 1</vary></grid>", 1, 4)));
+    write_text(dir / "b.xml", with_store(b));
+    ASSERT_EQ(run_command("sweep " + (dir / "a.xml").string(), dir / "a.log"), 0) << read_text(dir / "a.log");
+    ASSERT_EQ(run_command("sweep " + (dir / "b.xml").string() + " --dry-run", dir / "dry.log"), 0);
+    EXPECT_NE(read_text(dir / "dry.log").find("1 done, 1 pending"), std::string::npos) << read_text(dir / "dry.log");
+    EXPECT_NE(read_text(dir / "dry.log").find("run store " + (dir / "store").string()), std::string::npos);
+    ASSERT_EQ(run_command("sweep " + (dir / "b.xml").string(), dir / "b.log"), 0) << read_text(dir / "b.log");
+    EXPECT_NE(read_text(dir / "b.log").find("1 of 2 runs to do"), std::string::npos) << read_text(dir / "b.log");
+    const fs::path shared_a = dir / "a/runs/elitism=0/s4", shared_b = dir / "b/runs/sampleAverageCount=1/s4";
+    ASSERT_TRUE(fs::is_symlink(shared_a) && fs::is_symlink(shared_b));
+    EXPECT_EQ(fs::canonical(shared_a), fs::canonical(shared_b));
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir / "store"), fs::directory_iterator()), 3);
+    EXPECT_EQ(lines(read_text(shared_a / "run.log")) > 0, true);
+    EXPECT_NE(read_text(dir / "b/index.csv").find("runs/sampleAverageCount=1/s4,sampleAverageCount=1,1,4,done,"),
+              std::string::npos)
+        << read_text(dir / "b/index.csv");
+    EXPECT_NE(fs::canonical(dir / "a/runs/elitism=1/s4"), fs::canonical(dir / "b/runs/sampleAverageCount=2/s4"));
+    fs::remove_all(dir);
+}
+
 TEST(Sweep, InterruptedStudyResumesToTheSameBytes) {
     const auto dir = temp_dir("sweep-resume");
     write_text(dir / "ref.xml", sweep_text(dir / "reference", 6));

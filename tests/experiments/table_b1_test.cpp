@@ -20,9 +20,11 @@ TEST(TableB1, ReadsAsHyperGpWithTheThesisValues) {
     EXPECT_EQ(s.robot.robot_type, 1);
     // Every value the table gives is also cic's default: nothing else is needed.
     const io::Settings defaults;
-    for (const auto& k : io::settings_table())
-        if (k.section != "Experiment")
+    for (const auto& k : io::settings_table()) {
+        if (k.section != "Experiment") {
             EXPECT_EQ(k.get(s), k.get(defaults)) << "<" << k.section << "> " << k.key;
+        }
+    }
     // A symbolic-regression file without a type is still symbolic regression.
     const io::Settings sr = io::read_settings_string(
         "<settings><SymbolicRegression><target>koza-1</target></SymbolicRegression></settings>", "sr.xml");

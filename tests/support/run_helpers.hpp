@@ -11,6 +11,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cic/core/hash.hpp"
+
 namespace cic::testing {
 
 inline std::string cic_binary() {
@@ -130,11 +132,7 @@ inline std::string tiny_sweep_text(const std::string& name, const std::filesyste
 
 // 64-bit FNV-1a of a file's bytes, as 16 hex digits: the golden hashes.
 inline std::string file_hash(const std::filesystem::path& p) {
-    std::uint64_t h = 0xcbf29ce484222325ULL;
-    for (unsigned char c : read_text(p)) h = (h ^ c) * 0x100000001b3ULL;
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-    return buf;
+    return hex16(fnv1a_64(read_text(p)));
 }
 
 } // namespace cic::testing

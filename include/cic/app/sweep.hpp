@@ -42,6 +42,11 @@ struct SweepPlan {
     std::uint64_t first_seed = 1;
     SeedRule rule = SeedRule::Same;
     std::filesystem::path study;               // output folder (absolute)
+    // Optional run store shared by studies (<store>, relative to the study
+    // folder): a task runs in STORE/KEY, KEY fingerprinting its settings and
+    // seed, and its runs/CONFIG/sSEED is a link to it. Studies that share a
+    // configuration then run it once (docs/cluster.md, "Run store").
+    std::filesystem::path store;
 
     std::vector<SweepTask> tasks() const;
     // Every --set of a task: common, the configuration's, then its seed.
@@ -69,6 +74,16 @@ TaskState task_state(const SweepPlan& plan, const SweepTask& task);
 // Rewrites STUDY/index.csv (atomically, under a lock shared by every task):
 // run_dir,config,<varied keys>,seed,status,final_best,generations,evaluations,wall_seconds
 void write_index(const SweepPlan& plan);
+
+// The run store folder of a task (plan.store must be set): STORE/KEY, KEY the
+// FNV-1a of cic's version and the task's settings as stored (without the
+// run's name, output folder and worker count, which change no result).
+std::filesystem::path store_dir(const SweepPlan& plan, const SweepTask& task);
+
+// With a store: makes every task's runs/CONFIG/sSEED a relative link to its
+// store folder, unless the study already has a real folder there (a study
+// begun without a store keeps its runs). Without a store: nothing.
+void link_to_store(const SweepPlan& plan);
 
 // Runs one task in its folder: skipped when done, resumed in place from its
 // checkpoint when one exists, started afresh otherwise. `workers` > 0 sets
