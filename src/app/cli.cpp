@@ -135,6 +135,7 @@ int main(int argc, char** argv) {
     add_compare_command(app, ctx);
     add_trace_command(app, ctx);
     add_sweep_command(app, ctx);
+    add_assess_command(app, ctx);
 #ifdef CIC_HAVE_VIEWER
     add_view_command(app, ctx);
 #endif

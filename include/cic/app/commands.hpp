@@ -19,6 +19,7 @@ void add_plot_command(CLI::App& app, CommandContext& ctx);       // cmd_plot.cpp
 void add_compare_command(CLI::App& app, CommandContext& ctx);    // cmd_compare.cpp
 void add_trace_command(CLI::App& app, CommandContext& ctx);      // cmd_trace.cpp
 void add_sweep_command(CLI::App& app, CommandContext& ctx);      // cmd_sweep.cpp
+void add_assess_command(CLI::App& app, CommandContext& ctx);     // cmd_assess.cpp
 #ifdef CIC_HAVE_VIEWER
 void add_view_command(CLI::App& app, CommandContext& ctx);       // src/viz/cmd_view.cpp
 #endif

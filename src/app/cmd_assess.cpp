@@ -1,0 +1,53 @@
+// `cic assess RUN...`: is each run's best individual walking? One CSV row per
+// input (gait_assessment.hpp), to stdout or --out.
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "cic/app/command_guard.hpp"
+#include "cic/app/commands.hpp"
+#include "cic/app/gait_assessment.hpp"
+#include "cic/io/xml.hpp"
+
+namespace cic::app {
+
+void add_assess_command(CLI::App& app, CommandContext& ctx) {
+    struct Options {
+        std::vector<std::string> inputs;
+        std::string out;
+        double shaking_above = kShakingAboveHz;
+    };
+    auto opts = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand(
+        "assess", "Replay the best individual of each run folder (or population file) and say whether it walks: "
+                  "dominant command frequency, centre height, flipped, shaking (thesis 7.3.2.1). CSV, one row per input");
+    cmd->add_option("inputs", opts->inputs, "run folders or population XML files")->required();
+    cmd->add_option("--out", opts->out, "write the CSV here (atomically) instead of stdout");
+    cmd->add_option("--shaking-above", opts->shaking_above, "dominant command frequency, Hz, above which a gait is "
+                                                            "marked shaking")
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
+    cmd->callback([opts, &ctx] {
+        run_guarded(ctx, "assess", [&] {
+            std::ostringstream csv;
+            csv << "input,fitness,dominant_hz,mean_height,min_height,final_up,flipped,shaking\n";
+            for (const std::string& input : opts->inputs) {
+                const auto items = replay(input, "best", 1, 10.0, true);
+                const GaitAssessment a = assess_gait(items.at(0), opts->shaking_above);
+                csv << fmt::format("{},{:.17g},{:.4f},{:.4f},{:.4f},{:.4f},{},{}\n", input, a.fitness, a.dominant_hz,
+                                   a.mean_height, a.min_height, a.final_up, a.flipped ? 1 : 0, a.shaking ? 1 : 0);
+            }
+            if (opts->out.empty()) {
+                std::cout << csv.str();
+            } else {
+                io::xml::write_file_atomically(opts->out, csv.str());
+                if (!ctx.quiet) std::cerr << fmt::format("assessed {} gaits; wrote {}\n", opts->inputs.size(), opts->out);
+            }
+            return 0;
+        });
+    });
+}
+
+} // namespace cic::app
