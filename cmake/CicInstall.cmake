@@ -128,7 +128,7 @@ if(CIC_DPKG_SHLIBDEPS)
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)           # CPack appends them to the list below
   set(CPACK_DEBIAN_PACKAGE_DEPENDS "${_cic_tool_depends}")
 else()
-  set(_cic_lib_depends "libc6 (>= 2.35), libfmt9 (>= 9.1.0+ds1), libgcc-s1 (>= 3.0), libode8 (>= 2:0.16.2), libstdc++6 (>= 11), libxml2 (>= 2.7.4)")
+  set(_cic_lib_depends "libc6 (>= 2.35), libfmt9 (>= 9.1.0+ds1), libgcc-s1 (>= 3.0), libode8 (>= 2:0.16.2), libpagmo8 (>= 2.18.0), libstdc++6 (>= 11), libxml2 (>= 2.7.4)")
   if(CIC_WITH_VIEWER)
     string(APPEND _cic_lib_depends ", libopenscenegraph161 (>= 3.6.5+dfsg1)")
   endif()

@@ -8,7 +8,7 @@ PACKAGES=(
   # build
   build-essential cmake ninja-build pkg-config dpkg-dev
   # libraries
-  libode-dev libeigen3-dev libxml2-dev libcli11-dev libfmt-dev
+  libode-dev libeigen3-dev libxml2-dev libcli11-dev libfmt-dev libpagmo-dev
   libopenscenegraph-dev libopenmpi-dev openmpi-bin
   # tests and benchmarks
   libgtest-dev libgmock-dev googletest libbenchmark-dev libxml2-utils valgrind python3-scipy

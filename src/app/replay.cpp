@@ -11,6 +11,8 @@
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/sim/layout.hpp"
+#include "cic/io/gait_xml.hpp"
+#include "experiments/gait/setup.hpp"
 #include "experiments/hypergp/model.hpp"
 
 namespace cic::app {
@@ -47,14 +49,57 @@ Source locate(const std::string& what) {
     return s;
 }
 
+std::vector<std::string> joint_names_of(const sim::RobotSpec& robot) {
+    std::vector<std::string> names;
+    for (int m : robot.actuated()) {
+        const auto& mod = robot.modules[static_cast<std::size_t>(m)];
+        names.push_back(mod.name.empty() ? fmt::format("m{}", m) : mod.name);
+    }
+    return names;
+}
+
+int centre_body_of(const sim::RobotSpec& robot) {
+    const sim::Layout layout = sim::make_layout(robot);
+    return layout.geoms[static_cast<std::size_t>(layout.chassis_geom[static_cast<std::size_t>(robot.centre)])].body;
+}
+
+// A gait run: its best gait so far (the checkpoint's champion) is the one replay.
+std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& settings, const std::string& individual,
+                                    double fps, bool trace) {
+    if (individual != "best")
+        throw InputError("a gait run keeps one gait to replay: use --individual best", src.population.string());
+    const gait::Setup setup = gait::Setup::from_settings(settings);
+    const io::GaitFile g = io::load_gait(src.population);
+    io::check_compatible(g, settings, setup.encoding.dimension(), src.population.string());
+    sim::GaitController controller(setup.encoding.decode(g.champion.x));
+    sim::EvalOptions opt;
+    opt.record_fps = fps;
+    opt.record_trace = trace;
+    sim::EvalResult r = sim::evaluate(setup.robot, controller, setup.sim, opt);
+    ReplayItem item;
+    item.label = fmt::format("generation {}, best {} gait", g.generation, g.optimizer);
+    item.stored_fitness = g.champion.fitness;
+    item.generation = g.generation;
+    if (r.recording) item.recording = *r.recording;
+    item.trace = r.trace;
+    if (trace)
+        for (const auto& row : item.trace) item.raw_outputs.push_back(row.desired);   // open loop: the commands
+    item.replayed_fitness = r.fitness;
+    item.centre_body = centre_body_of(setup.robot);
+    item.joint_names = joint_names_of(setup.robot);
+    return {std::move(item)};
+}
+
 } // namespace
 
 std::vector<ReplayItem> replay(const std::string& source, const std::string& individual, int count, double fps,
                                bool trace) {
     const Source src = locate(source);
     const io::Settings settings = io::read_settings(src.settings);
+    if (settings.experiment.type == io::ExperimentType::Gait) return replay_gait(src, settings, individual, fps, trace);
     if (settings.experiment.type != io::ExperimentType::HyperGP)
-        throw InputError("only HyperGP runs can be replayed (this run is symbolic regression)", src.settings.string());
+        throw InputError("only robot runs (HyperGP, gait) can be replayed; this run is symbolic regression",
+                         src.settings.string());
     const io::PopulationFile pop = io::load_population(src.population);
     io::check_compatible(pop, settings, src.population.string());
 
@@ -78,13 +123,8 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
     }
 
     const hypergp::Model model = hypergp::Model::from_settings(settings);
-    const sim::Layout layout = sim::make_layout(model.robot);
-    const int centre_body = layout.geoms[static_cast<std::size_t>(layout.chassis_geom[static_cast<std::size_t>(model.robot.centre)])].body;
-    std::vector<std::string> joint_names;
-    for (int m : model.robot.actuated()) {
-        const auto& mod = model.robot.modules[static_cast<std::size_t>(m)];
-        joint_names.push_back(mod.name.empty() ? fmt::format("m{}", m) : mod.name);
-    }
+    const int centre_body = centre_body_of(model.robot);
+    const std::vector<std::string> joint_names = joint_names_of(model.robot);
 
     std::vector<ReplayItem> items;
     for (const auto& ind : chosen) {

@@ -13,120 +13,39 @@
 #ifdef CIC_HAVE_MPI
 #include "cic/app/mpi_pool.hpp"
 #endif
-#include "cic/app/plot.hpp"
 #include "cic/app/progress.hpp"
-#include "cic/app/replay.hpp"
-#include "cic/io/povray.hpp"
-#ifdef CIC_HAVE_VIEWER
-#include "cic/viz/viewer.hpp"
-#endif
 #include "cic/core/process_pool.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/io/stats_csv.hpp"
 #include "cic/io/xml.hpp"
+#include "cic/io/gait_xml.hpp"
 #include "experiments/experiment.hpp"
+#include "experiments/gait/setup.hpp"
+#include "run_support.hpp"
 
 namespace cic::app {
-namespace {
 
-std::atomic<bool> g_interrupted{false};
-std::atomic<int> g_signal{0};   // SIGINT or SIGTERM, whichever came first
-
-// Ctrl-C or a batch scheduler's SIGTERM (Slurm sends it before a kill): finish the
-// generation under way, write the checkpoint and leave. A second signal of either
-// kind ends the process at once (the handlers are reset to the default).
-extern "C" void on_stop_signal(int sig) {
-    int none = 0;
-    g_signal.compare_exchange_strong(none, sig);
-    g_interrupted.store(true);
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-}
-
-// Restores the previous handlers when the run ends.
-struct StopSignalGuard {
-    using Handler = void (*)(int);
-    Handler previous_int, previous_term;
-    StopSignalGuard() {
-        g_interrupted = false;
-        g_signal = 0;
-        previous_int = std::signal(SIGINT, on_stop_signal);
-        previous_term = std::signal(SIGTERM, on_stop_signal);
-    }
-    ~StopSignalGuard() {
-        std::signal(SIGINT, previous_int);
-        std::signal(SIGTERM, previous_term);
-    }
-};
-
-std::string population_name(int generation) { return fmt::format("gen-{:04d}.xml", generation); }
-
-// population.xml becomes a second name of the checkpoint just written (a hard
-// link renamed into place: atomic, and no second copy to write and fsync). Where
-// links are not supported, it is written as a copy.
-void point_latest_at(const std::filesystem::path& checkpoint, const std::filesystem::path& latest,
-                     const std::string& text) {
-    const auto tmp = latest.string() + ".link-" + std::to_string(::getpid());
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    std::filesystem::create_hard_link(checkpoint, tmp, ec);
-    if (!ec) std::filesystem::rename(tmp, latest, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        io::xml::write_file_atomically(latest, text);
-    }
-}
-
-// What the thesis did when a run ended (Appendix B): plots (useMatlabPlot, now
-// gnuplot), POV-Ray scenes of the best (generatePovrayFiles) and showing the best
-// (isAutonomousExperiment = 0). A failure here is reported, never loses the run.
-template <class Say>
-void finish_run(const io::Settings& s, const RunOptions& opt, Say& say) {
-    const bool hypergp = s.experiment.type == io::ExperimentType::HyperGP;
-    auto attempt = [&](const char* what, auto&& action) {
-        try {
-            action();
-        } catch (const std::exception& e) {
-            say(std::string("note: ") + what + " failed: " + e.what());
-        }
-    };
-    if (s.control.plot)
-        attempt("the plot (useMatlabPlot)", [&] {
-            plot_runs({opt.run_dir}, opt.run_dir / "fitness.svg");
-            say("plot written to " + (opt.run_dir / "fitness.svg").string());
-        });
-    if (s.robot.generate_povray && hypergp)
-        attempt("POV-Ray export (generatePovrayFiles)", [&] {
-            auto items = replay(opt.run_dir.string(), "best", 1, 25.0, false);
-            io::PovrayOptions po;
-            po.centre_body = items.front().centre_body;
-            po.title = items.front().label;
-            const int n = io::write_povray(items.front().recording, opt.run_dir / "povray", 25.0, po);
-            say(fmt::format("{} POV-Ray scenes of the best written to {}; render them with scripts/render-video.sh {}",
-                            n, (opt.run_dir / "povray").string(), (opt.run_dir / "povray").string()));
-        });
-    if (!s.control.autonomous && hypergp) {
-#ifdef CIC_HAVE_VIEWER
-        attempt("showing the best (isAutonomousExperiment=0)", [&] {
-            std::vector<viz::ViewEntry> entries;
-            for (auto& item : replay(opt.run_dir.string(), "best", 5, 30.0, false))
-                entries.push_back({{item.generation, std::to_string(item.id), item.stored_fitness},
-                                   std::move(item.recording), item.centre_body});
-            viz::Viewer(std::move(entries)).run();
-        });
-#else
-        say("note: isAutonomousExperiment=0 but this cic was built without the viewer (CIC_WITH_VIEWER)");
-#endif
-    }
-}
-
-} // namespace
+using detail::finish_run;
+using detail::point_latest_at;
+using detail::population_name;
+using detail::StopSignalGuard;
 
 PreparedRun prepare_run(io::Settings s) {
     experiments::check_inputs(s);
     PreparedRun p;
-    if (!s.control.population_load_from.empty()) {
+    if (!s.control.population_load_from.empty() && s.experiment.type == io::ExperimentType::Gait) {
+        const std::string from = s.control.population_load_from;
+        try {
+            io::GaitFile loaded = io::load_gait(from);
+            const gait::Setup setup = gait::Setup::from_settings(s);
+            io::check_compatible(loaded, s, setup.encoding.dimension(), from);
+            (void)gait::resume_search(setup, loaded, from);   // replays: a checkpoint that does not is refused now
+            p.gait_resume = std::move(loaded);
+        } catch (const InputError& e) {
+            throw InputError("<Control> populationXmlLoadFrom: " + e.message(), e.file(), e.line());
+        }
+    } else if (!s.control.population_load_from.empty()) {
         const std::string from = s.control.population_load_from;   // absolute: resolved when read
         try {
             io::PopulationFile loaded = io::load_population(from);
@@ -142,6 +61,7 @@ PreparedRun prepare_run(io::Settings s) {
 
 int run_experiment(PreparedRun prepared, const RunOptions& opt) {
     namespace fs = std::filesystem;
+    if (prepared.settings.experiment.type == io::ExperimentType::Gait) return detail::run_gait(std::move(prepared), opt);
     const io::Settings& s = prepared.settings;
     const fs::path base_dir = s.source_file.empty() ? fs::current_path() : fs::path(s.source_file).parent_path();
     const int workers = s.experiment.workers > 0 ? s.experiment.workers : hardware_threads();
@@ -196,7 +116,7 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
     }
 
     say(fmt::format("cic {}: {} experiment, seed {}, {} worker{}, output {}", CIC_VERSION,
-                    s.experiment.type == io::ExperimentType::HyperGP ? "hypergp" : "symreg", state.seed, workers,
+                    io::describe(s).experiment, state.seed, workers,
                     workers == 1 ? "" : "s", opt.run_dir.string()));
     if (!mpi_note.empty()) say(mpi_note);
 
@@ -242,7 +162,7 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
         point_latest_at(checkpoint, opt.run_dir / "population.xml", text);
     };
     StopSignalGuard stop_signals;
-    hooks.stop_requested = &g_interrupted;
+    hooks.stop_requested = &detail::stop_requested();
 
     auto result = gp::evolve(s.gp, s.bloat, stop, ps, experiment->evaluator(), state, std::move(start), hooks);
 
@@ -263,7 +183,7 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
     std::fputs(summary.c_str(), stdout);   // the result always reaches stdout, even with --quiet
     std::fflush(stdout);
     if (result.reason == gp::StopReason::Interrupted) {
-        const bool term = g_signal.load() == SIGTERM;
+        const bool term = detail::stop_signal() == SIGTERM;
         warn(std::string("interrupted by ") + (term ? "SIGTERM" : "SIGINT") + ": population saved to " +
              (opt.run_dir / "population.xml").string() + "; resume with Control.populationXmlLoadFrom");
         return term ? 143 : 130;

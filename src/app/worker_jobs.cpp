@@ -19,6 +19,7 @@ std::map<std::string, JobHandler> make_worker_job_kinds(const WorkerContext& con
         return io::read_settings(context.settings_file);
     });
     kinds["sine"] = &sim::run_sine_job;   // robot + SimConfig + sine joints -> fitness reply
+    kinds["gait"] = &sim::run_gait_job;   // robot + SimConfig + gait spec -> fitness reply
     return kinds;
 }
 

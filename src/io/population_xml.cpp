@@ -28,7 +28,14 @@ std::string hash_text(std::uint64_t h) {
     return buf;
 }
 
-std::string experiment_name(ExperimentType t) { return t == ExperimentType::HyperGP ? "hypergp" : "symreg"; }
+std::string experiment_name(ExperimentType t) {
+    switch (t) {
+    case ExperimentType::HyperGP: return "hypergp";
+    case ExperimentType::Symreg: return "symreg";
+    case ExperimentType::Gait: return "gait";
+    }
+    return "?";
+}
 
 std::vector<std::string> function_names(const Settings& s) {
     std::vector<std::string> out;

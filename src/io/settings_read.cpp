@@ -52,17 +52,27 @@ std::string unknown_section_message(std::string_view given) {
 
 std::string unknown_key_message(std::string_view section, std::string_view given) {
     std::string msg = "unknown key <" + std::string(section) + "> " + std::string(given);
+    // The nearest key, preferring this section; a key that contains what was
+    // typed (populationSize in generatedPopulationSize) counts as near.
+    auto nearest = [&](bool this_section_only) -> const SettingKey* {
+        const SettingKey* best = nullptr;
+        std::size_t best_d = std::string::npos;
+        for (const auto& k : settings_table()) {
+            if (this_section_only && k.section != section) continue;
+            auto d = edit_distance(given, k.key) * 2 + (k.section == section ? 0 : 1);
+            bool contains = given.size() >= 4 && (lower(k.key).find(lower(given)) != std::string::npos);
+            if (contains) d = std::min<std::size_t>(d, 1);
+            if (d < best_d) best_d = d, best = &k;
+        }
+        return best && close_enough(given, best->key) ? best : nullptr;
+    };
     for (const auto& k : settings_table())   // right key, wrong section
-        if (k.key == given) return msg + "; '" + k.key + "' belongs in <" + k.section + ">";
-    const SettingKey* best = nullptr;
-    std::size_t best_d = std::string::npos;
-    for (const auto& k : settings_table()) {
-        auto d = edit_distance(given, k.key) * 2 + (k.section == section ? 0 : 1);   // prefer this section
-        bool contains = given.size() >= 4 && (lower(k.key).find(lower(given)) != std::string::npos);
-        if (contains) d = std::min<std::size_t>(d, 1);
-        if (d < best_d) best_d = d, best = &k;
-    }
-    if (best && close_enough(given, best->key)) {
+        if (k.key == given) {
+            msg += "; '" + k.key + "' belongs in <" + k.section + ">";
+            if (const SettingKey* here = nearest(true)) msg += ", or did you mean " + here->key + "?";
+            return msg;
+        }
+    if (const SettingKey* best = nearest(false)) {
         if (best->section == section) return msg + "; did you mean " + best->key + "?";
         return msg + "; did you mean <" + best->section + "> " + best->key + "?";
     }
@@ -184,10 +194,13 @@ void apply_layer(Settings& s, std::vector<Assignment> layer, detail::Locations& 
 }
 
 // Experiment.type when the file does not give it: a <SymbolicRegression> section
-// means symbolic regression, anything else HyperGP (docs/settings.md).
+// means symbolic regression, a <Gait> section the gait baseline, anything else
+// HyperGP (docs/settings.md).
 void infer_experiment_type(Settings& s, const xml::Document& doc) {
-    for (const auto& sec : doc.root().children())
+    for (const auto& sec : doc.root().children()) {
         if (sec.name() == "SymbolicRegression") s.experiment.type = ExperimentType::Symreg;
+        if (sec.name() == "Gait") s.experiment.type = ExperimentType::Gait;
+    }
 }
 
 } // namespace

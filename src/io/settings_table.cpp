@@ -280,10 +280,13 @@ std::vector<SettingKey> build_table() {
     std::vector<SettingKey> t;
     // ---- Experiment (ours)
     t.push_back(enum_row<ExperimentType>("Experiment", "type",
-                                         {{ExperimentType::HyperGP, {"hypergp"}}, {ExperimentType::Symreg, {"symreg"}}},
-                                         "Which experiment runs: HyperGP robot control or symbolic regression. "
-                                         "Not given: symreg when the file has a <SymbolicRegression> section, "
-                                         "else hypergp (so a file of thesis table B.1 keys runs HyperGP)",
+                                         {{ExperimentType::HyperGP, {"hypergp"}}, {ExperimentType::Symreg, {"symreg"}},
+                                          {ExperimentType::Gait, {"gait"}}},
+                                         "Which experiment runs: HyperGP robot control, symbolic regression, or an "
+                                         "optimised open-loop gait (the baseline of docs/baselines.md). Not given: "
+                                         "symreg when the file has a <SymbolicRegression> section, gait when it has "
+                                         "a <Gait> section, else hypergp (so a file of thesis table B.1 keys runs "
+                                         "HyperGP)",
                                          FIELD(experiment.type)));
     {
         auto k = row("Experiment", "seed", ValueType::UInt64, "Master random seed; the same seed gives the same run");
@@ -503,6 +506,32 @@ std::vector<SettingKey> build_table() {
                          FIELD(symreg.benchmark_sampling)));
     t.push_back(double_row("SymbolicRegression", "hitTolerance", kNonNegative,
                            "A point is a hit when |error| <= this", FIELD(symreg.hit_tolerance)));
+    // ---- Gait (ours: the parameter-optimised baseline)
+    t.push_back(enum_row<GaitOptimizer>("Gait", "optimizer",
+                                        {{GaitOptimizer::Cmaes, {"cmaes"}}, {GaitOptimizer::Xnes, {"xnes"}},
+                                         {GaitOptimizer::Sade, {"sade"}}},
+                                        "pagmo2 optimiser of the gait parameters: CMA-ES, xNES or self-adaptive DE",
+                                        FIELD(gait.optimizer)));
+    {
+        auto k = row("Gait", "evaluations", ValueType::Int,
+                     "Budget of evaluations: the run stops before a generation that would exceed it");
+        k.min = 1;
+        k.max = 100000000;
+        const SettingKey bounds = k;
+        k.get = [](const Settings& s) { return std::to_string(s.gait.evaluations); };
+        k.set = [bounds](Settings& s, std::string_view v) { s.gait.evaluations = detail::parse_integer(bounds, v); };
+        t.push_back(std::move(k));
+    }
+    t.push_back(int_row("Gait", "populationSize", 0, 100000,
+                        "Candidates per generation (lambda); 0 = 4 + floor(3 ln n) for n parameters, at least 7 "
+                        "for sade", FIELD(gait.population_size)));
+    t.push_back(bool_row("Gait", "secondHarmonic", "Add a second harmonic b sin(4 pi f t + psi) to every joint",
+                         FIELD(gait.second_harmonic)));
+    t.push_back(double_row("Gait", "sigma0", Bounds{0.0, 1.0, true, false},
+                           "Initial step of cmaes and xnes, as a fraction of each parameter's range",
+                           FIELD(gait.sigma0)));
+    t.push_back(double_row("Gait", "frequencyMin", kPositive, "Lowest gait frequency, Hz", FIELD(gait.frequency_min)));
+    t.push_back(double_row("Gait", "frequencyMax", kPositive, "Highest gait frequency, Hz", FIELD(gait.frequency_max)));
     return t;
 }
 
@@ -528,7 +557,7 @@ std::string_view type_name(ValueType t) {
 
 const std::vector<std::string>& settings_sections() {
     static const std::vector<std::string> s{"Experiment", "GP",     "Simulator",          "Control",
-                                            "BloatControl", "Neural", "SymbolicRegression"};
+                                            "BloatControl", "Neural", "SymbolicRegression", "Gait"};
     return s;
 }
 

@@ -103,6 +103,14 @@ void validate(const Settings& s, const Locations& locs) {
     c.require(s.symreg.range_min < s.symreg.range_max,
               {"SymbolicRegression.rangeMin", "SymbolicRegression.rangeMax"}, "the sampled range is empty");
 
+    c.require(s.gait.frequency_min <= s.gait.frequency_max, {"Gait.frequencyMin", "Gait.frequencyMax"},
+              "the frequency range is empty");
+    c.require(s.experiment.type != ExperimentType::Gait || s.gait.population_size == 0 ||
+                  s.gait.population_size >= (s.gait.optimizer == GaitOptimizer::Sade ? 7 : 5),
+              {"Gait.populationSize", "Gait.optimizer"}, "pagmo's cmaes and xnes need at least 5 candidates, sade 7");
+    c.require(s.experiment.type != ExperimentType::Gait || s.gait.population_size <= s.gait.evaluations,
+              {"Gait.populationSize", "Gait.evaluations"}, "the budget does not cover one generation");
+
     const auto& name = s.experiment.name;
     c.require(name.find('/') == std::string::npos && name != "." && name != "..", {"Experiment.name"},
               "the run name becomes a folder name and cannot contain '/'");

@@ -199,4 +199,38 @@ std::string run_sine_job(const std::string& body) {
     return format_eval_reply(evaluate(robot, controller, cfg));
 }
 
+std::string make_gait_job(const RobotSpec& robot, const SimConfig& cfg, const GaitSpec& gait) {
+    std::ostringstream out;
+    out << "gait\n";
+    write_robot_text(out, robot);
+    write_config_text(out, cfg);
+    out << "frequency " << hexfloat(gait.frequency) << "\njoints " << gait.joints.size() << '\n';
+    for (const GaitJoint& j : gait.joints)
+        out << hexfloat(j.amplitude) << ' ' << hexfloat(j.phase) << ' ' << hexfloat(j.offset) << ' '
+            << hexfloat(j.amplitude2) << ' ' << hexfloat(j.phase2) << '\n';
+    return out.str();
+}
+
+std::string run_gait_job(const std::string& body) {
+    std::istringstream in(body);
+    const RobotSpec robot = read_robot_text(in);
+    const SimConfig cfg = read_config_text(in);
+    GaitSpec gait;
+    expect_word(in, "frequency");
+    gait.frequency = read_double(in);
+    expect_word(in, "joints");
+    const long n = read_int(in);
+    if (n < 1 || n > 100000) bad("bad joint count");
+    gait.joints.resize(static_cast<std::size_t>(n));
+    for (GaitJoint& j : gait.joints) {
+        j.amplitude = read_double(in);
+        j.phase = read_double(in);
+        j.offset = read_double(in);
+        j.amplitude2 = read_double(in);
+        j.phase2 = read_double(in);
+    }
+    GaitController controller(std::move(gait));
+    return format_eval_reply(evaluate(robot, controller, cfg));
+}
+
 } // namespace cic::sim

@@ -43,7 +43,9 @@ TEST(SettingsErrors, MalformedXmlNamesFileAndLine) {
 TEST(SettingsErrors, UnknownKeySuggestsTheNearest) {
     auto m = error_of(gp("<tournamentSize>5</tournamentSize>"));
     EXPECT_HAS(m, "bad.xml:3: unknown key <GP> tournamentSize; did you mean tournament_size?");
-    m = error_of(gp("<populationSize>5</populationSize>"));
+    m = error_of(gp("<populationSize>5</populationSize>"));   // a key of <Gait>, and near one of <GP>
+    EXPECT_HAS(m, "'populationSize' belongs in <Gait>, or did you mean generatedPopulationSize?");
+    m = error_of(gp("<generatedPopulatonSize>5</generatedPopulatonSize>"));
     EXPECT_HAS(m, "did you mean generatedPopulationSize?");
     m = error_of(gp("<sample_step>0.5</sample_step>"));
     EXPECT_HAS(m, "'sample_step' belongs in <Simulator>");

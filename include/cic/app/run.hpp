@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "cic/io/gait_xml.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings.hpp"
 
@@ -24,6 +25,7 @@ struct RunOptions {
 struct PreparedRun {
     io::Settings settings;
     std::optional<io::PopulationFile> resume;   // populationXmlLoadFrom, parsed and checked
+    std::optional<io::GaitFile> gait_resume;    // the same, for the gait experiment
 };
 
 // Checks every input of a run: the experiment's own (robot file and its

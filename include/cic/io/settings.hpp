@@ -12,7 +12,7 @@
 
 namespace cic::io {
 
-enum class ExperimentType { Symreg, HyperGP };
+enum class ExperimentType { Symreg, HyperGP, Gait };
 
 struct ExperimentConfig {
     ExperimentType type = ExperimentType::HyperGP;   // see the inference in settings_read
@@ -38,6 +38,21 @@ struct RobotConfig {
     bool generate_povray = false;        // generatePovrayFiles
 };
 
+// The `gait` experiment (experiments/gait/): an open-loop gait per joint
+// (sim::GaitSpec) whose parameters a pagmo2 optimiser tunes, a baseline for
+// HyperGP at the same budget of evaluations (docs/baselines.md).
+enum class GaitOptimizer { Cmaes, Xnes, Sade };
+
+struct GaitConfig {
+    GaitOptimizer optimizer = GaitOptimizer::Cmaes;
+    long evaluations = 2500;          // budget; whole generations only, never exceeded
+    int population_size = 0;          // lambda; 0 = 4 + floor(3 ln n) (at least 7 for SADE)
+    bool second_harmonic = false;     // adds b_j sin(4 pi f t + psi_j) per joint
+    double sigma0 = 0.25;             // CMA-ES / xNES initial step, as a fraction of each parameter's range
+    double frequency_min = 0.1;       // Hz, bounds of the shared frequency
+    double frequency_max = 3.0;
+};
+
 struct Settings {
     ExperimentConfig experiment;
     gp::GpConfig gp;
@@ -47,6 +62,7 @@ struct Settings {
     ControlConfig control;
     nn::NeuralConfig neural;
     symreg::SymregConfig symreg;
+    GaitConfig gait;
     std::string source_file;             // where they were read from (empty = defaults)
 };
 

@@ -40,6 +40,35 @@ private:
     std::vector<SineJoint> params_;
 };
 
+// An open-loop parameterised gait (the `gait` experiment's controller, a
+// baseline for evolved networks): one shared frequency f, and per joint
+//   desired_j(t) = offset_j + a_j sin(2 pi f t + phi_j) + b_j sin(4 pi f t + psi_j),
+// the second harmonic (b, psi) being optional (b = 0). The simulator clamps the
+// result to the servo's range.
+struct GaitJoint {
+    double amplitude = 0.0;    // a, rad
+    double phase = 0.0;        // phi, rad
+    double offset = 0.0;       // rad
+    double amplitude2 = 0.0;   // b, rad (second harmonic)
+    double phase2 = 0.0;       // psi, rad
+};
+
+struct GaitSpec {
+    double frequency = 0.5;    // Hz, shared by every joint
+    std::vector<GaitJoint> joints;
+};
+
+// Joints beyond spec.joints.size() hold 0. Throws std::invalid_argument for an
+// empty spec, a negative or non-finite frequency or a non-finite parameter.
+class GaitController final : public Controller {
+public:
+    explicit GaitController(GaitSpec spec);
+    void reset(std::size_t) override {}
+    void step(double t, std::span<const double>, std::span<double> desired) override;
+private:
+    GaitSpec spec_;
+};
+
 // A tripod gait for the legged presets: `legs` legs of `joints_per_leg` joints each,
 // in preset order (legs in pairs along the torso, sides +x then -x). The first joint
 // of a leg lifts it; its other joints lag by a quarter period; neighbouring legs are

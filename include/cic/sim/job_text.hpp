@@ -24,7 +24,7 @@ SimConfig read_config_text(std::istream& in);
 std::string hexfloat(double v);        // "%a"
 double parse_hexfloat(const std::string& s);   // also accepts decimal, "inf"
 
-// The one reply of every evaluation job (sine, hypergp), whether it ran in a
+// The one reply of every evaluation job (sine, gait, hypergp), whether it ran in a
 // worker process or on an MPI rank: fitness (exact), failed flag, failure text.
 struct EvalReply {
     double fitness = 0.0;
@@ -40,5 +40,10 @@ std::string make_sine_job(const RobotSpec& robot, const SimConfig& cfg,
                           const std::vector<SineJoint>& joints);
 // Runs a "sine" job body (the text after the first line); returns the reply.
 std::string run_sine_job(const std::string& body);
+
+// Job kind "gait": the first line is "gait", then robot, config and the spec.
+std::string make_gait_job(const RobotSpec& robot, const SimConfig& cfg, const GaitSpec& gait);
+// Runs a "gait" job body; returns the reply.
+std::string run_gait_job(const std::string& body);
 
 } // namespace cic::sim

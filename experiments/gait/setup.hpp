@@ -1,0 +1,65 @@
+#pragma once
+// The gait experiment's wiring: settings -> robot, simulator, encoding and
+// optimiser; candidates -> "gait" jobs for the worker processes or MPI ranks
+// (the same runners and reply as HyperGP, so fitness bits do not depend on
+// where or on how many workers a candidate ran).
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "cic/core/job_runner.hpp"
+#include "cic/io/gait_xml.hpp"
+#include "cic/io/settings.hpp"
+#include "cic/sim/robot.hpp"
+#include "experiments/experiment.hpp"
+#include "experiments/gait/encoding.hpp"
+#include "experiments/gait/search.hpp"
+
+namespace cic::gait {
+
+struct Setup {
+    sim::RobotSpec robot;
+    sim::SimConfig sim;
+    Encoding encoding;
+    Optimizer optimizer = Optimizer::Cmaes;
+    int population = 0;          // resolved (Gait.populationSize or the default)
+    double sigma0 = 0.25;
+
+    // The robot of the settings (file or preset with useMiddleLegs, as HyperGP
+    // builds it). Throws cic::InputError for a robot that cannot be loaded.
+    static Setup from_settings(const io::Settings& s);
+};
+
+Optimizer optimizer_of(io::GaitOptimizer o);
+
+// The robot (with at least one joint) and the population size; writes nothing.
+void check_inputs(const io::Settings& s);
+
+std::string make_job(const Setup& setup, std::span<const double> x);
+
+// The search a checkpoint describes, rebuilt by replaying its history from the
+// seed (no evaluation), and checked against the candidates and champion the
+// checkpoint lists. Throws cic::InputError naming `file` when they differ (a
+// checkpoint edited by hand, or made by another cic or pagmo).
+Search resume_search(const Setup& setup, const io::GaitFile& checkpoint, const std::string& file);
+
+// Evaluates batches of unit-box points on the context's runner. A job that
+// fails in the runner (its worker crashed or hung twice) scores the
+// simulator's failure fitness, with a warning, as in HyperGP.
+class Evaluator {
+public:
+    Evaluator(const experiments::Context& ctx, const Setup& setup);
+    ~Evaluator();
+    std::vector<double> operator()(const std::vector<std::vector<double>>& xs);
+    long failed() const { return failed_; }   // evaluations that failed (physics or worker)
+
+private:
+    const Setup& setup_;
+    std::function<void(const std::string&)> warn_;
+    std::unique_ptr<JobRunner> runner_;
+    long failed_ = 0;
+};
+
+} // namespace cic::gait

@@ -1,0 +1,46 @@
+#pragma once
+// Checkpoints of the gait experiment (population.xml and populations/gen-NNNN.xml
+// of a gait run): the optimiser's candidates, the best point found, counters,
+// and the fitness history, which with the seed is the optimiser's whole state
+// (experiments/gait/search.hpp): a resume re-runs the optimiser from them and
+// continues bit for bit. Numbers are written with 17 significant digits (exact
+// round trip).
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cic/io/settings.hpp"
+
+namespace cic::io {
+
+struct GaitPoint {
+    std::vector<double> x;    // unit-box parameters (experiments/gait/encoding.hpp)
+    double fitness = 0.0;
+};
+
+struct GaitFile {
+    std::string settings_digest;
+    std::string optimizer;               // cmaes | xnes | sade
+    std::uint64_t seed = 0;
+    int generation = 0;
+    long evaluations = 0;
+    std::size_t dimension = 0;
+    std::vector<GaitPoint> population;
+    GaitPoint champion;                  // the best point of the run so far
+    std::vector<double> history;         // every fitness evaluated, in order
+};
+
+std::string to_xml(const GaitFile& g);
+// Throws InputError "FILE:LINE: ..." for anything malformed, truncated or inconsistent.
+GaitFile parse_gait(std::string_view text, const std::string& name);
+GaitFile load_gait(const std::filesystem::path& path);
+// Whether the file's root element is a gait checkpoint (cheap: reads the start).
+bool is_gait_file(const std::filesystem::path& path);
+
+// Refuses a checkpoint of another optimiser or parameter count than the
+// settings give (dimension = the parameters these settings make).
+void check_compatible(const GaitFile& g, const Settings& s, std::size_t dimension, const std::string& file);
+
+} // namespace cic::io

@@ -1,0 +1,207 @@
+// The gait experiment's loop: a pagmo2 optimiser tunes an open-loop gait
+// (experiments/gait/), one generation at a time, with the same run folder,
+// statistics, checkpoints, progress and stop signals as the GP experiments.
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "cic/app/progress.hpp"
+#include "cic/core/process_pool.hpp"
+#include "cic/io/gait_xml.hpp"
+#include "cic/io/population_xml.hpp"
+#include "cic/io/stats_csv.hpp"
+#include "cic/io/xml.hpp"
+#include "experiments/gait/setup.hpp"
+#include "run_support.hpp"
+#ifdef CIC_HAVE_MPI
+#include "cic/app/mpi_pool.hpp"
+#include "cic/io/settings_io.hpp"
+#endif
+
+namespace cic::app::detail {
+namespace {
+
+// Statistics of the current candidates, in the columns GP runs write (the
+// tree columns stay 0).
+gp::GenerationRecord record_of(const gait::Search& search, long failed, double wall, double generation_seconds) {
+    gp::GenerationRecord r;
+    r.generation = search.generation();
+    std::vector<double> f;
+    for (const auto& c : search.population()) f.push_back(c.fitness);
+    std::sort(f.begin(), f.end());
+    r.best = f.back();
+    double sum = 0;
+    for (double v : f) sum += v;
+    r.mean = sum / static_cast<double>(f.size());
+    const std::size_t n = f.size();
+    r.median = n % 2 ? f[n / 2] : 0.5 * (f[n / 2 - 1] + f[n / 2]);
+    r.evaluations = search.evaluations();
+    r.failed = static_cast<int>(failed);
+    r.wall_seconds = wall;
+    r.generation_seconds = generation_seconds;
+    return r;
+}
+
+io::GaitFile checkpoint_of(const gait::Search& search, const io::Settings& s) {
+    io::GaitFile g;
+    g.settings_digest = io::settings_digest(s);
+    g.optimizer = gait::to_string(search.optimizer());
+    g.seed = search.seed();
+    g.generation = search.generation();
+    g.evaluations = search.evaluations();
+    g.dimension = search.dimension();
+    for (const auto& c : search.population()) g.population.push_back({c.x, c.fitness});
+    g.champion = {search.champion().x, search.champion().fitness};
+    g.history = search.history();
+    return g;
+}
+
+std::string describe_gait(const sim::GaitSpec& g) {
+    std::string out = fmt::format("frequency {:.4f} Hz; per joint amplitude/phase/offset", g.frequency);
+    for (const auto& j : g.joints) {
+        out += fmt::format(" [{:.3f} {:.3f} {:.3f}", j.amplitude, j.phase, j.offset);
+        if (j.amplitude2 != 0 || j.phase2 != 0) out += fmt::format(" {:.3f} {:.3f}", j.amplitude2, j.phase2);
+        out += "]";
+    }
+    return out;
+}
+
+} // namespace
+
+int run_gait(PreparedRun prepared, const RunOptions& opt) {
+    namespace fs = std::filesystem;
+    using Clock = std::chrono::steady_clock;
+    const io::Settings& s = prepared.settings;
+    const fs::path base_dir = s.source_file.empty() ? fs::current_path() : fs::path(s.source_file).parent_path();
+    const int workers = s.experiment.workers > 0 ? s.experiment.workers : hardware_threads();
+
+    std::ofstream log(opt.run_dir / "run.log", std::ios::app);
+    ProgressPrinter progress = ProgressPrinter::for_stderr(
+        opt.quiet ? Verbosity::Quiet : (opt.verbose ? Verbosity::Verbose : Verbosity::Normal));
+    auto say = [&](const std::string& line) {
+        log << line << '\n' << std::flush;
+        progress.message(line);
+    };
+    auto warn = [&](const std::string& line) {
+        log << line << '\n' << std::flush;
+        if (opt.quiet) std::fprintf(stderr, "cic: %s\n", line.c_str());
+        else progress.message(line);
+    };
+
+    const gait::Setup setup = gait::Setup::from_settings(s);
+    experiments::Context ctx{s, base_dir, opt.run_dir / "settings.xml", opt.worker_executable, workers};
+    ctx.warn = warn;
+#ifdef CIC_HAVE_MPI
+    if (const int ranks = mpi_world_size(); ranks > 1) {
+        ctx.make_runner = [text = io::write_settings(s)] { return std::make_unique<MpiPool>(text); };
+        say(fmt::format("MPI: {} ranks, evaluation on ranks 1..{} (Experiment.workers is not used)", ranks, ranks - 1));
+    }
+#endif
+    gait::Evaluator evaluator(ctx, setup);
+    long failed_before = 0;
+    const gait::BatchEvaluator batch = [&](const std::vector<std::vector<double>>& xs) { return evaluator(xs); };
+
+    gait::Search search = prepared.gait_resume
+        ? gait::resume_search(setup, *prepared.gait_resume, s.control.population_load_from)
+        : gait::Search(setup.optimizer, setup.encoding.dimension(), setup.population, setup.sigma0, s.experiment.seed);
+    say(fmt::format("cic {}: gait experiment ({} over {} parameters, {} candidates per generation, budget {} "
+                    "evaluations), seed {}, {} worker{}, output {}",
+                    CIC_VERSION, gait::to_string(setup.optimizer), setup.encoding.dimension(), setup.population,
+                    s.gait.evaluations, s.experiment.seed, workers, workers == 1 ? "" : "s", opt.run_dir.string()));
+
+    const auto started = Clock::now();
+    auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+    std::optional<io::StatsWriter> stats;
+    fs::create_directories(opt.run_dir / "populations");
+    auto after_generation = [&](double generation_seconds) {
+        const gp::GenerationRecord r = record_of(search, evaluator.failed() - failed_before, seconds_since(started),
+                                                 generation_seconds);
+        failed_before = evaluator.failed();
+        stats->write(r);
+        log << fmt::format("gen {} best {:.17g} mean {:.17g} median {:.17g} champion {:.17g} evaluations {} {:.2f}s",
+                           r.generation, r.best, r.mean, r.median, search.champion().fitness, r.evaluations,
+                           r.wall_seconds)
+            << '\n' << std::flush;
+        const int interval = std::max(1, s.experiment.checkpoint_interval);
+        if ((r.generation + 1) % interval == 0 || s.gait.evaluations - search.evaluations() < setup.population) {
+            const std::string text = io::to_xml(checkpoint_of(search, s));
+            const auto checkpoint = opt.run_dir / "populations" / population_name(r.generation);
+            io::xml::write_file_atomically(checkpoint, text);
+            point_latest_at(checkpoint, opt.run_dir / "population.xml", text);
+        }
+        const long per_generation = setup.population;
+        const int max_generations = static_cast<int>(s.gait.evaluations / per_generation);
+        GenerationRecord p;
+        p.generation = r.generation + 1;
+        p.max_generations = max_generations;
+        p.evaluations_per_second = generation_seconds > 0 ? per_generation / generation_seconds : 0.0;
+        p.best = search.champion().fitness;
+        p.mean = r.mean;
+        p.eta_seconds = generation_seconds * std::max(0, max_generations - p.generation);
+        progress(p);
+    };
+
+    StopSignalGuard stop_signals;
+    if (prepared.gait_resume) {
+        io::GaitFile& g = *prepared.gait_resume;
+        if (g.settings_digest != io::settings_digest(s))
+            say(fmt::format("note: {} was made with other settings; continuing with these settings",
+                            s.control.population_load_from));
+        say(fmt::format("resuming from {} at generation {} ({} evaluations)", s.control.population_load_from,
+                        g.generation, g.evaluations));
+        stats.emplace(opt.continue_in_place ? io::StatsWriter(opt.run_dir / "stats.csv", g.generation)
+                                            : io::StatsWriter(opt.run_dir / "stats.csv"));
+    } else {
+        stats.emplace(opt.run_dir / "stats.csv");
+        const auto t0 = Clock::now();
+        search.initialise(batch);
+        after_generation(seconds_since(t0));
+    }
+
+    std::string reason;
+    for (;;) {
+        if (search.champion().fitness >= s.control.minimum_fitness) {
+            reason = "minimum fitness reached";
+            break;
+        }
+        if (detail::stop_requested().load()) {
+            reason = "interrupted";
+            break;
+        }
+        if (search.evaluations() + setup.population > s.gait.evaluations) {
+            reason = "evaluation budget";
+            break;
+        }
+        const auto t0 = Clock::now();
+        search.step(batch);
+        after_generation(seconds_since(t0));
+    }
+
+    const gait::Candidate& best = search.champion();
+    const std::string summary =
+        fmt::format("stopped: {} at generation {}\nbest: fitness {:.17g} ({}; robot {})\nevaluations: {}\nbest gait: {}\n",
+                    reason, search.generation(), best.fitness, gait::to_string(setup.optimizer), setup.robot.name,
+                    search.evaluations(), describe_gait(setup.encoding.decode(best.x)));
+    io::xml::write_file_atomically(opt.run_dir / "summary.txt", summary);
+    progress.finish();
+    log << summary << std::flush;
+    std::fputs(summary.c_str(), stdout);
+    std::fflush(stdout);
+    if (reason == "interrupted") {
+        const bool term = detail::stop_signal() == SIGTERM;
+        // The checkpoint of the last finished generation is on disk unless the interval skipped it.
+        const std::string text = io::to_xml(checkpoint_of(search, s));
+        const auto checkpoint = opt.run_dir / "populations" / population_name(search.generation());
+        io::xml::write_file_atomically(checkpoint, text);
+        point_latest_at(checkpoint, opt.run_dir / "population.xml", text);
+        warn(std::string("interrupted by ") + (term ? "SIGTERM" : "SIGINT") + ": state saved to " +
+             (opt.run_dir / "population.xml").string() + "; resume with Control.populationXmlLoadFrom");
+        return term ? 143 : 130;
+    }
+    finish_run(s, opt, say);
+    return 0;
+}
+
+} // namespace cic::app::detail

@@ -1,0 +1,161 @@
+// Gait checkpoints as XML (see gait_xml.hpp).
+#include "cic/io/gait_xml.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "cic/core/error.hpp"
+#include "cic/io/xml.hpp"
+
+namespace cic::io {
+namespace {
+
+constexpr const char* kFormat = "cic-gait";
+constexpr int kVersion = 1;
+
+std::string exact(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+template <class T>
+T parse_number(const xml::Node& n, std::string_view what, std::string_view text) {
+    T v{};
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size())
+        throw n.error("<" + std::string(n.name()) + "> " + std::string(what) + " \"" + std::string(text) +
+                      "\" is not a valid number");
+    if constexpr (std::is_floating_point_v<T>) {
+        if (!std::isfinite(v)) throw n.error("<" + std::string(n.name()) + "> " + std::string(what) + " is not finite");
+    }
+    return v;
+}
+
+template <class T>
+T attribute(const xml::Node& n, std::string_view name) {
+    const auto a = n.attribute(name);
+    if (!a) throw n.error("<" + std::string(n.name()) + "> is missing attribute " + std::string(name));
+    return parse_number<T>(n, name, *a);
+}
+
+void write_point(xml::Node parent, const char* element, const GaitPoint& p) {
+    std::string xs;
+    for (double v : p.x) xs += (xs.empty() ? "" : " ") + exact(v);
+    parent.add_child(element, xs).set_attribute("fitness", exact(p.fitness));
+}
+
+GaitPoint read_point(const xml::Node& n, std::size_t dimension) {
+    GaitPoint p;
+    p.fitness = attribute<double>(n, "fitness");
+    std::istringstream in(n.text());
+    for (std::string tok; in >> tok;) p.x.push_back(parse_number<double>(n, "parameter", tok));
+    if (p.x.size() != dimension)
+        throw n.error("<" + std::string(n.name()) + "> has " + std::to_string(p.x.size()) + " parameters, the file says " +
+                      std::to_string(dimension));
+    return p;
+}
+
+} // namespace
+
+std::string to_xml(const GaitFile& g) {
+    auto doc = xml::Document::create("gaitRun");
+    auto root = doc.root();
+    root.set_attribute("format", kFormat);
+    root.set_attribute("version", std::to_string(kVersion));
+    root.set_attribute("optimizer", g.optimizer);
+    root.set_attribute("settingsDigest", g.settings_digest);
+    root.set_attribute("seed", std::to_string(g.seed));
+    root.set_attribute("generation", std::to_string(g.generation));
+    root.set_attribute("evaluations", std::to_string(g.evaluations));
+    root.set_attribute("dimension", std::to_string(g.dimension));
+    write_point(root, "champion", g.champion);
+    auto list = root.add_element("candidates");
+    list.set_attribute("count", std::to_string(g.population.size()));
+    for (const GaitPoint& p : g.population) write_point(list, "candidate", p);
+    std::string history;
+    for (double f : g.history) history += (history.empty() ? "" : " ") + exact(f);
+    root.add_child("history", history).set_attribute("count", std::to_string(g.history.size()));
+    return doc.to_string();
+}
+
+GaitFile parse_gait(std::string_view text, const std::string& name) {
+    auto doc = xml::Document::parse_string(text, name);
+    const auto root = doc.root();
+    if (root.name() != "gaitRun" || root.attribute("format").value_or("") != kFormat)
+        throw root.error("not a cic gait checkpoint (expected <gaitRun format=\"cic-gait\">)");
+    if (attribute<int>(root, "version") != kVersion)
+        throw root.error("gait checkpoint version " + *root.attribute("version") + " is not supported (this cic reads " +
+                         std::to_string(kVersion) + ")");
+    GaitFile g;
+    g.optimizer = root.attribute("optimizer").value_or("");
+    g.settings_digest = root.attribute("settingsDigest").value_or("");
+    g.seed = attribute<std::uint64_t>(root, "seed");
+    g.generation = attribute<int>(root, "generation");
+    g.evaluations = attribute<long>(root, "evaluations");
+    g.dimension = attribute<std::size_t>(root, "dimension");
+    if (g.generation < 0 || g.evaluations < 0 || g.dimension == 0 || g.dimension > 1000000)
+        throw root.error("generation and evaluations must be >= 0 and dimension in [1, 1000000]");
+    bool champion = false, candidates = false, state = false;
+    for (const auto& c : root.children()) {
+        const auto n = c.name();
+        if (n == "champion") {
+            g.champion = read_point(c, g.dimension);
+            champion = true;
+        } else if (n == "candidates") {
+            const auto count = attribute<std::size_t>(c, "count");
+            for (const auto& p : c.children()) {
+                if (p.name() != "candidate") throw p.error("unknown element <" + std::string(p.name()) + "> in <candidates>");
+                g.population.push_back(read_point(p, g.dimension));
+            }
+            if (g.population.size() != count)
+                throw c.error("<candidates count=\"" + std::to_string(count) + "\"> holds " +
+                              std::to_string(g.population.size()) + " (truncated or edited?)");
+            candidates = true;
+        } else if (n == "history") {
+            const auto count = attribute<std::size_t>(c, "count");
+            std::istringstream in(c.text());
+            for (std::string tok; in >> tok;) g.history.push_back(parse_number<double>(c, "fitness", tok));
+            if (g.history.size() != count)
+                throw c.error("<history count=\"" + std::to_string(count) + "\"> holds " +
+                              std::to_string(g.history.size()) + " values (truncated or edited?)");
+            if (static_cast<long>(count) != g.evaluations)
+                throw c.error("the history holds " + std::to_string(count) + " fitness values for " +
+                              std::to_string(g.evaluations) + " evaluations");
+            state = true;
+        } else {
+            throw c.error("unknown element <" + std::string(n) + "> in <gaitRun>; allowed: champion, candidates, history");
+        }
+    }
+    if (!champion || !candidates || !state)
+        throw root.error("a gait checkpoint needs <champion>, <candidates> and <history> (truncated?)");
+    return g;
+}
+
+GaitFile load_gait(const std::filesystem::path& path) { return parse_gait(xml::read_file(path), path.string()); }
+
+bool is_gait_file(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::string head(512, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    return head.find("<gaitRun") != std::string::npos;
+}
+
+void check_compatible(const GaitFile& g, const Settings& s, std::size_t dimension, const std::string& file) {
+    if (s.experiment.type != ExperimentType::Gait)
+        throw InputError("this is a gait checkpoint; the settings run another experiment type", file);
+    const char* names[] = {"cmaes", "xnes", "sade"};
+    const std::string wanted = names[static_cast<int>(s.gait.optimizer)];
+    if (g.optimizer != wanted)
+        throw InputError("the checkpoint was made by optimizer " + g.optimizer + ", the settings ask for " + wanted, file);
+    if (g.dimension != dimension)
+        throw InputError("the checkpoint has " + std::to_string(g.dimension) + " parameters per gait, these settings make " +
+                         std::to_string(dimension) + " (another robot or Gait.secondHarmonic?)",
+                         file);
+}
+
+} // namespace cic::io
