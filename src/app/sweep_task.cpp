@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -15,6 +16,7 @@
 #include "cic/core/error.hpp"
 #include "cic/core/hash.hpp"
 #include "cic/io/settings_io.hpp"
+#include "cic/io/settings_table.hpp"
 #include "cic/io/xml.hpp"
 
 namespace cic::app {
@@ -147,13 +149,52 @@ void write_index(const SweepPlan& plan) {
     io::xml::write_file_atomically(plan.study / "index.csv", text);
 }
 
-fs::path store_dir(const SweepPlan& plan, const SweepTask& task) {
-    if (plan.store.empty()) throw std::logic_error("store_dir: the sweep has no <store>");
-    io::Settings s = io::load_settings(plan.base, plan.overrides(task));
+namespace {
+
+// The fingerprint of a run: cic's version and every key whose value differs
+// from its default, but for those that change no result (the run's name,
+// output folder, worker count, resume file). Keys at their defaults are left
+// out, so that a key added to cic later (whose default keeps the old
+// behaviour) does not change the fingerprint of the runs already stored.
+std::string run_fingerprint(io::Settings s) {
     s.experiment.name.clear();
     s.experiment.output_directory.clear();
     s.experiment.workers = 0;
-    return plan.store / hex16(fnv1a_64(std::string("cic ") + CIC_VERSION + "\n" + io::write_settings(s)));
+    s.control.population_load_from.clear();
+    const io::Settings defaults;
+    std::string text = std::string("cic ") + CIC_VERSION + "\n";
+    for (const auto& k : io::settings_table())
+        if (const std::string v = k.get(s); v != k.get(defaults)) text += k.section + "." + k.key + "=" + v + "\n";
+    return hex16(fnv1a_64(text));
+}
+
+// Fingerprint -> folder of every run in a store, from the settings.xml each
+// holds: a store folder is found by what it ran, whatever name an older cic
+// gave it. Read once per store and process.
+const std::map<std::string, fs::path>& store_index(const fs::path& store) {
+    static std::map<fs::path, std::map<std::string, fs::path>> cache;
+    auto [it, fresh] = cache.try_emplace(store);
+    if (fresh && fs::is_directory(store))
+        for (const auto& e : fs::directory_iterator(store)) {
+            if (!fs::exists(e.path() / "settings.xml")) continue;
+            try {
+                it->second.emplace(run_fingerprint(io::read_settings(e.path() / "settings.xml")), e.path());
+            } catch (const std::exception&) {
+                // not a run folder cic can read: never reused
+            }
+        }
+    return it->second;
+}
+
+} // namespace
+
+fs::path store_dir(const SweepPlan& plan, const SweepTask& task) {
+    if (plan.store.empty()) throw std::logic_error("store_dir: the sweep has no <store>");
+    const std::string key = run_fingerprint(io::load_settings(plan.base, plan.overrides(task)));
+    if (fs::exists(plan.store / key)) return plan.store / key;
+    const auto& known = store_index(plan.store);
+    if (auto it = known.find(key); it != known.end()) return it->second;
+    return plan.store / key;
 }
 
 void link_to_store(const SweepPlan& plan) {

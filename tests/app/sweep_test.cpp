@@ -142,6 +142,11 @@ TEST(Sweep, StudiesSharingAStoreRunACommonConfigurationOnce) {
                                                          "<grid><vary key=\"GP.elitism\">0 1</vary></grid>", 1, 4)));
     write_text(dir / "b.xml", with_store(b));
     ASSERT_EQ(run_command("sweep " + (dir / "a.xml").string(), dir / "a.log"), 0) << read_text(dir / "a.log");
+    // A store folder is found by the settings it ran, whatever its name (an older cic's key).
+    const fs::path stored = fs::canonical(dir / "a/runs/elitism=0/s4");
+    fs::rename(stored, stored.parent_path() / "named-by-an-older-cic");
+    fs::remove(dir / "a/runs/elitism=0/s4");
+    fs::create_directory_symlink("../../../store/named-by-an-older-cic", dir / "a/runs/elitism=0/s4");
     ASSERT_EQ(run_command("sweep " + (dir / "b.xml").string() + " --dry-run", dir / "dry.log"), 0);
     EXPECT_NE(read_text(dir / "dry.log").find("1 done, 1 pending"), std::string::npos) << read_text(dir / "dry.log");
     EXPECT_NE(read_text(dir / "dry.log").find("run store " + (dir / "store").string()), std::string::npos);

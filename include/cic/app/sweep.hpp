@@ -76,8 +76,10 @@ TaskState task_state(const SweepPlan& plan, const SweepTask& task);
 void write_index(const SweepPlan& plan);
 
 // The run store folder of a task (plan.store must be set): STORE/KEY, KEY the
-// FNV-1a of cic's version and the task's settings as stored (without the
-// run's name, output folder and worker count, which change no result).
+// FNV-1a of cic's version and the task's settings that differ from the
+// defaults (without the run's name, output folder and worker count, which
+// change no result); or the store folder whose settings.xml has that
+// fingerprint, when an older cic named it otherwise.
 std::filesystem::path store_dir(const SweepPlan& plan, const SweepTask& task);
 
 // With a store: makes every task's runs/CONFIG/sSEED a relative link to its

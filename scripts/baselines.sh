@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# scripts/baselines.sh [--jobs N] [--output DIR] [--summary-only] STAGE...
+#
+# The studies of docs/baselines.md (HyperGP against parameter-optimised gaits),
+# resumable like every `cic sweep`: rerun after an interruption and only what is
+# missing runs. Seeds are fixed in the sweep files (experiments/baselines/).
+# Stages:
+#   search    HyperGP configurations on R1 at 2,500 evaluations, tuning seeds
+#             101..105 (search-a.xml, search-clock.xml)
+#   compare   the comparison at 2,500 evaluations on R0, R1, R2 (4 legs) and R1
+#             (6 legs): HyperGP at Table B.1 values and CMA-ES gaits, seeds 1..10,
+#             and the deterministic sine grid (scripts/tune-sine.sh)
+# Tables and plots go to experiments/baselines/results/.
+#   --jobs N        runs at a time (default 2)
+#   --output DIR    study folders (default runs/baselines); the run store is shared
+#                   with the chapter-7 studies (runs/thesis-ch7/store)
+#   --summary-only  run nothing; summarise what is there
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+HERE="$ROOT/experiments/baselines"
+if [ -z "${CIC:-}" ]; then
+  if [ -x "$ROOT/build/cic" ]; then CIC="$ROOT/build/cic"; else CIC="$(command -v cic || true)"; fi
+fi
+[ -n "$CIC" ] && [ -x "$CIC" ] || { echo "baselines.sh: no cic found; build it (scripts/run.sh) or set CIC" >&2; exit 2; }
+
+jobs=2 output=runs/baselines summary_only=0 stages=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --jobs) jobs="$2"; shift 2 ;;
+    --output) output="$2"; shift 2 ;;
+    --summary-only) summary_only=1; shift ;;
+    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    search|compare) stages+=("$1"); shift ;;
+    *) echo "baselines.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+[ ${#stages[@]} -gt 0 ] || { echo "baselines.sh: name a stage: search, compare (see --help)" >&2; exit 2; }
+[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "baselines.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
+
+mkdir -p "$HERE/results"
+summarise() {   # STUDY
+  "$CIC" --quiet sweep "$HERE/$1.xml" --output "$output/$1" --jobs 1 >/dev/null 2>&1 || true
+  "$CIC" compare "$output/$1" --out "$HERE/results/$1" > /dev/null
+  "$CIC" plot "$output/$1" --title "$1 (median, Q1..Q3)" --median --out "$HERE/results/$1.svg"
+}
+study() {   # STUDY
+  echo "== $1" >&2
+  [ "$summary_only" = 1 ] || "$CIC" sweep "$HERE/$1.xml" --output "$output/$1" --jobs "$jobs" >&2
+  summarise "$1"
+}
+
+for stage in "${stages[@]}"; do
+  case "$stage" in
+    search) study search-a; study search-clock ;;
+    compare)
+      study hypergp-b1-2500
+      study gait-2500
+      if [ "$summary_only" = 0 ]; then
+        echo "== sine grid" >&2
+        {
+          echo "robot,fitness,controller"
+          for r in R0 R1 R2; do
+            CIC="$CIC" "$ROOT/scripts/tune-sine.sh" "$r" | head -1 | awk -v r="$r" '{print r "," $1 "," $2}'
+          done
+          CIC="$CIC" "$ROOT/scripts/tune-sine.sh" R1 --middle-legs | head -1 | awk '{print "R1-6legs," $1 "," $2}'
+        } > "$HERE/results/sine-grid.csv"
+      fi
+      ;;
+  esac
+done
+echo "baselines.sh: tables and plots in $HERE/results" >&2
