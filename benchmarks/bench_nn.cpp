@@ -12,8 +12,8 @@
 #include "cic/nn/substrate.hpp"
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/robot.hpp"
-#include "experiments/hypergp/neural_controller.hpp"
-#include "experiments/hypergp/substrate_geometry.hpp"
+#include "cic/experiments/hypergp/neural_controller.hpp"
+#include "cic/experiments/hypergp/substrate_geometry.hpp"
 
 namespace {
 

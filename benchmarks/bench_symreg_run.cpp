@@ -12,7 +12,7 @@
 
 #include "cic/gp/evolution.hpp"
 #include "cic/io/settings_io.hpp"
-#include "experiments/experiment.hpp"
+#include "cic/experiments/experiment.hpp"
 
 namespace {
 

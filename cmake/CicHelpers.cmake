@@ -8,7 +8,10 @@ function(cic_layer name dir)
     set(sources ${PROJECT_SOURCE_DIR}/cmake/empty.cpp)
   endif()
   add_library(${name} STATIC ${sources})
-  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/include ${PROJECT_SOURCE_DIR})
+  # Public headers only (include/cic/<layer>/); private ones sit beside their
+  # sources. Which layer may include which is checked by scripts/check-layers.py.
+  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/include)
+  add_dependencies(${name} cic_layer_check)   # an upward include fails the build
   set_property(GLOBAL APPEND PROPERTY CIC_LAYERS ${name})
 endfunction()
 

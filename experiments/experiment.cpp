@@ -1,8 +1,8 @@
-#include "experiments/experiment.hpp"
+#include "cic/experiments/experiment.hpp"
 
-#include "experiments/gait/setup.hpp"
-#include "experiments/hypergp/model.hpp"
-#include "experiments/symreg/problem.hpp"
+#include "cic/experiments/gait/setup.hpp"
+#include "cic/experiments/hypergp/model.hpp"
+#include "cic/experiments/symreg/problem.hpp"
 
 namespace cic::experiments {
 

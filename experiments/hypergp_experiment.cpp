@@ -8,8 +8,8 @@
 #include <algorithm>
 
 #include "cic/core/process_pool.hpp"
-#include "experiments/experiment.hpp"
-#include "experiments/hypergp/model.hpp"
+#include "cic/experiments/experiment.hpp"
+#include "cic/experiments/hypergp/model.hpp"
 
 namespace cic::experiments {
 namespace {

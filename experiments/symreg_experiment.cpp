@@ -4,8 +4,8 @@
 #include <fmt/format.h>
 
 #include "cic/core/process_pool.hpp"
-#include "experiments/experiment.hpp"
-#include "experiments/symreg/problem.hpp"
+#include "cic/experiments/experiment.hpp"
+#include "cic/experiments/symreg/problem.hpp"
 
 namespace cic::experiments {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string_view>
 
-#include "fuzz/fuzz_checks.hpp"
+#include "fuzz_checks.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const cic::fuzz::Outcome o = cic::fuzz::check_population(std::string_view(reinterpret_cast<const char*>(data), size));

@@ -1,5 +1,5 @@
 // Unit box <-> gait parameters (see encoding.hpp).
-#include "experiments/gait/encoding.hpp"
+#include "cic/experiments/gait/encoding.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // pagmo2 behind cic::gait::Search (see search.hpp).
-#include "experiments/gait/search.hpp"
+#include "cic/experiments/gait/search.hpp"
 
 #include <cmath>
 #include <cstring>

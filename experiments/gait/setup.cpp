@@ -1,5 +1,5 @@
 // Gait experiment wiring (see setup.hpp).
-#include "experiments/gait/setup.hpp"
+#include "cic/experiments/gait/setup.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include "cic/core/error.hpp"
 #include "cic/core/process_pool.hpp"
 #include "cic/sim/job_text.hpp"
-#include "experiments/hypergp/model.hpp"
+#include "cic/experiments/hypergp/model.hpp"
 
 namespace cic::gait {
 

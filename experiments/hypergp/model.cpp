@@ -1,4 +1,4 @@
-#include "experiments/hypergp/model.hpp"
+#include "cic/experiments/hypergp/model.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -10,8 +10,8 @@
 #include "cic/core/limits.hpp"
 #include "cic/io/robot_xml.hpp"
 #include "cic/io/settings_io.hpp"
-#include "experiments/hypergp/oscillation.hpp"
-#include "experiments/hypergp/substrate_geometry.hpp"
+#include "cic/experiments/hypergp/oscillation.hpp"
+#include "cic/experiments/hypergp/substrate_geometry.hpp"
 
 namespace cic::hypergp {
 

@@ -1,4 +1,4 @@
-#include "experiments/hypergp/neural_controller.hpp"
+#include "cic/experiments/hypergp/neural_controller.hpp"
 
 #include <algorithm>
 #include <numbers>
@@ -7,7 +7,7 @@
 
 #include "cic/core/error.hpp"
 #include "cic/nn/substrate.hpp"
-#include "experiments/hypergp/substrate_geometry.hpp"
+#include "cic/experiments/hypergp/substrate_geometry.hpp"
 
 namespace cic::hypergp {
 

@@ -1,4 +1,4 @@
-#include "experiments/hypergp/oscillation.hpp"
+#include "cic/experiments/hypergp/oscillation.hpp"
 
 #include <algorithm>
 #include <cmath>

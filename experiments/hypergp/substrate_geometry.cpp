@@ -1,4 +1,4 @@
-#include "experiments/hypergp/substrate_geometry.hpp"
+#include "cic/experiments/hypergp/substrate_geometry.hpp"
 
 #include <algorithm>
 #include <stdexcept>

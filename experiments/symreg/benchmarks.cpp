@@ -1,6 +1,6 @@
 // The benchmark table (formulas and samplings copied from ECJ's Benchmarks.java,
 // which follows McDermott et al. 2012, tables 2 and 3, with ECJ's revisions).
-#include "experiments/symreg/benchmarks.hpp"
+#include "cic/experiments/symreg/benchmarks.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,5 +1,5 @@
 // CSV reading for symbolic-regression data files.
-#include "experiments/symreg/dataset.hpp"
+#include "cic/experiments/symreg/dataset.hpp"
 
 #include <charconv>
 #include <cmath>

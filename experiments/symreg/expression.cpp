@@ -1,5 +1,5 @@
 // Recursive-descent parser for target expressions (grammar in expression.hpp).
-#include "experiments/symreg/expression.hpp"
+#include "cic/experiments/symreg/expression.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,5 +1,5 @@
 // Reference data from the settings, and the fitness of a genotype (thesis 6.2.1).
-#include "experiments/symreg/problem.hpp"
+#include "cic/experiments/symreg/problem.hpp"
 
 #include <array>
 #include <cctype>

@@ -2,29 +2,14 @@
 #include "cic/app/gait_assessment.hpp"
 
 #include <algorithm>
-#include <array>
 #include <limits>
 #include <stdexcept>
 #include <vector>
 
-#include "experiments/hypergp/oscillation.hpp"
+#include "cic/experiments/hypergp/oscillation.hpp"
+#include "cic/sim/recording_sampler.hpp"
 
 namespace cic::app {
-namespace {
-
-using Vec3 = std::array<double, 3>;
-
-// v rotated by the unit quaternion q = (w, x, y, z); conjugate = true rotates by q^-1.
-Vec3 rotate(const std::array<double, 4>& q, const Vec3& v, bool conjugate) {
-    const double w = q[0], s = conjugate ? -1.0 : 1.0;
-    const Vec3 u{s * q[1], s * q[2], s * q[3]};
-    const Vec3 t{2 * (u[1] * v[2] - u[2] * v[1]), 2 * (u[2] * v[0] - u[0] * v[2]), 2 * (u[0] * v[1] - u[1] * v[0])};
-    return {v[0] + w * t[0] + (u[1] * t[2] - u[2] * t[1]), v[1] + w * t[1] + (u[2] * t[0] - u[0] * t[2]),
-            v[2] + w * t[2] + (u[0] * t[1] - u[1] * t[0])};
-}
-
-} // namespace
-
 GaitAssessment assess_gait(const ReplayItem& item, double shaking_above_hz) {
     if (!(shaking_above_hz > 0)) throw std::invalid_argument("assess_gait: the shaking bound must be > 0 Hz");
     if (item.trace.size() < 2) throw std::invalid_argument("assess_gait: the replay has fewer than 2 trace rows");
@@ -49,8 +34,9 @@ GaitAssessment assess_gait(const ReplayItem& item, double shaking_above_hz) {
     a.dominant_hz = joints == 0 ? 0.0 : hypergp::dominant_frequency(commands, joints, dt);
 
     const auto c = static_cast<std::size_t>(item.centre_body);
-    const Vec3 local_up = rotate(frames.front()[c].quat, {0, 0, 1}, true);   // the body axis pointing up at the start
-    a.final_up = rotate(frames.back()[c].quat, local_up, false)[2];
+    const sim::Quat q0 = frames.front()[c].quat;
+    const sim::Vec3 local_up = sim::rotate({q0[0], -q0[1], -q0[2], -q0[3]}, {0, 0, 1});   // the body axis up at the start
+    a.final_up = sim::rotate(frames.back()[c].quat, local_up)[2];
     a.flipped = a.final_up < 0;
     a.shaking = a.dominant_hz > shaking_above_hz;
     return a;

@@ -17,7 +17,7 @@
 #include "cic/app/worker_jobs.hpp"
 #include "cic/core/error.hpp"
 #include "cic/io/settings_io.hpp"
-#include "experiments/hypergp/model.hpp"
+#include "cic/experiments/hypergp/model.hpp"
 
 namespace cic::app {
 namespace {

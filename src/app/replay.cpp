@@ -12,8 +12,8 @@
 #include "cic/io/settings_io.hpp"
 #include "cic/sim/layout.hpp"
 #include "cic/io/gait_xml.hpp"
-#include "experiments/gait/setup.hpp"
-#include "experiments/hypergp/model.hpp"
+#include "cic/experiments/gait/setup.hpp"
+#include "cic/experiments/hypergp/model.hpp"
 
 namespace cic::app {
 namespace fs = std::filesystem;

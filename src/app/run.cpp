@@ -20,8 +20,8 @@
 #include "cic/io/stats_csv.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/io/gait_xml.hpp"
-#include "experiments/experiment.hpp"
-#include "experiments/gait/setup.hpp"
+#include "cic/experiments/experiment.hpp"
+#include "cic/experiments/gait/setup.hpp"
 #include "run_support.hpp"
 
 namespace cic::app {

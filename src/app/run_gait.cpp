@@ -13,7 +13,7 @@
 #include "cic/io/population_xml.hpp"
 #include "cic/io/stats_csv.hpp"
 #include "cic/io/xml.hpp"
-#include "experiments/gait/setup.hpp"
+#include "cic/experiments/gait/setup.hpp"
 #include "run_support.hpp"
 #ifdef CIC_HAVE_MPI
 #include "cic/app/mpi_pool.hpp"

@@ -6,7 +6,7 @@
 
 #include "cic/io/settings_io.hpp"
 #include "cic/sim/job_text.hpp"
-#include "experiments/hypergp/model.hpp"
+#include "cic/experiments/hypergp/model.hpp"
 
 namespace cic::app {
 

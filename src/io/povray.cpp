@@ -7,9 +7,20 @@
 #include <stdexcept>
 
 #include "cic/core/error.hpp"
-#include "cic/io/recording_sampler.hpp"
+#include "cic/sim/recording_sampler.hpp"
 
 namespace cic::io {
+
+// Pose arithmetic shared with the viewer (sim/recording_sampler.hpp).
+using sim::Mat3;
+using sim::Vec3;
+using sim::check_recording;
+using sim::compose;
+using sim::recording_start;
+using sim::resampled_frame_count;
+using sim::robot_radius;
+using sim::rotation_matrix;
+using sim::sample_frame;
 namespace {
 
 namespace fs = std::filesystem;

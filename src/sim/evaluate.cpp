@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "src/sim/world.hpp"
+#include "world.hpp"
 
 namespace cic::sim {
 

@@ -1,5 +1,5 @@
 // Building and stepping one robot world (see docs/simulator.md for the model).
-#include "src/sim/world.hpp"
+#include "world.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "src/viz/hud.hpp"
+#include "hud.hpp"
 
 #include <osg/Geode>
 #include <osgText/Font>

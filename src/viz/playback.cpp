@@ -1,4 +1,4 @@
-#include "src/viz/playback.hpp"
+#include "playback.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "src/viz/scene.hpp"
+#include "scene.hpp"
 
 #include <osg/Geode>
 #include <osg/Geometry>
@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cic/io/recording_sampler.hpp"
+#include "cic/sim/recording_sampler.hpp"
 #include "cic/viz/palette.hpp"
 
 namespace cic::viz {
@@ -148,11 +148,11 @@ RobotScene::RobotScene(bool shadows) {
 }
 
 void RobotScene::show(const ViewEntry& entry) {
-    io::check_recording(entry.recording);
+    sim::check_recording(entry.recording);
     if (entry.centre_body < 0 || entry.centre_body >= entry.recording.body_count)
         throw std::invalid_argument("viewer: centre_body out of range");
     entry_ = &entry;
-    radius_ = io::robot_radius(entry.recording, entry.centre_body);
+    radius_ = sim::robot_radius(entry.recording, entry.centre_body);
     double edge = 0;
     for (const auto& part : entry.recording.parts) edge = std::max({edge, part.size[0], part.size[1], part.size[2]});
     tile_ = edge > 0 ? 2 * edge : 0.5;   // the same tile as the POV-Ray ground
@@ -183,12 +183,12 @@ void RobotScene::show(const ViewEntry& entry) {
 }
 
 double RobotScene::duration() const {
-    return entry_ ? io::recording_end(entry_->recording) - io::recording_start(entry_->recording) : 0.0;
+    return entry_ ? sim::recording_end(entry_->recording) - sim::recording_start(entry_->recording) : 0.0;
 }
 
 void RobotScene::set_time(double t) {
     if (!entry_) return;
-    const auto poses = io::sample_frame(entry_->recording, io::recording_start(entry_->recording) + std::clamp(t, 0.0, duration()));
+    const auto poses = sim::sample_frame(entry_->recording, sim::recording_start(entry_->recording) + std::clamp(t, 0.0, duration()));
     for (std::size_t b = 0; b < bodies_.size(); ++b) bodies_[b]->setMatrix(pose_matrix(poses[b]));
     const auto& c = poses[static_cast<std::size_t>(entry_->centre_body)].pos;
     centre_.set(c[0], c[1], c[2]);

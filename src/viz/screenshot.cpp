@@ -9,11 +9,11 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "cic/io/recording_sampler.hpp"
+#include "cic/sim/recording_sampler.hpp"
 #include "cic/viz/palette.hpp"
 #include "cic/viz/viewer.hpp"
-#include "src/viz/hud.hpp"
-#include "src/viz/scene.hpp"
+#include "hud.hpp"
+#include "scene.hpp"
 
 namespace cic::viz {
 namespace {

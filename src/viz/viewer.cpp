@@ -8,11 +8,11 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "cic/io/recording_sampler.hpp"
+#include "cic/sim/recording_sampler.hpp"
 #include "cic/viz/palette.hpp"
-#include "src/viz/hud.hpp"
-#include "src/viz/playback.hpp"
-#include "src/viz/scene.hpp"
+#include "hud.hpp"
+#include "playback.hpp"
+#include "scene.hpp"
 
 namespace cic::viz {
 namespace {
@@ -44,7 +44,7 @@ Viewer::Viewer(std::vector<ViewEntry> entries, ViewerOptions options)
         throw std::invalid_argument("viewer: width and height must be positive");
     static_cast<void>(Playback(static_cast<int>(entries_.size()), options_.speed));   // checks the speed
     for (const auto& e : entries_) {
-        io::check_recording(e.recording);
+        sim::check_recording(e.recording);
         if (e.centre_body < 0 || e.centre_body >= e.recording.body_count)
             throw std::invalid_argument("viewer: centre_body out of range");
     }

@@ -8,8 +8,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "experiments/gait/encoding.hpp"
-#include "experiments/gait/search.hpp"
+#include "cic/experiments/gait/encoding.hpp"
+#include "cic/experiments/gait/search.hpp"
 
 namespace cic::gait {
 namespace {

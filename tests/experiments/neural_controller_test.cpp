@@ -8,8 +8,8 @@
 
 #include "cic/core/error.hpp"
 #include "cic/nn/substrate.hpp"
-#include "experiments/hypergp/neural_controller.hpp"
-#include "experiments/hypergp/oscillation.hpp"
+#include "cic/experiments/hypergp/neural_controller.hpp"
+#include "cic/experiments/hypergp/oscillation.hpp"
 
 using cic::hypergp::NeuralController;
 using cic::nn::NeuralConfig;

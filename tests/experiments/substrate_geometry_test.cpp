@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "cic/core/error.hpp"
-#include "experiments/hypergp/substrate_geometry.hpp"
+#include "cic/experiments/hypergp/substrate_geometry.hpp"
 
 using cic::nn::Point;
 using cic::sim::Axis;

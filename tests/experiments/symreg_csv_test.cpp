@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "cic/core/error.hpp"
-#include "experiments/symreg/problem.hpp"
+#include "cic/experiments/symreg/problem.hpp"
 
 using namespace cic::symreg;
 using cic::InputError;

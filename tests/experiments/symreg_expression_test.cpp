@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "cic/core/error.hpp"
-#include "experiments/symreg/expression.hpp"
+#include "cic/experiments/symreg/expression.hpp"
 
 using cic::InputError;
 using cic::symreg::Expression;

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "cic/tree/tree.hpp"
-#include "experiments/symreg/problem.hpp"
+#include "cic/experiments/symreg/problem.hpp"
 
 using namespace cic::symreg;
 using cic::tree::Forest;

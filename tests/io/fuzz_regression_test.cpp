@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "fuzz/fuzz_checks.hpp"
+#include "fuzz_checks.hpp"   // fuzz/, shared with the fuzz targets
 
 using namespace cic;
 namespace fs = std::filesystem;

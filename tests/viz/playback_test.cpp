@@ -3,7 +3,7 @@
 
 #include <stdexcept>
 
-#include "src/viz/playback.hpp"
+#include "playback.hpp"   // private to viz: tests/CMakeLists.txt adds src/viz
 
 namespace {
 

@@ -8,7 +8,6 @@
 #include "cic/gp/config.hpp"
 #include "cic/nn/config.hpp"
 #include "cic/sim/config.hpp"
-#include "experiments/symreg/config.hpp"
 
 namespace cic::io {
 
@@ -38,6 +37,18 @@ struct RobotConfig {
     bool generate_povray = false;        // generatePovrayFiles
 };
 
+// Settings of the symbolic-regression experiment (thesis 6.2.1); plain data
+// here, where the settings table can see it, used by experiments/symreg/.
+struct SymregConfig {
+    std::string target = "koza-1";   // benchmark name, or an expression over x (x0), y (x1) ...
+    std::string data_file;           // CSV with header; last column is the target (overrides target)
+    int samples = 20;                // n equidistant points (when not the benchmark's own)
+    double range_min = -1.0;
+    double range_max = 1.0;
+    bool benchmark_sampling = true;  // use the named benchmark's own training set
+    double hit_tolerance = 0.01;     // a point is a hit when |error| <= this
+};
+
 // The `gait` experiment (experiments/gait/): an open-loop gait per joint
 // (sim::GaitSpec) whose parameters a pagmo2 optimiser tunes, a baseline for
 // HyperGP at the same budget of evaluations (docs/baselines.md).
@@ -61,7 +72,7 @@ struct Settings {
     RobotConfig robot;
     ControlConfig control;
     nn::NeuralConfig neural;
-    symreg::SymregConfig symreg;
+    SymregConfig symreg;
     GaitConfig gait;
     std::string source_file;             // where they were read from (empty = defaults)
 };

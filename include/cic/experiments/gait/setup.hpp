@@ -13,9 +13,9 @@
 #include "cic/io/gait_xml.hpp"
 #include "cic/io/settings.hpp"
 #include "cic/sim/robot.hpp"
-#include "experiments/experiment.hpp"
-#include "experiments/gait/encoding.hpp"
-#include "experiments/gait/search.hpp"
+#include "cic/experiments/experiment.hpp"
+#include "cic/experiments/gait/encoding.hpp"
+#include "cic/experiments/gait/search.hpp"
 
 namespace cic::gait {
 

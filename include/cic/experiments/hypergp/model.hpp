@@ -11,7 +11,7 @@
 #include "cic/io/settings.hpp"
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/job_text.hpp"
-#include "experiments/hypergp/neural_controller.hpp"
+#include "cic/experiments/hypergp/neural_controller.hpp"
 
 namespace cic::hypergp {
 

@@ -11,7 +11,7 @@
 
 #include "cic/sim/recording.hpp"
 
-namespace cic::io {
+namespace cic::sim {
 
 using Quat = std::array<double, 4>;   // w, x, y, z
 using Vec3 = std::array<double, 3>;
@@ -125,4 +125,4 @@ inline double robot_radius(const sim::Recording& rec, int centre_body) {
     return r > 0 ? r : 1.0;
 }
 
-} // namespace cic::io
+} // namespace cic::sim

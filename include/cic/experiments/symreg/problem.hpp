@@ -5,10 +5,10 @@
 #include <vector>
 
 #include "cic/tree/tree.hpp"
-#include "experiments/symreg/benchmarks.hpp"
-#include "experiments/symreg/config.hpp"
-#include "experiments/symreg/dataset.hpp"
-#include "experiments/symreg/expression.hpp"
+#include "cic/experiments/symreg/benchmarks.hpp"
+#include "cic/experiments/symreg/config.hpp"
+#include "cic/experiments/symreg/dataset.hpp"
+#include "cic/experiments/symreg/expression.hpp"
 
 namespace cic::symreg {
 
