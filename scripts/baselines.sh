@@ -39,7 +39,7 @@ done
 
 mkdir -p "$HERE/results"
 summarise() {   # STUDY
-  "$CIC" --quiet sweep "$HERE/$1.xml" --output "$output/$1" --jobs 1 >/dev/null 2>&1 || true
+  "$CIC" --quiet sweep "$HERE/$1.xml" --output "$output/$1" --index-only
   "$CIC" compare "$output/$1" --out "$HERE/results/$1" > /dev/null
   "$CIC" plot "$output/$1" --title "$1 (median, Q1..Q3)" --median --out "$HERE/results/$1.svg"
 }

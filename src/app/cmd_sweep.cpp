@@ -34,6 +34,7 @@ struct SweepOptions {
     long task = -1;       // >= 0: run this one task (Slurm array tasks, and the local runner's children)
     bool dry_run = false;
     bool slurm = false;
+    bool index_only = false;
 };
 
 volatile std::sig_atomic_t g_stop_signal = 0;
@@ -219,6 +220,8 @@ void add_sweep_command(CLI::App& app, CommandContext& ctx) {
         ->check(CLI::Range(0, 4096));
     cmd->add_option("--output", o->output, "study folder (default: the sweep file's <output>, else runs/NAME)");
     cmd->add_flag("--dry-run", o->dry_run, "list every run with its status and command; run nothing");
+    cmd->add_flag("--index-only", o->index_only,
+                  "rewrite STUDY/index.csv from the run folders (and link runs another study stored); run nothing");
     cmd->add_flag("--slurm", o->slurm, "write STUDY/slurm.sh, a job array with one task per run");
     cmd->add_option("--task", o->task, "run only task I (0-based), resumably: what each array task runs")
         ->check(CLI::Range(0L, 100000000L));
@@ -235,6 +238,12 @@ void add_sweep_command(CLI::App& app, CommandContext& ctx) {
             }
             check_every_configuration(plan);
             if (o->dry_run) return dry_run(plan, workers);
+            if (o->index_only) {   // for summaries: the runs as they are, nothing run
+                fs::create_directories(plan.study);
+                link_to_store(plan);
+                write_index(plan);
+                return 0;
+            }
             fs::create_directories(plan.study);
             link_to_store(plan);
             io::xml::write_file_atomically(plan.study / "sweep.xml", io::xml::Document::load_file(plan.file).to_string());

@@ -150,6 +150,10 @@ TEST(Sweep, StudiesSharingAStoreRunACommonConfigurationOnce) {
     ASSERT_EQ(run_command("sweep " + (dir / "b.xml").string() + " --dry-run", dir / "dry.log"), 0);
     EXPECT_NE(read_text(dir / "dry.log").find("1 done, 1 pending"), std::string::npos) << read_text(dir / "dry.log");
     EXPECT_NE(read_text(dir / "dry.log").find("run store " + (dir / "store").string()), std::string::npos);
+    // --index-only links and lists what is there, and runs nothing.
+    ASSERT_EQ(run_command("sweep " + (dir / "b.xml").string() + " --index-only", dir / "index.log"), 0);
+    EXPECT_NE(read_text(dir / "b/index.csv").find(",done,"), std::string::npos) << read_text(dir / "b/index.csv");
+    EXPECT_NE(read_text(dir / "b/index.csv").find(",pending,"), std::string::npos) << read_text(dir / "b/index.csv");
     ASSERT_EQ(run_command("sweep " + (dir / "b.xml").string(), dir / "b.log"), 0) << read_text(dir / "b.log");
     EXPECT_NE(read_text(dir / "b.log").find("1 of 2 runs to do"), std::string::npos) << read_text(dir / "b.log");
     const fs::path shared_a = dir / "a/runs/elitism=0/s4", shared_b = dir / "b/runs/sampleAverageCount=1/s4";

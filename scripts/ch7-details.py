@@ -1,0 +1,74 @@
+#!/usr/bin/python3
+"""Details of the chapter-7 studies that `cic compare` (final best only) does not
+give: gait frequencies per configuration (from `cic assess`), forest depth as the
+sum over trees at the last generation (thesis fig. 7.4b), and the legs comparison
+at several generations (7.2.2: "6 legs help up to about generation 15").
+Tests: two-sided Mann-Whitney U (scipy), A12 as in docs/statistics.md.
+
+    scripts/ch7-details.py [STUDIES_DIR]     (default runs/thesis-ch7)
+"""
+import csv
+import pathlib
+import statistics as st
+import sys
+
+from scipy.stats import mannwhitneyu
+
+R = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "runs/thesis-ch7")
+RESULTS = pathlib.Path(__file__).resolve().parent.parent / "experiments" / "thesis-ch7" / "results"
+
+
+def done(study):
+    return [r for r in csv.DictReader(open(R / study / "index.csv")) if r["status"] == "done"]
+
+
+def stats(run):
+    return list(csv.DictReader(open(run / "stats.csv")))
+
+
+def a12(x, y):
+    return sum(1 if a > b else 0.5 if a == b else 0 for a in x for b in y) / (len(x) * len(y))
+
+
+def test(x, y):
+    return mannwhitneyu(x, y, alternative="two-sided").pvalue, a12(x, y)
+
+
+print("## Gaits of the best individuals (cic assess)\n")
+print("| study | configuration | n | median dominant Hz | shaking (> 4 Hz) | median centre height, m | flipped |")
+print("|---|---|---|---|---|---|---|")
+for study in ["topology", "forest", "legs", "sample-step", "averaging", "integrating", "penalty", "clock"]:
+    f = RESULTS / f"{study}-gaits.csv"
+    if not f.exists() or not (R / study / "index.csv").exists():
+        continue
+    gaits = {r["input"]: r for r in csv.DictReader(open(f))}
+    by = {}
+    for r in done(study):
+        g = gaits.get(str(R / study / r["run_dir"]))
+        if g:
+            by.setdefault(r["config"], []).append(g)
+    for c, v in by.items():
+        hz = [float(x["dominant_hz"]) for x in v]
+        print(f"| {study} | {c} | {len(v)} | {st.median(hz):.1f} | {sum(int(x['shaking']) for x in v)}/{len(v)} | "
+              f"{st.median(float(x['mean_height']) for x in v):.2f} | {sum(int(x['flipped']) for x in v)}/{len(v)} |")
+
+if (R / "forest" / "index.csv").exists():
+    print("\n## Forest depth, summed over the trees, at the last generation (population mean)\n")
+    print("| robot | 1 tree: median | 4 trees: median | p | A12 (4 deeper) |")
+    print("|---|---|---|---|---|")
+    for robot in (1, 2):
+        depth = {t: [float(stats(R / "forest" / "runs" / f"robot_type={robot}+numberOfTreesInForestGenotype={t}" / f"s{s}")[-1]["mean_depth_sum"])
+                     for s in range(1, 11)] for t in (1, 4)}
+        p, a = test(depth[4], depth[1])
+        print(f"| R{robot} | {st.median(depth[1]):.1f} | {st.median(depth[4]):.1f} | {p:.3g} | {a:.2f} |")
+
+if (R / "legs" / "index.csv").exists():
+    print("\n## Six legs against four, best fitness by generation\n")
+    print("| robot | generation | 6 legs: median | 4 legs: median | p | A12 (6 better) |")
+    print("|---|---|---|---|---|---|")
+    for robot in (1, 2):
+        for gen in (5, 10, 15, 20, 30, 49):
+            best = {m: [float(stats(R / "legs" / "runs" / f"robot_type={robot}+useMiddleLegs={m}" / f"s{s}")[gen]["best"])
+                        for s in range(1, 11)] for m in (0, 1)}
+            p, a = test(best[1], best[0])
+            print(f"| R{robot} | {gen} | {st.median(best[1]):.2f} | {st.median(best[0]):.2f} | {p:.3g} | {a:.2f} |")
