@@ -21,7 +21,7 @@ void add_trace_command(CLI::App& app, CommandContext& ctx);      // cmd_trace.cp
 void add_sweep_command(CLI::App& app, CommandContext& ctx);      // cmd_sweep.cpp
 void add_assess_command(CLI::App& app, CommandContext& ctx);     // cmd_assess.cpp
 #ifdef CIC_HAVE_VIEWER
-void add_view_command(CLI::App& app, CommandContext& ctx);       // src/viz/cmd_view.cpp
+void add_view_command(CLI::App& app, CommandContext& ctx);       // cmd_view.cpp
 #endif
 // Hidden `cic man` and `cic completion`: register last, they document every other subcommand.
 void add_docs_commands(CLI::App& app, CommandContext& ctx);      // cmd_docs.cpp
