@@ -1,5 +1,8 @@
 #include "cic/experiments/experiment.hpp"
 
+#include <algorithm>
+
+#include "cic/core/process_pool.hpp"
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 #include "cic/experiments/symreg/problem.hpp"
@@ -16,6 +19,15 @@ std::unique_ptr<Experiment> make_experiment(const Context& ctx) {
     case io::ExperimentType::Gait: break;   // not a GP experiment: the app runs it (src/app/run_gait.cpp)
     }
     throw std::logic_error("make_experiment: the gait experiment has no GP evaluator");
+}
+
+std::unique_ptr<JobRunner> make_job_runner(const Context& ctx) {
+    if (ctx.make_runner) return ctx.make_runner();
+    PoolOptions opt;
+    opt.workers = std::max(1, ctx.workers);
+    opt.argv = {ctx.worker_executable, "worker", "--settings", ctx.settings_file.string()};
+    opt.timeout_seconds = ctx.settings.experiment.worker_timeout;
+    return std::make_unique<ProcessPool>(opt);
 }
 
 void check_inputs(const io::Settings& s) {

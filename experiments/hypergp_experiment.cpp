@@ -5,9 +5,6 @@
 // workers gives the same fitness bits, and every runner gives the same reply.
 #include <fmt/format.h>
 
-#include <algorithm>
-
-#include "cic/core/process_pool.hpp"
 #include "cic/experiments/experiment.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 
@@ -16,19 +13,9 @@ namespace {
 
 class HypergpEvaluator final : public gp::Evaluator {
 public:
-    HypergpEvaluator(const Context& ctx) : model_(hypergp::Model::from_settings(ctx.settings)), warn_(ctx.warn) {
-        if (ctx.make_runner) {
-            pool_ = ctx.make_runner();
-        } else {
-            // Always worker processes, even for one worker: one path, so a crash or
-            // a hang of an evaluation is the same result whatever the worker count.
-            PoolOptions opt;
-            opt.workers = std::max(1, ctx.workers);
-            opt.argv = {ctx.worker_executable, "worker", "--settings", ctx.settings_file.string()};
-            opt.timeout_seconds = ctx.settings.experiment.worker_timeout;
-            pool_ = std::make_unique<ProcessPool>(opt);
-        }
-    }
+    // Jobs go to make_job_runner's runner: worker processes, or MPI ranks.
+    HypergpEvaluator(const Context& ctx)
+        : model_(hypergp::Model::from_settings(ctx.settings)), warn_(ctx.warn), pool_(make_job_runner(ctx)) {}
 
     void evaluate(std::span<const gp::IndividualPtr> todo) override {
         std::vector<std::string> jobs;

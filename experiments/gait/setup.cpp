@@ -6,7 +6,6 @@
 #include <algorithm>
 
 #include "cic/core/error.hpp"
-#include "cic/core/process_pool.hpp"
 #include "cic/sim/job_text.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 
@@ -65,17 +64,8 @@ Search resume_search(const Setup& setup, const io::GaitFile& g, const std::strin
     return search;
 }
 
-Evaluator::Evaluator(const experiments::Context& ctx, const Setup& setup) : setup_(setup), warn_(ctx.warn) {
-    if (ctx.make_runner) {
-        runner_ = ctx.make_runner();
-    } else {
-        PoolOptions opt;
-        opt.workers = std::max(1, ctx.workers);
-        opt.argv = {ctx.worker_executable, "worker", "--settings", ctx.settings_file.string()};
-        opt.timeout_seconds = ctx.settings.experiment.worker_timeout;
-        runner_ = std::make_unique<ProcessPool>(opt);
-    }
-}
+Evaluator::Evaluator(const experiments::Context& ctx, const Setup& setup)
+    : setup_(setup), warn_(ctx.warn), runner_(experiments::make_job_runner(ctx)) {}
 
 Evaluator::~Evaluator() = default;
 

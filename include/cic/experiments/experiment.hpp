@@ -39,6 +39,12 @@ public:
 
 std::unique_ptr<Experiment> make_experiment(const Context& ctx);
 
+// Where a robot experiment's evaluation jobs run: the context's runner (MPI
+// ranks) when it has one, else `cic worker` processes, always, even for one
+// worker: one path, so a crash or hang of an evaluation gives the same result
+// whatever the worker count.
+std::unique_ptr<JobRunner> make_job_runner(const Context& ctx);
+
 // Loads and checks every input the experiment will read (robot, dataset),
 // throwing cic::InputError with file and line; writes nothing. The run calls
 // it before its folder exists, and `cic settings FILE` calls it too.
