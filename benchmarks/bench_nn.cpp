@@ -27,11 +27,11 @@ const char* kTree =
 struct Fixture {
     cic::sim::RobotSpec robot = cic::sim::preset(1, true);
     cic::nn::NeuralConfig cfg;
-    cic::nn::Layout layout;
+    cic::nn::NeuronLayout layout;
     cic::tree::Forest genotype{cic::tree::Tree::parse(kTree)};
     explicit Fixture(double threshold) {
         cfg.threshold = threshold;
-        layout = cic::nn::make_layout(cic::hypergp::substrate_geometry(robot), cfg);
+        layout = cic::nn::make_neuron_layout(cic::hypergp::substrate_geometry(robot), cfg);
     }
 };
 

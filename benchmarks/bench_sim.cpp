@@ -74,7 +74,7 @@ void bare_near(void* data, dGeomID a, dGeomID b) {
     }
 }
 
-double bare_ode_run(const Layout& L, const SimConfig& cfg, const std::vector<SineJoint>& gait) {
+double bare_ode_run(const BodyLayout& L, const SimConfig& cfg, const std::vector<SineJoint>& gait) {
     dRandSetSeed(0);
     Bare w;
     w.world = dWorldCreate();
@@ -151,7 +151,7 @@ double bare_ode_run(const Layout& L, const SimConfig& cfg, const std::vector<Sin
 void BM_BareOdeLoop(benchmark::State& state) {
     dInitODE2(0);
     const SimConfig cfg = thesis_config(0.0125);
-    const Layout L = make_layout(preset(1, true));
+    const BodyLayout L = make_body_layout(preset(1, true));
     const auto gait = r1_gait();
     double simulated = 0;
     for (auto _ : state) {

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "cic/core/process_pool.hpp"
+#include "cic/core/parallel_for.hpp"
 #include "cic/core/rng.hpp"
 #include "cic/tree/eval.hpp"
 #include "cic/tree/tree.hpp"

@@ -32,10 +32,14 @@ public:
             if (r.ok) {
                 const sim::EvalReply reply = sim::parse_eval_reply(r.output);
                 ind.fitness = reply.fitness;
-                if (reply.failed) ind.attributes["failed"] = reply.failure;
+                if (reply.failed) {
+                    ind.failed = true;
+                    ind.failure = reply.failure;
+                }
             } else {
                 ind.fitness = model_.sim.failure_fitness;
-                ind.attributes["failed"] = "worker: " + r.error;
+                ind.failed = true;
+                ind.failure = "worker: " + r.error;
                 warn_(fmt::format("warning: individual {} scored as failed (fitness {}): {}", ind.id, ind.fitness,
                                   r.error));
             }
@@ -57,7 +61,7 @@ public:
     gp::Evaluator& evaluator() override { return eval_; }
     std::string describe(const gp::Individual& ind) const override {
         return fmt::format("robot {} ({} modules)", eval_.model().robot.name, eval_.model().robot.modules.size()) +
-               (ind.has("failed") ? " [failed: " + ind.attributes.at("failed") + "]" : "");
+               (ind.failed ? " [failed: " + ind.failure + "]" : "");
     }
 
 private:

@@ -3,7 +3,7 @@
 // and the result does not depend on their number).
 #include <fmt/format.h>
 
-#include "cic/core/process_pool.hpp"
+#include "cic/core/parallel_for.hpp"
 #include "cic/experiments/experiment.hpp"
 #include "cic/experiments/symreg/problem.hpp"
 

@@ -11,7 +11,7 @@
 
 namespace cic::hypergp {
 
-NeuralController::NeuralController(nn::Network network, nn::Layout layout, const nn::NeuralConfig& cfg)
+NeuralController::NeuralController(nn::Network network, nn::NeuronLayout layout, const nn::NeuralConfig& cfg)
     : network_(std::move(network)), layout_(std::move(layout)), cfg_(cfg) {
     if (cfg_.sample_average_count < 1)
         throw InputError("neural settings: sampleAverageCount must be >= 1, got " +
@@ -70,7 +70,7 @@ void NeuralController::step(double t, std::span<const double> angles, std::span<
 
 NeuralController make_neural_controller(const sim::RobotSpec& robot, const tree::Forest& genotype,
                                         const nn::NeuralConfig& cfg) {
-    auto layout = nn::make_layout(substrate_geometry(robot), cfg);
+    auto layout = nn::make_neuron_layout(substrate_geometry(robot), cfg);
     auto network = nn::build_network(layout, genotype, cfg);
     return NeuralController(std::move(network), std::move(layout), cfg);
 }

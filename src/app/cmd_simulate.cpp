@@ -51,7 +51,7 @@ int simulate(const SimulateOptions& o) {
         robot = io::read_robot_file(settings.robot.robot_file);
     else
         robot = sim::preset(settings.robot.robot_type, o.middle_legs || settings.neural.middle_legs);
-    const sim::Layout layout = sim::make_layout(robot);
+    const sim::BodyLayout layout = sim::make_body_layout(robot);
     auto controller = make_controller(o.controller);
 
     const auto t0 = std::chrono::steady_clock::now();

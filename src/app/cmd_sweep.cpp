@@ -17,7 +17,7 @@
 #include "cic/app/commands.hpp"
 #include "cic/app/run.hpp"
 #include "cic/app/sweep.hpp"
-#include "cic/core/process_pool.hpp"
+#include "cic/core/parallel_for.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/io/xml.hpp"
 

@@ -105,7 +105,7 @@ ReplayItem replay_preset(const PresetReplay& preset, double fps, bool trace) {
     if (result.recording) item.recording = std::move(*result.recording);
     item.trace = std::move(result.trace);
     if (trace) item.raw_outputs = std::move(recorder.outputs);
-    const sim::Layout layout = sim::make_layout(robot);
+    const sim::BodyLayout layout = sim::make_body_layout(robot);
     item.centre_body = layout.geoms.at(static_cast<std::size_t>(layout.centre_geom)).body;
     for (int m : robot.actuated()) {
         const std::string& name = robot.modules[static_cast<std::size_t>(m)].name;

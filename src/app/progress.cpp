@@ -21,10 +21,10 @@ std::string format_duration(double seconds) {
 
 // "generation 2 (3/50)": the generation's number as stats.csv, the population
 // files and the summary give it (from 0), then how many of how many are done.
-std::string format_record(const GenerationRecord& r) {
+std::string format_line(const ProgressLine& r) {
     const std::string of = r.max_generations > 0 ? fmt::format("/{}", r.max_generations) : "";
-    return fmt::format("generation {} ({}{})  {:.1f} eval/s  best {:.6g}  mean {:.6g}  limit {:g}  eta {}",
-                       r.generation - 1, r.generation, of, r.evaluations_per_second, r.best, r.mean, r.limit,
+    return fmt::format("generation {} ({}{})  {:.1f} eval/s  best {:.6g}  mean {:.6g}  limit {}  eta {}",
+                       r.generation, r.generation + 1, of, r.evaluations_per_second, r.best, r.mean, r.limit,
                        format_duration(r.eta_seconds));
 }
 
@@ -43,10 +43,10 @@ ProgressPrinter::ProgressPrinter(ProgressPrinter&& other) noexcept
 
 ProgressPrinter::~ProgressPrinter() { finish(); }
 
-void ProgressPrinter::operator()(const GenerationRecord& record) {
+void ProgressPrinter::operator()(const ProgressLine& record) {
     if (verbosity_ == Verbosity::Quiet) return;
     if (!live_ || verbosity_ == Verbosity::Verbose) {
-        *out_ << format_record(record) << '\n' << std::flush;
+        *out_ << format_line(record) << '\n' << std::flush;
         return;
     }
     // A bar of 20 cells when the total is known; \r + erase-line rewrites in place.
@@ -56,7 +56,7 @@ void ProgressPrinter::operator()(const GenerationRecord& record) {
         bar = "[" + std::string(static_cast<std::size_t>(filled), '#') +
               std::string(static_cast<std::size_t>(20 - filled), '.') + "] ";
     }
-    last_line_ = bar + format_record(record);
+    last_line_ = bar + format_line(record);
     *out_ << "\r\x1b[2K" << last_line_ << std::flush;
     line_open_ = true;
 }

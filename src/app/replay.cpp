@@ -59,7 +59,7 @@ std::vector<std::string> joint_names_of(const sim::RobotSpec& robot) {
 }
 
 int centre_body_of(const sim::RobotSpec& robot) {
-    const sim::Layout layout = sim::make_layout(robot);
+    const sim::BodyLayout layout = sim::make_body_layout(robot);
     return layout.geoms[static_cast<std::size_t>(layout.chassis_geom[static_cast<std::size_t>(robot.centre)])].body;
 }
 
@@ -133,9 +133,9 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
         opt.record_trace = trace;
         const hypergp::Outcome o = hypergp::run(model, ind->genotype, opt, trace);
         ReplayItem item;
-        item.label = fmt::format("generation {}, individual {}", pop.population.iteration, ind->id);
+        item.label = fmt::format("generation {}, individual {}", pop.population.generation, ind->id);
         item.stored_fitness = ind->fitness;
-        item.generation = pop.population.iteration;
+        item.generation = pop.population.generation;
         item.id = ind->id;
         if (o.result.recording) item.recording = *o.result.recording;
         item.trace = o.result.trace;

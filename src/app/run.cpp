@@ -14,7 +14,7 @@
 #include "cic/app/mpi_pool.hpp"
 #endif
 #include "cic/app/progress.hpp"
-#include "cic/core/process_pool.hpp"
+#include "cic/core/parallel_for.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/io/stats_csv.hpp"
@@ -112,7 +112,7 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
                             from, loaded.settings_digest, header.settings_digest));
         state = loaded.state;   // the saved RNG state: a resume continues the same run
         start = std::move(loaded.population);
-        say(fmt::format("resuming from {} at generation {} (seed {})", from, start->iteration, state.seed));
+        say(fmt::format("resuming from {} at generation {} (seed {})", from, start->generation, state.seed));
     }
 
     say(fmt::format("cic {}: {} experiment, seed {}, {} worker{}, output {}", CIC_VERSION,
@@ -121,14 +121,14 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
     if (!mpi_note.empty()) say(mpi_note);
 
     io::StatsWriter stats = opt.continue_in_place && start
-        ? io::StatsWriter(opt.run_dir / "stats.csv", start->iteration)
+        ? io::StatsWriter(opt.run_dir / "stats.csv", start->generation)
         : io::StatsWriter(opt.run_dir / "stats.csv");
     fs::create_directories(opt.run_dir / "populations");
 
     gp::StopConditions stop{s.control.maximum_iterations, s.control.minimum_fitness};
     gp::EvolutionHooks hooks;
     long evaluations_before = state.evaluations;
-    const int first_generation = start ? start->iteration + 1 : 0;
+    const int first_generation = start ? start->generation + 1 : 0;
     hooks.on_generation = [&](const gp::GenerationRecord& r) {
         stats.write(r);
         log << fmt::format("gen {} best {:.17g} mean {:.17g} median {:.17g} depth {:.3f}/{} size {:.2f}/{} limit {} "
@@ -136,8 +136,8 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
                            r.generation, r.best, r.mean, r.median, r.mean_depth, r.max_depth, r.mean_size, r.max_size,
                            r.limit, r.illegal, r.evaluations, r.wall_seconds)
             << '\n' << std::flush;
-        GenerationRecord p;
-        p.generation = r.generation + 1;
+        ProgressLine p;
+        p.generation = r.generation;
         p.max_generations = r.max_generations;
         p.evaluations_per_second = r.generation_seconds > 0
             ? static_cast<double>(r.evaluations - evaluations_before) / r.generation_seconds : 0.0;
@@ -153,11 +153,11 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
     hooks.on_checkpoint = [&](const gp::Population& pop, const gp::EvolutionState& st, bool last) {
         const int interval = std::max(1, s.experiment.checkpoint_interval);
         // After every `interval` evaluated generations (generation g is the (g+1)-th).
-        if (!last && (pop.iteration + 1) % interval != 0) return;
+        if (!last && (pop.generation + 1) % interval != 0) return;
         header.population = pop;
         header.state = st;
         const std::string text = io::to_xml(header);
-        const auto checkpoint = opt.run_dir / "populations" / population_name(pop.iteration);
+        const auto checkpoint = opt.run_dir / "populations" / population_name(pop.generation);
         io::xml::write_file_atomically(checkpoint, text);
         point_latest_at(checkpoint, opt.run_dir / "population.xml", text);
     };
@@ -170,7 +170,7 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
     const std::string summary = fmt::format(
         "stopped: {} at generation {}\nbest: id {} fitness {:.17g} depth {} size {} {}\nevaluations: {}\n"
         "best tree{}: {}\n",
-        gp::to_string(result.reason), result.population.iteration, best.id, best.fitness, best.depth(s.gp.forest_depth), best.size(),
+        gp::to_string(result.reason), result.population.generation, best.id, best.fitness, best.depth(s.gp.forest_depth), best.size(),
         experiment->describe(best), result.state.evaluations, best.genotype.size() > 1 ? "s" : "",
         [&] {
             std::string t;

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "cic/app/progress.hpp"
-#include "cic/core/process_pool.hpp"
+#include "cic/core/parallel_for.hpp"
 #include "cic/io/gait_xml.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/stats_csv.hpp"
@@ -133,13 +133,13 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
         }
         const long per_generation = setup.population;
         const int max_generations = static_cast<int>(s.gait.evaluations / per_generation);
-        GenerationRecord p;
-        p.generation = r.generation + 1;
+        ProgressLine p;
+        p.generation = r.generation;
         p.max_generations = max_generations;
         p.evaluations_per_second = generation_seconds > 0 ? per_generation / generation_seconds : 0.0;
         p.best = search.champion().fitness;
         p.mean = r.mean;
-        p.eta_seconds = generation_seconds * std::max(0, max_generations - p.generation);
+        p.eta_seconds = generation_seconds * std::max(0, max_generations - (r.generation + 1));
         progress(p);
     };
 

@@ -5,7 +5,7 @@
 #include <thread>
 #include <vector>
 
-#include "cic/core/process_pool.hpp"
+#include "cic/core/parallel_for.hpp"
 
 namespace cic {
 

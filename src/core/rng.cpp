@@ -24,10 +24,6 @@ Rng::Rng(std::uint64_t seed) {
     if ((s_[0] | s_[1] | s_[2] | s_[3]) == 0) s_[0] = 1; // all-zero state is a fixed point
 }
 
-Rng Rng::stream(std::uint64_t seed, std::uint64_t a, std::uint64_t b) {
-    return Rng(mix64(mix64(seed ^ mix64(a + 0x632be59bd9b4e019ULL)) ^ mix64(b + 0x8cb92ba72f3d8dd7ULL)));
-}
-
 // Lemire's method needs a 128-bit product; __extension__ keeps -Wpedantic quiet.
 __extension__ typedef unsigned __int128 u128;
 

@@ -24,7 +24,6 @@
 namespace cic::gp {
 
 namespace {
-const std::string kIllegal = "illegal";
 }
 
 DynamicLimits::DynamicLimits(BloatVariant variant, int initial_max_depth, ForestDepth measure)
@@ -49,7 +48,7 @@ void DynamicLimits::initialise(const Population& evaluated) {
 
 int DynamicLimits::limit_for(const Individual& p1, const Individual* p2) const {
     if (state_.limit <= 0) throw std::logic_error("DynamicLimits: used before initialise()");
-    const bool illegal_parent = p1.has(kIllegal) || (p2 && p2->has(kIllegal));
+    const bool illegal_parent = p1.illegal || (p2 && p2->illegal);
     if (!illegal_parent) return state_.limit;
     const int larger = std::max(depth(p1), p2 ? depth(*p2) : 0);
     return std::max(state_.limit, larger);
@@ -86,9 +85,9 @@ void DynamicLimits::end_generation(Population& pop) {
     for (auto& p : pop) {
         if (!p) throw std::invalid_argument("DynamicLimits::end_generation: null individual");
         if (variant_ != BloatVariant::Simple && depth(*p) > state_.limit)
-            p->attributes[kIllegal] = "1";
+            p->illegal = true;
         else
-            p->attributes.erase(kIllegal);
+            p->illegal = false;
     }
 }
 

@@ -26,7 +26,7 @@ IndividualPtr copy_of(EvolutionState& st, const Individual& parent) {
     auto c = std::make_shared<Individual>(parent);
     c->id = st.next_id++;
     c->parents = {parent.id};
-    c->attributes.erase("illegal");
+    c->illegal = false;
     return c;
 }
 
@@ -72,7 +72,7 @@ std::string to_string(StopReason r) {
 
 GenerationRecord summarise(const Population& pop, const EvolutionState& st, ForestDepth measure) {
     GenerationRecord r;
-    r.generation = pop.iteration;
+    r.generation = pop.generation;
     r.limit = st.bloat.limit;
     r.evaluations = st.evaluations;
     if (pop.empty()) return r;
@@ -90,7 +90,7 @@ GenerationRecord summarise(const Population& pop, const EvolutionState& st, Fore
         r.max_depth_sum = std::max(r.max_depth_sum, d_sum);
         r.max_depth_max = std::max(r.max_depth_max, d_max);
         r.max_size = std::max(r.max_size, s);
-        if (ind->has("illegal")) ++r.illegal;
+        if (ind->illegal) ++r.illegal;
     }
     const auto n = static_cast<double>(pop.size());
     r.mean = std::accumulate(f.begin(), f.end(), 0.0) / n;
@@ -124,15 +124,15 @@ Initialise::Initialise(const GpConfig& cfg, const tree::PrimitiveSet& ps)
 
 void Initialise::apply(Population& pop, EvolutionState& st) {
     pop.individuals.clear();
-    pop.iteration = 0;
-    std::unordered_set<std::uint64_t> seen;
+    pop.generation = 0;
+    SeenGenotypes seen;
     const auto n = static_cast<std::size_t>(cfg_.population_size);
     for (std::size_t slot = 0; slot < n; ++slot) {
         tree::Forest f;
         for (int attempt = 0;; ++attempt) {
             f.clear();
             for (int t = 0; t < cfg_.trees_per_genotype; ++t) f.push_back(gen_.generate(st.rng, slot, n));
-            if (!cfg_.prevent_duplicates || seen.insert(tree::hash(f)).second) break;
+            if (!cfg_.prevent_duplicates || seen.insert(f)) break;
             if (attempt >= cfg_.duplicate_retries) break;   // bounded: accept a duplicate
         }
         auto ind = make_child(st, std::move(f), {});
@@ -155,7 +155,7 @@ void Evaluate::apply(Population& pop, EvolutionState& st) {
             todo.clear();
             throw std::logic_error("evaluator left an individual unevaluated");
         }
-        if (ind->has("failed")) ++failed_;
+        if (ind->failed) ++failed_;
     }
     st.evaluations += static_cast<long>(todo.size());
     todo.clear();   // holds no individual between calls
@@ -168,7 +168,7 @@ Breed::Breed(const GpConfig& cfg, const tree::PrimitiveSet& ps)
       mutation_levels_(levels(cfg, cfg.mutation_generator, cfg.max_mutation_depth)),
       gen_(ps, cfg.mutation_generator, cfg.expected_tree_size, 1, mutation_levels_) {}
 
-std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered_set<std::uint64_t>& seen,
+std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, SeenGenotypes& seen,
                                               std::size_t room) {
     const std::span<const IndividualPtr> parents(parents_.individuals);
     std::vector<IndividualPtr> out;
@@ -179,11 +179,7 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered
         // Hashes are needed only to prevent duplicates (`seen` is not read otherwise).
         auto admit = [&](tree::Forest f, std::vector<std::uint64_t> ids, const Individual& a, const Individual* b) {
             if (out.size() >= room) return;
-            if (cfg_.prevent_duplicates) {
-                const auto h = tree::hash(f);
-                if (!force && seen.count(h)) return;
-                seen.insert(h);
-            }
+            if (cfg_.prevent_duplicates && !seen.insert(f) && !force) return;
             // Evaluation is a pure function of the genotype: a child identical to a
             // parent (e.g. crossover swapping equal subtrees) inherits its fitness
             // instead of being evaluated again. About a third of children in
@@ -193,8 +189,8 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered
             if (same && same->evaluated) {
                 child->fitness = same->fitness;
                 child->evaluated = true;
-                if (auto it = same->attributes.find("failed"); it != same->attributes.end())
-                    child->attributes.insert(*it);
+                child->failed = same->failed;
+                child->failure = same->failure;
             }
             out.push_back(std::move(child));
         };
@@ -210,11 +206,7 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, std::unordered
                   {p1.id}, p1, nullptr);
         } else {
             // Reproduction: an unchanged copy keeps its known fitness.
-            if (cfg_.prevent_duplicates) {
-                const auto h = tree::hash(p1.genotype);
-                if (!force && seen.count(h)) continue;
-                seen.insert(h);
-            }
+            if (cfg_.prevent_duplicates && !seen.insert(p1.genotype) && !force) continue;
             out.push_back(copy_of(st, p1));
         }
     }
@@ -233,8 +225,8 @@ void Breed::apply(Population& pop, EvolutionState& st) {
     const auto n = static_cast<std::size_t>(cfg_.population_size);
     Population next;
     next.individuals.reserve(n);
-    next.iteration = parents_.iteration + 1;
-    std::unordered_set<std::uint64_t> seen;
+    next.generation = parents_.generation + 1;
+    SeenGenotypes seen;
 
     // Elitism: the best survive unchanged (shared, already evaluated). `better`
     // is a strict total order, so a partial sort picks the same elites as a full one.
@@ -246,7 +238,7 @@ void Breed::apply(Population& pop, EvolutionState& st) {
                       [](const IndividualPtr* a, const IndividualPtr* b) { return better(**a, **b); });
     for (std::size_t e = 0; e < elites; ++e) {
         next.individuals.push_back(*ranked[e]);
-        if (cfg_.prevent_duplicates) seen.insert(tree::hash((*ranked[e])->genotype));
+        if (cfg_.prevent_duplicates) seen.insert((*ranked[e])->genotype);
     }
     while (next.size() < n) {
         if (!retiring_.empty()) retiring_.pop_back();   // room for this event's first child
@@ -260,9 +252,9 @@ void Breed::apply(Population& pop, EvolutionState& st) {
 std::vector<std::size_t> Breed::replace_duplicates(Population& pop, EvolutionState& st) {
     std::vector<std::size_t> slots;
     if (!cfg_.prevent_duplicates) return slots;
-    std::unordered_set<std::uint64_t> seen;
+    SeenGenotypes seen;
     for (std::size_t i = 0; i < pop.size(); ++i)
-        if (!seen.insert(tree::hash(pop[i].genotype)).second) slots.push_back(i);
+        if (!seen.insert(pop[i].genotype)) slots.push_back(i);
     for (auto i : slots) pop.individuals[i] = breed_event(st, seen, 1).front();
     return slots;
 }
@@ -308,13 +300,6 @@ void BloatControl::filter(Population& pop, EvolutionState& st, std::span<const s
         if (!ok) ind = copy_of(st, *p1);
     }
     if (dl) st.bloat = dl->state();
-}
-
-void BloatControl::apply(Population& pop, EvolutionState& st) {
-    std::vector<std::size_t> all(pop.size());
-    std::iota(all.begin(), all.end(), std::size_t{0});
-    filter(pop, st, all);
-    end_generation(pop, st);
 }
 
 void BloatControl::end_generation(Population& pop, EvolutionState& st) {
@@ -369,7 +354,7 @@ EvolutionResult evolve(const GpConfig& gp, const BloatConfig& bloat, const StopC
         StopReason reason{};
         bool done = true;
         if (rec.best >= stop.minimum_fitness) reason = StopReason::MinimumFitness;
-        else if (pop.iteration + 1 >= stop.maximum_iterations) reason = StopReason::MaximumIterations;
+        else if (pop.generation + 1 >= stop.maximum_iterations) reason = StopReason::MaximumIterations;
         else if (hooks.stop_requested && hooks.stop_requested->load()) reason = StopReason::Interrupted;
         else done = false;
         // A resumed population was saved already; save it again only if it is also the last.

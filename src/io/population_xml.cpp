@@ -107,7 +107,19 @@ gp::IndividualPtr read_individual(const xml::Node& n, int trees) {
             std::string tok;
             while (in >> tok) ind->parents.push_back(number<std::uint64_t>(c, "parents", tok));
         } else if (name == "attribute") {
-            ind->attributes[required_text(c, "key")] = c.text();
+            const std::string key = required_text(c, "key");
+            const std::string value = c.text();
+            auto mark = [&](bool& flag) {
+                if (value != "1") throw c.error("<attribute key=\"" + key + "\"> must hold 1, not '" + value + "'");
+                flag = true;
+            };
+            if (key == "illegal") mark(ind->illegal);
+            else if (key == "edited") mark(ind->edited);
+            else if (key == "failed") {
+                ind->failed = true;
+                ind->failure = value;
+            } else
+                throw c.error("unknown attribute key '" + key + "'; allowed: edited, failed, illegal");
         } else {
             throw c.error("unknown element <" + std::string(name) + "> in <individual>; allowed: tree, parents, attribute");
         }
@@ -119,7 +131,7 @@ gp::IndividualPtr read_individual(const xml::Node& n, int trees) {
     // apart, and an edited individual is evaluated again instead of keeping a stale fitness.
     if (auto h = n.attribute("hash"); h && *h != hash_text(tree::hash(ind->genotype))) {
         ind->evaluated = false;
-        ind->attributes["edited"] = "1";
+        ind->edited = true;
     }
     return ind;
 }
@@ -146,7 +158,7 @@ std::string to_xml(const PopulationFile& p) {
     root.set_attribute("version", std::to_string(kVersion));
     root.set_attribute("experiment", p.experiment);
     root.set_attribute("settingsDigest", p.settings_digest);
-    root.set_attribute("generation", std::to_string(p.population.iteration));
+    root.set_attribute("generation", std::to_string(p.population.generation));
     auto shape = root.add_element("genotype");
     shape.set_attribute("variables", std::to_string(p.variables));
     shape.set_attribute("functions", join(p.functions));
@@ -176,7 +188,10 @@ std::string to_xml(const PopulationFile& p) {
             for (auto id : ind->parents) ids += (ids.empty() ? "" : " ") + std::to_string(id);
             n.add_child("parents", ids);
         }
-        for (const auto& [k, v] : ind->attributes) n.add_child("attribute", v).set_attribute("key", k);
+        // In key order, as files written before the marks were typed.
+        if (ind->edited) n.add_child("attribute", "1").set_attribute("key", "edited");
+        if (ind->failed) n.add_child("attribute", ind->failure).set_attribute("key", "failed");
+        if (ind->illegal) n.add_child("attribute", "1").set_attribute("key", "illegal");
         for (const auto& t : ind->genotype) n.add_child("tree", t.to_string());
     }
     return doc.to_string();
@@ -201,8 +216,8 @@ PopulationFile parse_population(std::string_view text, const std::string& name) 
     PopulationFile p;
     p.experiment = required_text(root, "experiment");
     p.settings_digest = root.attribute("settingsDigest").value_or("");
-    p.population.iteration = required<int>(root, "generation");
-    if (p.population.iteration < 0)
+    p.population.generation = required<int>(root, "generation");
+    if (p.population.generation < 0)
         throw root.error("generation=\"" + *root.attribute("generation") + "\" must be >= 0");
     bool have_rng = false, have_shape = false, have_list = false;
     std::size_t declared = 0;

@@ -130,6 +130,33 @@ SettingKey double_list_row(std::string sec, std::string key, Bounds b, std::size
     return k;
 }
 
+// The SimConfig member that f describes, found by name in s.sim.
+template <class T>
+auto sim_member(std::string_view name) {
+    return [name](Settings& s) -> T& {
+        T* found = nullptr;
+        sim::for_each_field(s.sim, [&](const sim::FieldSpec& f, auto& v) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(v)>, T>)
+                if (f.name == name) found = &v;
+        });
+        return *found;
+    };
+}
+
+// A <Simulator> row with the key, doc and range of sim::for_each_field.
+template <class T>
+SettingKey sim_row(const sim::FieldSpec& f) {
+    std::string key(f.key), doc(f.doc);
+    if constexpr (std::is_same_v<T, bool>)
+        return bool_row("Simulator", key, doc, sim_member<T>(f.name));
+    else if constexpr (std::is_same_v<T, int>)
+        return int_row("Simulator", key, static_cast<long long>(f.min), static_cast<long long>(f.max), doc,
+                       sim_member<T>(f.name));
+    else
+        return double_row("Simulator", key, Bounds{f.min, f.max, f.min_exclusive, f.allow_inf}, doc,
+                          sim_member<T>(f.name));
+}
+
 std::vector<std::string> function_names() {
     std::vector<std::string> names;
     for (auto op : tree::canonical_functions()) names.emplace_back(tree::name(op));
@@ -389,52 +416,21 @@ std::vector<SettingKey> build_table() {
                                       "Depth of a forest genotype for Dynamic Limits and statistics: the sum of its "
                                       "trees' depths (thesis 7.2.1, fig. 7.4b) or its deepest tree",
                                       FIELD(gp.forest_depth)));
-    // ---- Simulator
-    t.push_back(double_row("Simulator", "sample_from", kNonNegative, "Simulation start time, s", FIELD(sim.sample_from)));
-    t.push_back(double_row("Simulator", "sample_step", kPositive,
-                           "Control step, s: how often the network computes new outputs (thesis 7.2.3)",
-                           FIELD(sim.sample_step)));
-    t.push_back(double_row("Simulator", "sample_to", kPositive, "Simulation stop time, s", FIELD(sim.sample_to)));
-    t.push_back(double_row("Simulator", "delayed_start", kNonNegative,
-                           "Time at which the start position is taken for the fitness, s (thesis 7.1.2)",
-                           FIELD(sim.delayed_start)));
-    t.push_back(int_row("Simulator", "robot_type", 0, 2, "Robot: 0 R0, 1 R1, 2 R2 (thesis 7.1.1)",
-                        FIELD(robot.robot_type)));
-    t.push_back(string_row("Simulator", "robotFile", ValueType::Path, true,
-                           "Robot description XML; overrides robot_type when set", FIELD(robot.robot_file)));
-    t.push_back(int_row("Simulator", "extraTimeStepDivider", 1, 10000,
-                        "Physics substeps per control step (physics dt = sample_step / divider)",
-                        FIELD(sim.step_divider)));
-    t.push_back(bool_row("Simulator", "generatePovrayFiles", "Write POV-Ray scenes of the best individual's run",
-                         FIELD(robot.generate_povray)));
-    t.push_back(double_row("Simulator", "gravity", {0.0, 1000.0}, "Gravity, m/s^2 (pointing down)", FIELD(sim.gravity)));
-    t.push_back(double_row("Simulator", "erp", kUnit, "ODE error reduction parameter", FIELD(sim.erp)));
-    t.push_back(double_row("Simulator", "cfm", kUnit, "ODE constraint force mixing", FIELD(sim.cfm)));
-    t.push_back(int_row("Simulator", "quickStepIterations", 1, 10000, "ODE QuickStep iterations",
-                        FIELD(sim.quickstep_iterations)));
-    t.push_back(double_row("Simulator", "friction", {0.0, kHuge, false, true}, "Contact friction mu; inf = infinite",
-                           FIELD(sim.friction)));
-    t.push_back(double_row("Simulator", "softCfm", kUnit, "Contact softness (ODE soft CFM)", FIELD(sim.soft_cfm)));
-    t.push_back(double_row("Simulator", "bounce", kUnit, "Contact restitution", FIELD(sim.bounce)));
-    t.push_back(int_row("Simulator", "maxContacts", 1, 64, "Contact points per colliding geom pair",
-                        FIELD(sim.max_contacts)));
-    t.push_back(double_row("Simulator", "jointGain", {-1e6, 1e6},
-                           "Joint P-controller gain: velocity = gain * (angle - desired)", FIELD(sim.joint_gain)));
-    t.push_back(double_row("Simulator", "maxMotorForce", kPositive, "Maximum joint motor force, N", FIELD(sim.max_motor_force)));
-    t.push_back(double_row("Simulator", "blowupBound", kPositive,
-                           "A position or velocity beyond this counts as a physics blow-up", FIELD(sim.blowup_bound)));
-    t.push_back(double_row("Simulator", "maxBodySpeed", kPositive,
-                           "A body faster than this (m/s) counts as a physics blow-up (failed evaluation)",
-                           FIELD(sim.max_body_speed)));
-    t.push_back(double_row("Simulator", "failureFitness", kAnyFinite, "Fitness given to a failed (blown-up) evaluation",
-                           FIELD(sim.failure_fitness)));
-    t.push_back(bool_row("Simulator", "selfCollision",
-                         "Bodies of the robot collide with each other (except those joined by a hinge)",
-                         FIELD(sim.self_collision)));
-    t.push_back(bool_row("Simulator", "allowCoarseStep",
-                         "Accept a physics step sample_step / extraTimeStepDivider above the stability bound "
-                         "(docs/simulator.md); results are then physics artefacts",
-                         FIELD(sim.allow_coarse_step)));
+    // ---- Simulator: SimConfig's fields as sim::for_each_field describes them,
+    // with the robot's keys where the thesis's files have them.
+    const sim::SimConfig defaults{};
+    sim::for_each_field(defaults, [&](const sim::FieldSpec& f, const auto& v) {
+        t.push_back(sim_row<std::decay_t<decltype(v)>>(f));
+        if (f.name == "delayed_start") {
+            t.push_back(int_row("Simulator", "robot_type", 0, 2, "Robot: 0 R0, 1 R1, 2 R2 (thesis 7.1.1)",
+                                FIELD(robot.robot_type)));
+            t.push_back(string_row("Simulator", "robotFile", ValueType::Path, true,
+                                   "Robot description XML; overrides robot_type when set", FIELD(robot.robot_file)));
+        }
+        if (f.name == "step_divider")
+            t.push_back(bool_row("Simulator", "generatePovrayFiles",
+                                 "Write POV-Ray scenes of the best individual's run", FIELD(robot.generate_povray)));
+    });
     // ---- Control
     t.push_back(int_row("Control", "maximumIterations", 1, 10000000,
                         "Maximum number of generations, counting generation 0",

@@ -73,21 +73,17 @@ void validate(const Settings& s, const Locations& locs) {
               {"GP.terminalVariableCount", "GP.terminalConsts", "GP.ephemeralConstants"},
               "trees need at least one terminal (a variable, a constant or ephemeral constants)");
 
-    const auto& sim = s.sim;
-    c.require(sim.sample_from < sim.sample_to, {"Simulator.sample_from", "Simulator.sample_to"},
-              "the simulation must start before it stops");
-    c.require(sim.sample_from <= sim.delayed_start && sim.delayed_start < sim.sample_to,
-              {"Simulator.delayed_start", "Simulator.sample_from", "Simulator.sample_to"},
-              "delayed_start must lie in [sample_from, sample_to)");
-    c.require(sim.allow_coarse_step || sim.physics_step() <= sim::kMaxStablePhysicsStep,
-              {"Simulator.sample_step", "Simulator.extraTimeStepDivider"},
-              "the physics step sample_step / extraTimeStepDivider = " + format_double(sim.physics_step()) +
-                  " s is above the stability bound " + format_double(sim::kMaxStablePhysicsStep) +
-                  " s (docs/simulator.md); raise extraTimeStepDivider, or set Simulator.allowCoarseStep = 1 "
-                  "to accept physics artefacts");
-    c.require(sim.sample_step <= sim.sample_to - sim.sample_from,
-              {"Simulator.sample_step", "Simulator.sample_from", "Simulator.sample_to"},
-              "the control step is longer than the simulated time");
+    // The simulator's own rules (sim/config.hpp), reported at the settings keys involved.
+    for (const sim::ConfigProblem& problem : sim::config_problems(s.sim)) {
+        std::vector<std::string> keys;
+        for (std::string_view name : problem.fields)
+            sim::for_each_field(s.sim, [&](const sim::FieldSpec& f, const auto&) {
+                if (f.name == name) keys.push_back("Simulator." + std::string(f.key));
+            });
+        std::vector<const char*> key_ptrs;
+        for (const auto& k : keys) key_ptrs.push_back(k.c_str());
+        c.require(false, key_ptrs, problem.why);
+    }
 
     const auto& nn = s.neural;
     c.require(s.experiment.type != ExperimentType::HyperGP || p.variable_count <= nn::cppf_variable_count(nn),

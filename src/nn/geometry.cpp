@@ -22,9 +22,9 @@ void Geometry::validate() const {
     check_points(hidden, "hidden");
 }
 
-Layout make_layout(const Geometry& g, const NeuralConfig& cfg) {
+NeuronLayout make_neuron_layout(const Geometry& g, const NeuralConfig& cfg) {
     g.validate();
-    Layout l;
+    NeuronLayout l;
     l.input = g.joints;
     l.hidden = g.hidden;
     l.output = g.joints;

@@ -28,7 +28,7 @@ struct Ends {
     LayerRef src, dst;
 };
 
-std::array<Ends, kSynapseTypes> synapse_ends(const Layout& l) {
+std::array<Ends, kSynapseTypes> synapse_ends(const NeuronLayout& l) {
     const LayerRef in{&l.input, kInputLayer}, hid{&l.hidden, kHiddenLayer}, out{&l.output, kOutputLayer};
     return {{{in, hid}, {hid, out}, {hid, hid}, {out, out}, {out, hid}}};
 }
@@ -87,10 +87,10 @@ double apply_weight_rule(double w, const NeuralConfig& cfg) {
 }
 
 Network build_network(const Geometry& g, const tree::Forest& genotype, const NeuralConfig& cfg) {
-    return build_network(make_layout(g, cfg), genotype, cfg);
+    return build_network(make_neuron_layout(g, cfg), genotype, cfg);
 }
 
-Network build_network(const Layout& layout, const tree::Forest& genotype, const NeuralConfig& cfg) {
+Network build_network(const NeuronLayout& layout, const tree::Forest& genotype, const NeuralConfig& cfg) {
     if (genotype.empty()) throw std::invalid_argument("nn::build_network: empty genotype (no trees)");
     for (std::size_t k = 0; k < genotype.size(); ++k)
         if (genotype[k].empty())
@@ -150,7 +150,7 @@ Network build_network(const Layout& layout, const tree::Forest& genotype, const 
     return Network(layout.input.size(), layout.hidden.size(), layout.output.size(), std::move(blocks), cfg.neuron);
 }
 
-void encode_inputs(const Layout& layout, const NeuralConfig& cfg, double t, std::span<const double> angles,
+void encode_inputs(const NeuronLayout& layout, const NeuralConfig& cfg, double t, std::span<const double> angles,
                    std::span<double> in) {
     if (angles.size() != layout.joint_count || in.size() != layout.input.size())
         throw std::invalid_argument("nn::encode_inputs: got " + std::to_string(angles.size()) + " angles and " +

@@ -12,30 +12,10 @@ namespace cic::sim {
 namespace {
 
 void check_config(const SimConfig& c, const EvalOptions& o) {
-    auto fail = [](const std::string& what) { throw std::invalid_argument("SimConfig: " + what); };
-    auto finite = [](double v) { return std::isfinite(v); };
-    if (!finite(c.sample_step) || c.sample_step <= 0) fail("sample_step must be > 0");
-    if (!finite(c.sample_from) || !finite(c.sample_to) || c.sample_to <= c.sample_from)
-        fail("sample_to must be after sample_from");
-    if (!finite(c.delayed_start) || c.delayed_start < c.sample_from || c.delayed_start > c.sample_to)
-        fail("delayed_start must lie in [sample_from, sample_to]");
-    if ((c.sample_to - c.sample_from) / c.sample_step > 1e9) fail("too many control steps");
-    if (c.step_divider < 1) fail("step_divider must be >= 1");
-    if (c.physics_step() > kMaxStablePhysicsStep && !c.allow_coarse_step)
-        fail("physics step sample_step / step_divider = " + std::to_string(c.physics_step()) + " s is above " +
-             std::to_string(kMaxStablePhysicsStep) + " s (allow_coarse_step is off)");
-    if (c.quickstep_iterations < 1) fail("quickstep_iterations must be >= 1");
-    if (c.max_contacts < 1 || c.max_contacts > 64) fail("max_contacts must be in [1, 64]");
-    if (!finite(c.gravity) || !finite(c.erp) || !finite(c.cfm) || c.erp < 0 || c.erp > 1 || c.cfm < 0)
-        fail("gravity must be finite, erp in [0, 1], cfm >= 0");
-    if (std::isnan(c.friction) || c.friction < 0) fail("friction must be >= 0 (inf allowed)");
-    if (!finite(c.soft_cfm) || c.soft_cfm < 0 || !finite(c.bounce) || c.bounce < 0 || c.bounce > 1)
-        fail("soft_cfm must be >= 0 and bounce in [0, 1]");
-    if (!finite(c.joint_gain) || !finite(c.max_motor_force) || c.max_motor_force < 0)
-        fail("joint_gain must be finite and max_motor_force >= 0");
-    if (!(c.blowup_bound > 0) || !(c.max_body_speed > 0) || !finite(c.failure_fitness))
-        fail("blowup_bound and max_body_speed must be > 0 and failure_fitness finite");
-    if (!finite(o.record_fps) || o.record_fps < 0) fail("record_fps must be >= 0");
+    if (auto problems = config_problems(c); !problems.empty())
+        throw std::invalid_argument("SimConfig: " + problems.front().why);
+    if (!std::isfinite(o.record_fps) || o.record_fps < 0)
+        throw std::invalid_argument("SimConfig: record_fps must be >= 0");
 }
 
 } // namespace
@@ -43,7 +23,7 @@ void check_config(const SimConfig& c, const EvalOptions& o) {
 EvalResult evaluate(const RobotSpec& robot, Controller& controller, const SimConfig& cfg,
                     const EvalOptions& options) {
     check_config(cfg, options);
-    const Layout layout = make_layout(robot);
+    const BodyLayout layout = make_body_layout(robot);
 
     // QuickStep shuffles constraints with ODE's process-global random state:
     // reset it so every evaluation starts alike, whatever ran before.

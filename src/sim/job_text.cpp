@@ -16,9 +16,9 @@ namespace {
     throw std::invalid_argument("job text: " + what);
 }
 
-std::string expect_word(std::istream& in, const char* word) {
+std::string expect_word(std::istream& in, std::string_view word) {
     std::string w;
-    if (!(in >> w) || w != word) bad(std::string("expected '") + word + "', got '" + w + "'");
+    if (!(in >> w) || w != word) bad("expected '" + std::string(word) + "', got '" + w + "'");
     return w;
 }
 
@@ -32,31 +32,6 @@ long read_int(std::istream& in) {
     long v = 0;
     if (!(in >> v)) bad("expected an integer");
     return v;
-}
-
-// SimConfig fields by name, in one table.
-template <class F>
-void for_each_field(SimConfig& c, F f) {
-    f("sample_from", c.sample_from);
-    f("sample_step", c.sample_step);
-    f("sample_to", c.sample_to);
-    f("delayed_start", c.delayed_start);
-    f("step_divider", c.step_divider);
-    f("gravity", c.gravity);
-    f("erp", c.erp);
-    f("cfm", c.cfm);
-    f("quickstep_iterations", c.quickstep_iterations);
-    f("friction", c.friction);
-    f("soft_cfm", c.soft_cfm);
-    f("bounce", c.bounce);
-    f("max_contacts", c.max_contacts);
-    f("joint_gain", c.joint_gain);
-    f("max_motor_force", c.max_motor_force);
-    f("blowup_bound", c.blowup_bound);
-    f("max_body_speed", c.max_body_speed);
-    f("failure_fitness", c.failure_fitness);
-    f("self_collision", c.self_collision);
-    f("allow_coarse_step", c.allow_coarse_step);
 }
 
 } // namespace
@@ -125,9 +100,9 @@ RobotSpec read_robot_text(std::istream& in) {
 }
 
 void write_config_text(std::ostream& out, const SimConfig& cfg) {
-    SimConfig c = cfg;
     out << "config\n";
-    for_each_field(c, [&](const char* name, auto& v) {
+    for_each_field(cfg, [&](const FieldSpec& f, const auto& v) {
+        const std::string_view name = f.name;
         if constexpr (std::is_same_v<std::decay_t<decltype(v)>, double>)
             out << name << ' ' << hexfloat(v) << '\n';
         else
@@ -139,8 +114,8 @@ void write_config_text(std::ostream& out, const SimConfig& cfg) {
 SimConfig read_config_text(std::istream& in) {
     SimConfig c;
     expect_word(in, "config");
-    for_each_field(c, [&](const char* name, auto& v) {
-        expect_word(in, name);
+    for_each_field(c, [&](const FieldSpec& f, auto& v) {
+        expect_word(in, f.name);
         if constexpr (std::is_same_v<std::decay_t<decltype(v)>, double>)
             v = read_double(in);
         else

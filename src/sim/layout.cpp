@@ -50,7 +50,7 @@ Vec3 axis_vector(Axis a) {
     throw std::invalid_argument("axis_vector: a fixed module has no hinge axis");
 }
 
-Layout make_layout(const RobotSpec& robot) {
+BodyLayout make_body_layout(const RobotSpec& robot) {
     robot.validate();
     const int n = static_cast<int>(robot.modules.size());
     std::vector<int> index_of_cell_parent(n, -1);
@@ -71,7 +71,7 @@ Layout make_layout(const RobotSpec& robot) {
         if (m.axis == Axis::Fixed) uf.join(i, n + i);                        // no hinge: rigid
     }
     // Number bodies in order of first appearance (chassis 0, 1, ..., then panels).
-    Layout L;
+    BodyLayout L;
     std::vector<int> body_of_root(2 * n, -1);
     auto body_of = [&](int item) {
         int& b = body_of_root[uf.find(item)];
@@ -137,7 +137,7 @@ Layout make_layout(const RobotSpec& robot) {
     return L;
 }
 
-std::vector<Part> Layout::parts() const {
+std::vector<Part> BodyLayout::parts() const {
     std::vector<Part> out;
     out.reserve(geoms.size());
     for (const auto& g : geoms) {

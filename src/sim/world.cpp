@@ -14,7 +14,7 @@ void ensure_ode_initialised() {
     dAllocateODEDataForThread(dAllocateMaskAll);
 }
 
-World::World(const Layout& layout, const SimConfig& cfg) : layout_(layout) {
+World::World(const BodyLayout& layout, const SimConfig& cfg) : layout_(layout) {
     ensure_ode_initialised();
     max_contacts_ = cfg.max_contacts;
     self_collision_ = cfg.self_collision;

@@ -20,7 +20,7 @@ void ensure_ode_initialised();
 
 class World {
 public:
-    World(const Layout& layout, const SimConfig& cfg);
+    World(const BodyLayout& layout, const SimConfig& cfg);
     ~World();
     World(const World&) = delete;
     World& operator=(const World&) = delete;
@@ -50,7 +50,7 @@ private:
     static void ground_callback(void* data, dGeomID a, dGeomID b);
     static void self_callback(void* data, dGeomID a, dGeomID b);
 
-    const Layout& layout_;
+    const BodyLayout& layout_;
     dContact contact_template_{};
     int max_contacts_ = 4;
     bool self_collision_ = true;

@@ -15,6 +15,7 @@
 #include "cic/app/trace_csv.hpp"
 #include "cic/core/error.hpp"
 #include "cic/io/stats_csv.hpp"
+#include "support/files.hpp"
 
 namespace {
 
@@ -23,20 +24,9 @@ using namespace cic;
 using cic::testing::input_error;
 using namespace cic::app;
 
-fs::path scratch(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("cic_plot_test_" + std::to_string(::getpid())) / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
-
-std::string slurp(const fs::path& p) {
-    std::ostringstream s;
-    s << std::ifstream(p).rdbuf();
-    return s.str();
-}
+fs::path scratch(const std::string& name) { return cic::testing::temp_dir("plot-" + name); }
+using cic::testing::read_text;
+using cic::testing::write_text;
 
 const std::string kHeader =
     "generation,best,mean,median,mean_depth,max_depth,mean_size,max_size,limit,illegal,evaluations,wall_seconds\n";
@@ -49,7 +39,7 @@ fs::path make_run(const fs::path& parent, const std::string& name, int gens, dou
     for (int g = 0; g < gens; ++g)
         text += std::to_string(g) + "," + std::to_string(slope * g) + "," + std::to_string(0.5 * slope * g) +
                 ",0.1,3.5,7,12.5,40,17,0,50,1.5\n";
-    write(dir / "stats.csv", text);
+    write_text(dir / "stats.csv", text);
     return dir;
 }
 
@@ -63,7 +53,7 @@ TEST(StatsCsv, ColumnsMatchTheRunsWriter) {
 
 TEST(StatsCsv, ReadsRowsByColumnName) {
     const fs::path dir = scratch("read");
-    write(dir / "stats.csv", kHeader + "0,1.5,0.5,0.4,3,5,10,20,17,0,50,1\n1,2.5,1,0.9,3.5,6,11,22,17,1,100,2\n");
+    write_text(dir / "stats.csv", kHeader + "0,1.5,0.5,0.4,3,5,10,20,17,0,50,1\n1,2.5,1,0.9,3.5,6,11,22,17,1,100,2\n");
     const auto rows = read_stats_csv(dir / "stats.csv");
     ASSERT_EQ(rows.size(), 2u);
     EXPECT_EQ(rows[1].generation, 1);
@@ -76,16 +66,16 @@ TEST(StatsCsv, ErrorsNameTheFileAndLine) {
     const fs::path dir = scratch("errors");
     const std::string f = (dir / "stats.csv").string();
     EXPECT_NE(input_error([&] { read_stats_csv(dir / "missing.csv"); }).find("missing.csv"), std::string::npos);
-    write(f, "generation,best\n0,1\n");
+    write_text(f, "generation,best\n0,1\n");
     EXPECT_NE(input_error([&] { read_stats_csv(f); }).find(f + ":1: header has no column 'mean'"), std::string::npos);
-    write(f, kHeader + "0,1,1,1,1,1,1,1,1,1,1,1\n1,1,x,1,1,1,1,1,1,1,1,1\n");
+    write_text(f, kHeader + "0,1,1,1,1,1,1,1,1,1,1,1\n1,1,x,1,1,1,1,1,1,1,1,1\n");
     EXPECT_NE(input_error([&] { read_stats_csv(f); }).find(f + ":3: column 'mean': 'x' is not a number"),
               std::string::npos);
-    write(f, kHeader + "0,1,1\n");
+    write_text(f, kHeader + "0,1,1\n");
     EXPECT_NE(input_error([&] { read_stats_csv(f); }).find(f + ":2: 3 values, expected 12"), std::string::npos);
-    write(f, kHeader);
+    write_text(f, kHeader);
     EXPECT_NE(input_error([&] { read_stats_csv(f); }).find("no data rows"), std::string::npos);
-    write(f, kHeader + "0.5,1,1,1,1,1,1,1,1,1,1,1\n");
+    write_text(f, kHeader + "0.5,1,1,1,1,1,1,1,1,1,1,1\n");
     EXPECT_NE(input_error([&] { read_stats_csv(f); }).find(":2: column 'generation'"), std::string::npos);
 }
 
@@ -125,7 +115,7 @@ TEST(PlotRuns, DrawsAnSvgWithOneSeriesPerConfiguration) {
     PlotOptions options;
     options.title = "R1 vs R2";
     plot_runs(runs, out, options);
-    const std::string svg = slurp(out);
+    const std::string svg = read_text(out);
     EXPECT_NE(svg.find("<svg"), std::string::npos);
     for (const char* title : {"r1 (2 runs)", "r2_6legs", "best fitness", "mean fitness", "r1 (2 runs) max depth",
                               "r2_6legs mean size", "R1 vs R2"})
@@ -136,7 +126,7 @@ TEST(PlotRuns, DrawsAPngByExtension) {
     const fs::path dir = scratch("png");
     const fs::path out = dir / "fitness.png";
     plot_runs({make_run(dir, "a-001", 5, 1.0)}, out);
-    const std::string png = slurp(out);
+    const std::string png = read_text(out);
     ASSERT_GT(png.size(), 8u);
     EXPECT_EQ(png.substr(1, 3), "PNG");
 }
@@ -175,7 +165,7 @@ TEST(TraceCsv, RoundTrips) {
     const fs::path dir = scratch("trace");
     const auto rows = sample_trace();
     write_trace_csv(dir / "t.csv", rows, {"leg+x-y.0", "hip"});
-    EXPECT_EQ(slurp(dir / "t.csv").substr(0, 62), "t,out_leg+x-y.0,out_hip,cmd_leg+x-y.0,cmd_hip,angle_leg+x-y.0,");
+    EXPECT_EQ(read_text(dir / "t.csv").substr(0, 62), "t,out_leg+x-y.0,out_hip,cmd_leg+x-y.0,cmd_hip,angle_leg+x-y.0,");
     const TraceTable table = read_trace_csv(dir / "t.csv");
     EXPECT_EQ(table.joints, (std::vector<std::string>{"leg+x-y.0", "hip"}));
     ASSERT_EQ(table.rows.size(), rows.size());
@@ -193,9 +183,9 @@ TEST(TraceCsv, RejectsBadInput) {
     EXPECT_THROW(write_trace_csv(dir / "t.csv", sample_trace(), {"only_one"}), std::invalid_argument);
     EXPECT_THROW(make_trace({sim::TraceRow{}}, {}), std::invalid_argument);
     const std::string f = (dir / "bad.csv").string();
-    write(f, "t,out_a,cmd_a,angle_a,cx,cy,cz\n0,1,2,3,4,5,6\n0.1,1,2,oops,4,5,6\n");
+    write_text(f, "t,out_a,cmd_a,angle_a,cx,cy,cz\n0,1,2,3,4,5,6\n0.1,1,2,oops,4,5,6\n");
     EXPECT_NE(input_error([&] { read_trace_csv(f); }).find(f + ":3: column 'angle_a': 'oops'"), std::string::npos);
-    write(f, "t,out_a,cmd_b,angle_a,cx,cy,cz\n");
+    write_text(f, "t,out_a,cmd_b,angle_a,cx,cy,cz\n");
     EXPECT_NE(input_error([&] { read_trace_csv(f); }).find(f + ":1:"), std::string::npos);
 }
 
@@ -203,14 +193,14 @@ TEST(PlotTrace, DrawsOutputsCommandsAndAnglesPerJoint) {
     const fs::path dir = scratch("trace_plot");
     write_trace_csv(dir / "t.csv", sample_trace(), {"leg+x-y.0", "hip"});
     plot_trace(dir / "t.csv", dir / "t.svg");
-    const std::string svg = slurp(dir / "t.svg");
+    const std::string svg = read_text(dir / "t.svg");
     for (const char* title : {"joint leg+x-y.0", "joint hip", "raw output", "command", "angle"})
         EXPECT_NE(svg.find(title), std::string::npos) << title;
     TracePlotOptions only;
     only.joints = {"hip"};
     only.from = 0.5;
     plot_trace(dir / "t.csv", dir / "hip.svg", only);
-    EXPECT_EQ(slurp(dir / "hip.svg").find("joint leg+x-y.0"), std::string::npos);
+    EXPECT_EQ(read_text(dir / "hip.svg").find("joint leg+x-y.0"), std::string::npos);
     only.joints = {"knee"};
     EXPECT_NE(input_error([&] { plot_trace(dir / "t.csv", dir / "k.svg", only); }).find("no joint 'knee'"),
               std::string::npos);

@@ -10,7 +10,8 @@ namespace {
 
 using namespace cic::app;
 
-GenerationRecord record(int g) { return {g, 50, 123.4, 2.5 + g, 1.25, 17, 90.0}; }
+// Generation g (from 0) finished.
+ProgressLine record(int g) { return {g - 1, 50, 123.4, 2.5 + g, 1.25, 17, 90.0}; }
 
 int count(const std::string& s, const std::string& what) {
     int n = 0;
@@ -28,13 +29,13 @@ TEST(Progress, FormatsDurations) {
 }
 
 TEST(Progress, RecordLineHoldsEveryField) {
-    const std::string line = format_record(record(12));
+    const std::string line = format_line(record(12));
     EXPECT_EQ(line, "generation 11 (12/50)  123.4 eval/s  best 14.5  mean 1.25  limit 17  eta 1m30s");
-    GenerationRecord open = record(3);
+    ProgressLine open = record(3);
     open.max_generations = 0;
     open.eta_seconds = -1;
-    EXPECT_EQ(format_record(open).substr(0, 18), "generation 2 (3)  ");
-    EXPECT_NE(format_record(open).find("eta ?"), std::string::npos);
+    EXPECT_EQ(format_line(open).substr(0, 18), "generation 2 (3)  ");
+    EXPECT_NE(format_line(open).find("eta ?"), std::string::npos);
 }
 
 TEST(Progress, PlainLinesWhenNotATerminal) {
@@ -46,7 +47,7 @@ TEST(Progress, PlainLinesWhenNotATerminal) {
         p.message("detail", true);
         p(record(2));
     }
-    EXPECT_EQ(out.str(), format_record(record(1)) + "\ncheckpoint written\n" + format_record(record(2)) + "\n");
+    EXPECT_EQ(out.str(), format_line(record(1)) + "\ncheckpoint written\n" + format_line(record(2)) + "\n");
     EXPECT_EQ(out.str().find('\r'), std::string::npos);
 }
 
@@ -79,7 +80,7 @@ TEST(Progress, QuietPrintsNothingAndVerboseKeepsEveryLine) {
         v.message("detail", true);
     }
     EXPECT_EQ(quiet.str(), "");
-    EXPECT_EQ(verbose.str(), format_record(record(1)) + "\n" + format_record(record(2)) + "\ndetail\n");
+    EXPECT_EQ(verbose.str(), format_line(record(1)) + "\n" + format_line(record(2)) + "\ndetail\n");
 }
 
 } // namespace

@@ -33,7 +33,7 @@ TEST(HypergpRun, TinyRunWritesPopulationStatsAndCheckpoints) {
     EXPECT_EQ(std::count(stats.begin(), stats.end(), '\n'), 4) << stats;   // header + 3 generations
     const auto pop = io::load_population(r.run / "population.xml");
     EXPECT_EQ(pop.population.size(), 6u);
-    EXPECT_EQ(pop.population.iteration, 2);
+    EXPECT_EQ(pop.population.generation, 2);
     fs::remove_all(dir);
 }
 

@@ -24,7 +24,7 @@ NeuralController one_joint(const NeuralConfig& cfg) {
     cic::nn::Geometry g;
     g.joints = {{0, 0}};
     g.hidden = {{0, 0}};
-    auto layout = cic::nn::make_layout(g, cfg);
+    auto layout = cic::nn::make_neuron_layout(g, cfg);
     cic::nn::SynapseBlocks b;
     for (auto& m : b) m.resize(1, 1);
     b[0].insert(0, 0) = 1.0;

@@ -82,8 +82,8 @@ TEST(DynamicLimits, SimpleLimitOnlyRises) {
     Population next = population({{9.0, 2}, {1.0, 5}});   // the best is now shallow
     dl.end_generation(next);
     EXPECT_EQ(dl.state().limit, 5);
-    EXPECT_FALSE(next[0].has("illegal"));
-    EXPECT_FALSE(next[1].has("illegal"));
+    EXPECT_FALSE(next[0].illegal);
+    EXPECT_FALSE(next[1].illegal);
 }
 
 TEST(DynamicLimits, HeavyFallsToTheBestsDepthButNotBelowInitialMax) {
@@ -94,13 +94,13 @@ TEST(DynamicLimits, HeavyFallsToTheBestsDepthButNotBelowInitialMax) {
     Population next = population({{9.0, 6}, {1.0, 7}, {0.5, 5}});
     dl.end_generation(next);
     EXPECT_EQ(dl.state().limit, 6);              // fell to the best's depth
-    EXPECT_TRUE(next[1].has("illegal"));         // 7 > 6: now illegal
-    EXPECT_FALSE(next[0].has("illegal"));
-    EXPECT_FALSE(next[2].has("illegal"));
+    EXPECT_TRUE(next[1].illegal);         // 7 > 6: now illegal
+    EXPECT_FALSE(next[0].illegal);
+    EXPECT_FALSE(next[2].illegal);
     Population shallow = population({{10.0, 2}, {1.0, 5}});
     dl.end_generation(shallow);
     EXPECT_EQ(dl.state().limit, 4);              // floor: the initial maximum depth
-    EXPECT_TRUE(shallow[1].has("illegal"));
+    EXPECT_TRUE(shallow[1].illegal);
 }
 
 TEST(DynamicLimits, VeryHeavyMayFallBelowInitialMax) {
@@ -110,7 +110,7 @@ TEST(DynamicLimits, VeryHeavyMayFallBelowInitialMax) {
     Population shallow = population({{10.0, 2}, {1.0, 3}});
     dl.end_generation(shallow);
     EXPECT_EQ(dl.state().limit, 2);
-    EXPECT_TRUE(shallow[1].has("illegal"));
+    EXPECT_TRUE(shallow[1].illegal);
 }
 
 TEST(DynamicLimits, ChildOfAnIllegalParentGetsTheLargerParentsDepth) {
@@ -120,7 +120,7 @@ TEST(DynamicLimits, ChildOfAnIllegalParentGetsTheLargerParentsDepth) {
     Population next = population({{9.0, 4}, {1.0, 8}, {2.0, 3}});
     dl.end_generation(next);
     ASSERT_EQ(dl.state().limit, 4);
-    ASSERT_TRUE(next[1].has("illegal"));
+    ASSERT_TRUE(next[1].illegal);
     EXPECT_EQ(dl.limit_for(next[1], &next[2]), 8);   // illegal parent: larger parent depth
     EXPECT_EQ(dl.limit_for(next[2], &next[1]), 8);
     EXPECT_EQ(dl.limit_for(next[1], nullptr), 8);
@@ -185,7 +185,7 @@ void run_script(DynamicLimits& dl, const std::vector<Generation>& script) {
         dl.end_generation(pop);
         EXPECT_EQ(dl.state().limit, script[g].limit);
         for (std::size_t i = 0; i < pop.size(); ++i)
-            EXPECT_EQ(pop[i].has("illegal"), script[g].illegal[i]) << "individual " << i;
+            EXPECT_EQ(pop[i].illegal, script[g].illegal[i]) << "individual " << i;
     }
 }
 
@@ -207,7 +207,7 @@ TEST(DynamicLimitsScript, SimpleNeverFallsAndHasNoIllegals) {
     Population next = population({{6.0, 8}, {1.0, 9}});
     dl.end_generation(next);
     EXPECT_EQ(dl.state().limit, 8);
-    EXPECT_FALSE(next[1].has("illegal"));
+    EXPECT_FALSE(next[1].illegal);
     // The child of a deep parent is held to the limit, not to its parent's depth.
     EXPECT_EQ(dl.limit_for(next[1], nullptr), 8);
 }
@@ -224,7 +224,7 @@ TEST(DynamicLimitsScript, HeavyFallsToTheBestButNotBelowTheInitialMaximum) {
                    });
     // A child of an illegal parent is held to the larger parent's depth.
     Population pop = population({{6.0, 2}, {1.0, 9}});
-    pop[1].attributes["illegal"] = "1";
+    pop[1].illegal = true;
     EXPECT_EQ(dl.limit_for(pop[0], &pop[1]), 9);
     EXPECT_TRUE(dl.accept(*make(60, 0.0, 9), pop[0], &pop[1]));
     EXPECT_FALSE(dl.accept(*make(61, 0.0, 10), pop[0], &pop[1]));

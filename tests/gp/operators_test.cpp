@@ -4,37 +4,17 @@
 #include <stdexcept>
 
 #include "cic/gp/operators.hpp"
+#include "support/tree_checks.hpp"
 
 using namespace cic;
 using namespace cic::gp;
 using namespace cic::tree;
+using cic::testing::caches_correct;
 
 namespace {
 
 PrimitiveSet wide_set() {
     return PrimitiveSet({{Op::Add, Op::Mul, Op::Atan, Op::Sin, Op::Gauss, Op::Div}, {}, 3, {1.0, -1.0}, true});
-}
-
-// Sizes and depths recounted with a plain stack, ignoring the cached fields.
-::testing::AssertionResult caches_correct(const Tree& t) {
-    struct SD { std::uint32_t size; int depth; };
-    std::vector<SD> stack;
-    const auto nodes = t.nodes();
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-        SD me{1, 1};
-        for (int k = 0; k < arity(nodes[i].op); ++k) {
-            if (stack.empty()) return ::testing::AssertionFailure() << "malformed at " << i;
-            me.size += stack.back().size;
-            me.depth = std::max(me.depth, stack.back().depth + 1);
-            stack.pop_back();
-        }
-        if (nodes[i].size != me.size || nodes[i].depth != me.depth)
-            return ::testing::AssertionFailure() << "wrong cache at node " << i << " of " << t.to_string();
-        stack.push_back(me);
-    }
-    if (stack.size() != 1) return ::testing::AssertionFailure() << "not one tree";
-    if (t.size() != nodes.size() || t.depth() != stack[0].depth) return ::testing::AssertionFailure() << "root";
-    return ::testing::AssertionSuccess();
 }
 
 std::vector<Node> sorted_nodes(const Tree& a, const Tree& b) {

@@ -121,7 +121,7 @@ TEST(Evolution, StopsAtMinimumFitness) {
     st.rng = Rng(3);
     const auto r = evolve(c, {}, StopConditions{100, -1e29}, ps, eval, st, std::nullopt, {});
     EXPECT_EQ(r.reason, StopReason::MinimumFitness);
-    EXPECT_EQ(r.population.iteration, 0);
+    EXPECT_EQ(r.population.generation, 0);
 }
 
 TEST(Evolution, InterruptStopsAtAGenerationBoundary) {
@@ -144,7 +144,7 @@ TEST(Evolution, InterruptStopsAtAGenerationBoundary) {
     st.rng = Rng(3);
     const auto r = evolve(c, {}, StopConditions{50, 1e9}, ps, eval, st, std::nullopt, hooks);
     EXPECT_EQ(r.reason, StopReason::Interrupted);
-    EXPECT_EQ(r.population.iteration, 2);
+    EXPECT_EQ(r.population.generation, 2);
     EXPECT_EQ(checkpoints, 3);
     EXPECT_TRUE(last_seen);
 }

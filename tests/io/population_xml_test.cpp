@@ -18,7 +18,7 @@ PopulationFile sample() {
     p.variables = 2;
     p.functions = {"add", "mul", "sin"};
     p.trees = 2;
-    p.population.iteration = 7;
+    p.population.generation = 7;
     p.state.seed = 99;
     p.state.rng = Rng(5);
     p.state.rng.next();
@@ -33,7 +33,11 @@ PopulationFile sample() {
         ind->fitness = -1.0 / 3.0 * (i + 1);
         ind->evaluated = true;
         ind->parents = {3, 4};
-        if (i == 1) ind->attributes["illegal"] = "1";
+        if (i == 1) ind->illegal = true;
+        if (i == 2) {
+            ind->failed = true;
+            ind->failure = "physics blow-up: body 3 at 1e+05 m";
+        }
         p.population.individuals.push_back(ind);
     }
     return p;
@@ -46,9 +50,33 @@ TEST(PopulationXml, RoundTripsExactly) {
     EXPECT_EQ(to_xml(q), text);
     EXPECT_EQ(q.state.rng.state(), p.state.rng.state());
     EXPECT_EQ(q.population[0].fitness, p.population[0].fitness);   // bit-exact doubles
-    EXPECT_EQ(q.population[1].attributes.at("illegal"), "1");
+    EXPECT_TRUE(q.population[1].illegal);
+    EXPECT_FALSE(q.population[0].illegal);
     EXPECT_EQ(q.state.bloat.best_fitness, -0.125);
-    EXPECT_EQ(q.population.iteration, 7);
+    EXPECT_EQ(q.population.generation, 7);
+    EXPECT_TRUE(q.population[2].failed);
+    EXPECT_EQ(q.population[2].failure, "physics blow-up: body 3 at 1e+05 m");
+    EXPECT_FALSE(q.population[1].failed);
+}
+
+TEST(PopulationXml, MarksAreTheKnownOnes) {
+    const std::string text = to_xml(sample());
+    const std::string illegal = "<attribute key=\"illegal\">1</attribute>";
+    ASSERT_NE(text.find(illegal), std::string::npos) << text;
+    auto with = [&](const std::string& mark) {
+        std::string t = text;
+        t.replace(t.find(illegal), illegal.size(), mark);
+        return t;
+    };
+    try {
+        parse_population(with("<attribute key=\"favourite\">1</attribute>"), "marks.xml");
+        FAIL() << "expected an error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown attribute key 'favourite'; allowed: edited, failed, illegal"),
+                  std::string::npos) << e.what();
+        EXPECT_GT(e.line(), 0);
+    }
+    EXPECT_THROW(parse_population(with("<attribute key=\"illegal\">yes</attribute>"), "marks.xml"), InputError);
 }
 
 TEST(PopulationXml, HandEditedTreeLoadsAndIsEvaluatedAgain) {
@@ -58,7 +86,7 @@ TEST(PopulationXml, HandEditedTreeLoadsAndIsEvaluatedAgain) {
     const auto q = parse_population(text, "edited.xml");
     EXPECT_EQ(q.population[0].genotype[1].to_string(), "(sin (add x1 2.5))");
     EXPECT_FALSE(q.population[0].evaluated);   // its stored fitness belonged to the old tree
-    EXPECT_TRUE(q.population[0].has("edited"));
+    EXPECT_TRUE(q.population[0].edited);
     EXPECT_TRUE(q.population[1].evaluated);    // untouched individuals keep theirs
 }
 

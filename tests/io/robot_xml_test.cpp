@@ -115,7 +115,7 @@ TEST(RobotXml, UserMadeRobotsRun) {
     // cross: a fixed hub and 4 arms of 2 hinged modules -> 9 bodies, 8 hinges.
     for (const Row& row : {Row{"snake.xml", 7, 6}, Row{"cross.xml", 9, 8}}) {
         const RobotSpec robot = io::read_robot_file(kRobots / row.file);
-        const Layout layout = make_layout(robot);
+        const BodyLayout layout = make_body_layout(robot);
         EXPECT_EQ(layout.body_count, row.bodies) << row.file;
         EXPECT_EQ(layout.joints.size(), static_cast<std::size_t>(row.joints)) << row.file;
         SineController wave({{0.8, 0.5, 0.0}, {0.8, 0.5, 1.5}});

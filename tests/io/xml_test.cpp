@@ -1,4 +1,5 @@
 #include "cic/io/xml.hpp"
+#include "support/files.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -12,12 +13,7 @@ using cic::io::xml::Document;
 
 namespace {
 
-fs::path temp_dir(const std::string& tag) {
-    fs::path d = fs::temp_directory_path() / ("cic-xml-" + tag + "-" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
+fs::path temp_dir(const std::string& tag) { return cic::testing::temp_dir("xml-" + tag); }
 
 std::string message_of(const std::function<void()>& f) {
     try {

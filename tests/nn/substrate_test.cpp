@@ -138,7 +138,7 @@ TEST(Substrate, BiasAndClockInputs) {
     cfg.bias_input = true;
     cfg.clock_inputs = true;
     cfg.clock_period = 2.0;
-    const auto layout = cic::nn::make_layout(small_geometry(), cfg);
+    const auto layout = cic::nn::make_neuron_layout(small_geometry(), cfg);
     ASSERT_EQ(layout.input.size(), 5u);
     EXPECT_EQ(layout.input[2], cic::nn::kBiasPoint);
     EXPECT_EQ(layout.input[3], cic::nn::kClockSinPoint);

@@ -76,7 +76,7 @@ TEST(Preset, MatchesTheThesisTable) {
     EXPECT_THROW(preset(-1, true), std::invalid_argument);
 }
 
-TEST(Layout, PresetBodyAndJointCounts) {
+TEST(BodyLayout, PresetBodyAndJointCounts) {
     // The torso and every hip panel form one body; each leg module's chassis
     // carries the next module's panel, so each leg module adds one body and one hinge.
     // bodies = 1 + legs * leg_length, joints = legs * leg_length.
@@ -86,7 +86,7 @@ TEST(Layout, PresetBodyAndJointCounts) {
                         {2, false, 1 + 4 * 3, 4 * 3}, {2, true, 1 + 6 * 3, 6 * 3}};
     for (const Row& row : rows) {
         const RobotSpec r = preset(row.type, row.middle);
-        const Layout L = make_layout(r);
+        const BodyLayout L = make_body_layout(r);
         EXPECT_EQ(L.body_count, row.bodies) << r.name;
         EXPECT_EQ(L.joints.size(), static_cast<std::size_t>(row.joints)) << r.name;
         EXPECT_EQ(L.joints.size(), r.actuated().size());
@@ -96,8 +96,8 @@ TEST(Layout, PresetBodyAndJointCounts) {
     }
 }
 
-TEST(Layout, GeometryOfOneHinge) {
-    const Layout L = make_layout(two_modules());
+TEST(BodyLayout, GeometryOfOneHinge) {
+    const BodyLayout L = make_body_layout(two_modules());
     ASSERT_EQ(L.body_count, 2);
     ASSERT_EQ(L.joints.size(), 1u);
     // Module b's panel sits 0.65 from b's centre towards a, on a's body.
@@ -156,7 +156,7 @@ TEST(Validate, RefusesBadRobotsClearly) {
 
     RobotSpec none;
     EXPECT_NE(problem_of(none).find("no modules"), std::string::npos);
-    EXPECT_THROW(make_layout(none), cic::InputError);
+    EXPECT_THROW(make_body_layout(none), cic::InputError);
 }
 
 TEST(Names, RoundTripAndUnknown) {

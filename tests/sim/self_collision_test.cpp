@@ -85,7 +85,7 @@ double overlap(const Box& a, const Box& b) {
 // The deepest overlap, over all recorded frames, of two geoms on bodies that
 // are neither the same body nor joined by a hinge.
 double deepest_overlap(const RobotSpec& robot, const Recording& rec) {
-    const Layout layout = make_layout(robot);
+    const BodyLayout layout = make_body_layout(robot);
     std::set<std::pair<int, int>> hinged;
     for (const LayoutJoint& j : layout.joints) {
         hinged.insert({j.chassis_body, j.panel_body});

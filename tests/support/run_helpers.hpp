@@ -12,31 +12,13 @@
 #include <unistd.h>
 
 #include "cic/core/hash.hpp"
+#include "files.hpp"
 
 namespace cic::testing {
 
 inline std::string cic_binary() {
     const char* env = std::getenv("CIC_BINARY");
     return env ? env : CIC_BINARY;
-}
-
-// A fresh temporary folder for one test.
-inline std::filesystem::path temp_dir(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / ("cic-test-" + name + "-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
-inline std::string read_text(const std::filesystem::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-inline void write_text(const std::filesystem::path& p, const std::string& text) {
-    std::ofstream(p) << text;
 }
 
 // Runs a shell command line; returns the exit code; output goes to `log`.

@@ -8,7 +8,7 @@
 
 #include "cic/tree/eval.hpp"
 #include "cic/tree/trig.hpp"
-#include "random_trees.hpp"
+#include "support/random_trees.hpp"
 
 using namespace cic;
 using namespace cic::tree;

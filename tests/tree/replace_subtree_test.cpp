@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "cic/core/rng.hpp"
-#include "random_trees.hpp"
+#include "support/random_trees.hpp"
 
 using namespace cic;
 using namespace cic::tree;

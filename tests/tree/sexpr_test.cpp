@@ -5,7 +5,7 @@
 
 #include "cic/core/error.hpp"
 #include "cic/tree/tree.hpp"
-#include "random_trees.hpp"
+#include "support/random_trees.hpp"
 
 using namespace cic;
 using namespace cic::tree;

@@ -4,7 +4,8 @@
 #include <stdexcept>
 
 #include "cic/tree/tree.hpp"
-#include "random_trees.hpp"
+#include "support/random_trees.hpp"
+#include "support/tree_checks.hpp"
 
 using namespace cic;
 using namespace cic::tree;
@@ -17,25 +18,6 @@ Tree sample() {
                  Node::function(Op::Sin), Node::function(Op::Add)});
 }
 
-// Sizes and depths recounted with a plain stack, ignoring the cached fields.
-void expect_caches_correct(const Tree& t) {
-    struct SD { std::uint32_t size; int depth; };
-    std::vector<SD> stack;
-    const auto nodes = t.nodes();
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-        SD me{1, 1};
-        for (int k = 0; k < arity(nodes[i].op); ++k) {
-            me.size += stack.back().size;
-            me.depth = std::max(me.depth, stack.back().depth + 1);
-            stack.pop_back();
-        }
-        ASSERT_EQ(nodes[i].size, me.size) << "node " << i;
-        ASSERT_EQ(nodes[i].depth, me.depth) << "node " << i;
-        stack.push_back(me);
-    }
-    ASSERT_EQ(stack.size(), 1u);
-}
-
 } // namespace
 
 TEST(Tree, CachesSizeAndDepth) {
@@ -45,7 +27,7 @@ TEST(Tree, CachesSizeAndDepth) {
     EXPECT_EQ(t.root().op, Op::Add);
     EXPECT_EQ(t.nodes()[2].size, 3u);
     EXPECT_EQ(t.nodes()[4].depth, 2);
-    expect_caches_correct(t);
+    EXPECT_TRUE(cic::testing::caches_correct(t));
     EXPECT_EQ(Tree({Node::constant(2.0)}).depth(), 1);
     EXPECT_EQ(Tree().depth(), 0);
     EXPECT_TRUE(Tree().empty());
@@ -114,7 +96,7 @@ TEST(Tree, ReplaceSubtreeSplicesAndUpdatesCaches) {
     EXPECT_EQ(r.to_string(), "(add (mul (neg (neg x2)) x1) (sin 1.5))");
     EXPECT_EQ(r.size(), 8u);
     EXPECT_EQ(r.depth(), 5);
-    expect_caches_correct(r);
+    EXPECT_TRUE(cic::testing::caches_correct(r));
     const Tree whole = t.replace_subtree(5, sub.nodes());
     EXPECT_EQ(whole, sub);
     EXPECT_EQ(t.size(), 6u);   // the original is unchanged

@@ -1,20 +1,22 @@
 #pragma once
 // The run's voice on the console: a live progress line per generation on a
 // terminal, plain log lines otherwise. The evolution loop knows nothing of it;
-// it emits a GenerationRecord through a callback and this class prints it.
+// it emits a gp::GenerationRecord, the run turns it into a ProgressLine and
+// this class prints it.
 #include <iosfwd>
 #include <string>
 #include <string_view>
 
 namespace cic::app {
 
-struct GenerationRecord {
-    int generation = 0;               // 1-based number of the generation just finished
+// What the console shows of one finished generation.
+struct ProgressLine {
+    int generation = 0;               // the generation just finished, from 0 (as stats.csv)
     int max_generations = 0;          // 0 = unknown
     double evaluations_per_second = 0;
     double best = 0;
     double mean = 0;
-    double limit = 0;                 // current dynamic depth/size limit
+    int limit = 0;                    // dynamic depth limit (0 = none)
     double eta_seconds = -1;          // < 0 = unknown
 };
 
@@ -24,7 +26,7 @@ enum class Verbosity { Quiet, Normal, Verbose };
 std::string format_duration(double seconds);
 
 // One line of text for a record, without any terminal control characters.
-std::string format_record(const GenerationRecord& record);
+std::string format_line(const ProgressLine& line);
 
 class ProgressPrinter {
 public:
@@ -36,7 +38,7 @@ public:
 
     // Callback-friendly: printer(record). Quiet prints nothing. Verbose keeps
     // every generation's line on a terminal instead of rewriting one.
-    void operator()(const GenerationRecord& record);
+    void operator()(const ProgressLine& line);
 
     // A log line (e.g. "checkpoint written"); on a terminal it goes above the
     // live line, which is redrawn below it. Shown unless quiet; `detail` lines only when verbose.

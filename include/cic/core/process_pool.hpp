@@ -46,11 +46,4 @@ private:
 // Returns the process exit code to use.
 int serve_worker(int in_fd, int out_fd, const std::function<std::string(const std::string&)>& handler);
 
-// Runs fn(i) for i in [0, n) on `threads` threads (1 = inline). Exceptions are
-// rethrown (the first by index). For pure, deterministic per-item work.
-void parallel_for(std::size_t n, int threads, const std::function<void(std::size_t)>& fn);
-
-// Number of hardware threads, at least 1.
-int hardware_threads();
-
 } // namespace cic

@@ -16,10 +16,6 @@ public:
 
     explicit Rng(std::uint64_t seed = 1);
 
-    // A generator for a derived stream, e.g. (generation, slot); independent
-    // of how many streams were drawn before, so work can be split freely.
-    static Rng stream(std::uint64_t seed, std::uint64_t a, std::uint64_t b = 0);
-
     std::uint64_t next();
     double uniform();                        // [0, 1), 53 random bits
     double uniform(double lo, double hi);    // [lo, hi)

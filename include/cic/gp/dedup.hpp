@@ -1,30 +1,28 @@
 #pragma once
-// preventDuplicates: a set of genotypes keyed by structural hash and compared
-// exactly, plus a bounded-retry helper for making a genotype not yet present.
+// preventDuplicates (thesis Table B.1): the genotypes already in the generation
+// being built, kept as structural hashes. This is the one duplicate check of
+// the GP loop (initialisation, breeding, re-breeding after bloat control).
 #include <cstdint>
-#include <functional>
-#include <unordered_map>
+#include <unordered_set>
 
 #include "cic/tree/tree.hpp"
 
 namespace cic::gp {
 
-class GenotypeSet {
+// Genotypes compare by 64-bit structural hash (tree::hash). Two different
+// genotypes with one hash would count as duplicates: the odds are about
+// n^2 / 2^65 per generation, and the cost would be one more breeding retry,
+// never a wrong fitness.
+class SeenGenotypes {
 public:
-    // True if f was not present (and is now). Equality is exact, so hash collisions are harmless.
-    bool insert(const tree::Forest& f);
-    bool contains(const tree::Forest& f) const;
-    std::size_t size() const { return by_hash_.size(); }
-    void clear() { by_hash_.clear(); }
+    // True if f's hash was new (and is now recorded).
+    bool insert(const tree::Forest& f) { return hashes_.insert(tree::hash(f)).second; }
+    bool contains(const tree::Forest& f) const { return hashes_.count(tree::hash(f)) != 0; }
+    std::size_t size() const { return hashes_.size(); }
+    void clear() { hashes_.clear(); }
 
 private:
-    std::unordered_multimap<std::uint64_t, tree::Forest> by_hash_;
+    std::unordered_set<std::uint64_t> hashes_;
 };
-
-// Calls make() until it yields a genotype not in `seen`, at most 1 + retries times
-// (retries >= 0, else std::invalid_argument). Returns the last genotype made and
-// inserts it; *unique (if given) says whether it was new. Deterministic when make() is.
-tree::Forest make_unique(GenotypeSet& seen, int retries, const std::function<tree::Forest()>& make,
-                         bool* unique = nullptr);
 
 } // namespace cic::gp

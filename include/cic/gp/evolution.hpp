@@ -1,8 +1,12 @@
 #pragma once
-// The generational loop (thesis fig. 5.2) as a chain of population modifiers:
-// initialise | load -> evaluate -> [statistics -> checkpoint -> breed -> evaluate
-// -> bloat control]*. It knows no XML, ODE or CLI: experiments plug in an
-// Evaluator, and observers receive a typed record per generation.
+// The generational loop (thesis fig. 5.2): initialise | load -> evaluate ->
+// [statistics -> checkpoint -> breed -> evaluate -> bloat control]*. The thesis
+// draws it as a pipeline of population modifiers (6.1); here the stages are
+// plain classes that evolve() calls in order, because they do not share one
+// signature: bloat control filters chosen slots against the bred-from
+// generation, and duplicates are re-bred slot by slot. It knows no XML, ODE or
+// CLI: experiments plug in an Evaluator, and observers receive a typed record
+// per generation.
 #include <atomic>
 #include <chrono>
 #include <functional>
@@ -10,13 +14,13 @@
 #include <optional>
 #include <span>
 #include <string>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
 #include "cic/core/rng.hpp"
 #include "cic/gp/bloat.hpp"
 #include "cic/gp/config.hpp"
+#include "cic/gp/dedup.hpp"
 #include "cic/gp/generators.hpp"
 #include "cic/gp/individual.hpp"
 
@@ -69,30 +73,21 @@ struct StopConditions {
     double minimum_fitness = 50.0;  // stop once the best reaches this
 };
 
-class PopulationModifier {
-public:
-    virtual ~PopulationModifier() = default;
-    virtual std::string name() const = 0;
-    virtual void apply(Population& pop, EvolutionState& st) = 0;
-};
-
 // Random initial population (the configured generator), unique if asked.
-class Initialise final : public PopulationModifier {
+class Initialise {
 public:
     Initialise(const GpConfig& cfg, const tree::PrimitiveSet& ps);
-    std::string name() const override { return "initialise"; }
-    void apply(Population& pop, EvolutionState& st) override;
+    void apply(Population& pop, EvolutionState& st);
 private:
     const GpConfig& cfg_;
     TreeGenerator gen_;
 };
 
 // Evaluates every individual not yet evaluated.
-class Evaluate final : public PopulationModifier {
+class Evaluate {
 public:
     explicit Evaluate(Evaluator& e) : eval_(e) {}
-    std::string name() const override { return "evaluate"; }
-    void apply(Population& pop, EvolutionState& st) override;
+    void apply(Population& pop, EvolutionState& st);
     // Evaluations marked "failed" since the last call.
     int take_failed() { return std::exchange(failed_, 0); }
 private:
@@ -103,18 +98,17 @@ private:
 
 // Builds the next generation: elitism, then selection + crossover / mutation /
 // reproduction; children carry their parents' ids. Children are not evaluated.
-class Breed final : public PopulationModifier {
+class Breed {
 public:
     Breed(const GpConfig& cfg, const tree::PrimitiveSet& ps);
-    std::string name() const override { return "breed"; }
-    void apply(Population& pop, EvolutionState& st) override;
+    void apply(Population& pop, EvolutionState& st);
     // The population bred from (for the bloat filter's parent look-up).
     const Population& parents() const { return parents_; }
     // preventDuplicates after bloat control: breeds again into every slot that
     // repeats an earlier genotype. Returns the slots refilled (not yet evaluated).
     std::vector<std::size_t> replace_duplicates(Population& pop, EvolutionState& st);
 private:
-    std::vector<IndividualPtr> breed_event(EvolutionState& st, std::unordered_set<std::uint64_t>& seen,
+    std::vector<IndividualPtr> breed_event(EvolutionState& st, SeenGenotypes& seen,
                                            std::size_t room);
     const GpConfig& cfg_;
     int mutation_levels_;   // maximumMutationDepth in levels (see gp::levels)
@@ -127,11 +121,9 @@ private:
 // Dynamic Limits filter over freshly evaluated children (thesis 5.2): a child
 // that breaks its limit without beating the best is replaced by a copy of its
 // first parent. Without bloat control it keeps the per-tree depth cap instead.
-class BloatControl final : public PopulationModifier {
+class BloatControl {
 public:
     BloatControl(const GpConfig& gp, const BloatConfig& cfg, const Breed& breed);
-    std::string name() const override { return "bloat-control"; }
-    void apply(Population& pop, EvolutionState& st) override;   // filter all + end_generation
     void initialise(const Population& evaluated, EvolutionState& st);
     // Checks the children in `slots`; a rejected one becomes a copy of its first parent.
     void filter(Population& pop, EvolutionState& st, std::span<const std::size_t> slots);

@@ -2,7 +2,6 @@
 // Individual and Population (thesis 6.3.1-6.3.2): plain data that the
 // population modifiers read and change.
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,9 +24,11 @@ struct Individual {
     double fitness = 0.0;
     bool evaluated = false;
     std::vector<std::uint64_t> parents;      // ids; empty for generated ones
-    std::map<std::string, std::string> attributes;  // e.g. "illegal" -> "1"
-
-    bool has(const std::string& key) const { return attributes.count(key) != 0; }
+    // Marks, saved in population files as <attribute key="...">:
+    bool illegal = false;     // over a heavy variant's lowered limit (thesis 5.2): breeds only if better
+    bool failed = false;      // its evaluation failed (physics blow-up, worker); fitness is failureFitness
+    std::string failure;      // why it failed, when it did
+    bool edited = false;      // its trees were changed by hand in a population file, so it is evaluated again
     std::size_t size() const { return tree::total_size(genotype); }
     int depth(ForestDepth measure) const {
         return measure == ForestDepth::Sum ? tree::total_depth(genotype) : tree::max_depth(genotype);
@@ -39,7 +40,7 @@ using IndividualPtr = std::shared_ptr<Individual>;
 class Population {
 public:
     std::vector<IndividualPtr> individuals;
-    int iteration = 0;                       // the generation number
+    int generation = 0;                      // 0 = the initial population
 
     auto begin() { return individuals.begin(); }
     auto end() { return individuals.end(); }

@@ -38,7 +38,7 @@ inline constexpr Point kClockCosPoint{0.5, 1.5};
 
 // Every neuron of the substrate, layer by layer. Input order: one per joint
 // (angle / (pi/2)), then bias (if on), then clock sin, clock cos (if on).
-struct Layout {
+struct NeuronLayout {
     std::vector<Point> input;
     std::vector<Point> hidden;
     std::vector<Point> output;
@@ -48,7 +48,7 @@ struct Layout {
 };
 
 // Validates g, then appends the optional inputs the config asks for.
-Layout make_layout(const Geometry& g, const NeuralConfig& cfg);
+NeuronLayout make_neuron_layout(const Geometry& g, const NeuralConfig& cfg);
 
 // Number of CPPF variables: 4 (x1 y1 x2 y2), or 7 with extra_cppf_inputs
 // (x1 y1 x2 y2 layer_src layer_dst distance). In tree text they are x0..x6.

@@ -34,12 +34,12 @@ double apply_weight_rule(double w, const NeuralConfig& cfg);
 // a tree using a variable >= cppf_variable_count(cfg), or a bad geometry;
 // cic::InputError for a bad config (see validate).
 Network build_network(const Geometry& g, const tree::Forest& genotype, const NeuralConfig& cfg);
-Network build_network(const Layout& layout, const tree::Forest& genotype, const NeuralConfig& cfg);
+Network build_network(const NeuronLayout& layout, const tree::Forest& genotype, const NeuralConfig& cfg);
 
 // Fills the input vector: angle_j / (pi/2) for each joint, then 1 (bias),
 // then sin(2 pi t / clock_period), cos(2 pi t / clock_period) as the layout says.
 // in.size() must be layout.input.size(), angles.size() layout.joint_count.
-void encode_inputs(const Layout& layout, const NeuralConfig& cfg, double t,
+void encode_inputs(const NeuronLayout& layout, const NeuralConfig& cfg, double t,
                    std::span<const double> angles, std::span<double> in);
 
 } // namespace cic::nn

@@ -1,6 +1,13 @@
 #pragma once
-// Plain simulator settings with the thesis's and the reference simulator's defaults.
+// Simulator settings: the plain struct with the thesis's and the reference
+// simulator's defaults, and the one description of its fields (name, settings
+// key, range, meaning) that the settings table, the worker job text and
+// validation all read.
 #include <limits>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
 
 namespace cic::sim {
 
@@ -35,5 +42,76 @@ struct SimConfig {
 
     double physics_step() const { return sample_step / step_divider; }
 };
+
+// What one SimConfig field is. Ranges are inclusive unless min_exclusive;
+// doubles must be finite unless allow_inf (NaN never). Bools have no range.
+struct FieldSpec {
+    std::string_view name;   // member and worker-job-text name
+    std::string_view key;    // settings key in <Simulator> (the thesis's name where it has one)
+    std::string_view doc;    // one line for --help, docs and the schema
+    double min = -std::numeric_limits<double>::max();
+    double max = std::numeric_limits<double>::max();
+    bool min_exclusive = false;
+    bool allow_inf = false;
+};
+
+// Calls f(spec, member) for every field of c, in settings-file order.
+// Config is SimConfig or const SimConfig.
+template <class Config, class F>
+    requires std::is_same_v<std::remove_const_t<Config>, SimConfig>
+void for_each_field(Config& c, F&& f) {
+    constexpr double kHuge = std::numeric_limits<double>::max();
+    f(FieldSpec{"sample_from", "sample_from", "Simulation start time, s", 0.0, kHuge}, c.sample_from);
+    f(FieldSpec{"sample_step", "sample_step",
+                "Control step, s: how often the network computes new outputs (thesis 7.2.3)", 0.0, kHuge, true},
+      c.sample_step);
+    f(FieldSpec{"sample_to", "sample_to", "Simulation stop time, s", 0.0, kHuge, true}, c.sample_to);
+    f(FieldSpec{"delayed_start", "delayed_start",
+                "Time at which the start position is taken for the fitness, s (thesis 7.1.2)", 0.0, kHuge},
+      c.delayed_start);
+    f(FieldSpec{"step_divider", "extraTimeStepDivider",
+                "Physics substeps per control step (physics dt = sample_step / divider)", 1, 10000},
+      c.step_divider);
+    f(FieldSpec{"gravity", "gravity", "Gravity, m/s^2 (pointing down)", 0.0, 1000.0}, c.gravity);
+    f(FieldSpec{"erp", "erp", "ODE error reduction parameter", 0.0, 1.0}, c.erp);
+    f(FieldSpec{"cfm", "cfm", "ODE constraint force mixing", 0.0, 1.0}, c.cfm);
+    f(FieldSpec{"quickstep_iterations", "quickStepIterations", "ODE QuickStep iterations", 1, 10000},
+      c.quickstep_iterations);
+    f(FieldSpec{"friction", "friction", "Contact friction mu; inf = infinite", 0.0, kHuge, false, true}, c.friction);
+    f(FieldSpec{"soft_cfm", "softCfm", "Contact softness (ODE soft CFM)", 0.0, 1.0}, c.soft_cfm);
+    f(FieldSpec{"bounce", "bounce", "Contact restitution", 0.0, 1.0}, c.bounce);
+    f(FieldSpec{"max_contacts", "maxContacts", "Contact points per colliding geom pair", 1, 64}, c.max_contacts);
+    f(FieldSpec{"joint_gain", "jointGain", "Joint P-controller gain: velocity = gain * (angle - desired)", -1e6, 1e6},
+      c.joint_gain);
+    f(FieldSpec{"max_motor_force", "maxMotorForce", "Maximum joint motor force, N", 0.0, kHuge, true},
+      c.max_motor_force);
+    f(FieldSpec{"blowup_bound", "blowupBound", "A position or velocity beyond this counts as a physics blow-up", 0.0,
+                kHuge, true},
+      c.blowup_bound);
+    f(FieldSpec{"max_body_speed", "maxBodySpeed",
+                "A body faster than this (m/s) counts as a physics blow-up (failed evaluation)", 0.0, kHuge, true},
+      c.max_body_speed);
+    f(FieldSpec{"failure_fitness", "failureFitness", "Fitness given to a failed (blown-up) evaluation"},
+      c.failure_fitness);
+    f(FieldSpec{"self_collision", "selfCollision",
+                "Bodies of the robot collide with each other (except those joined by a hinge)"},
+      c.self_collision);
+    f(FieldSpec{"allow_coarse_step", "allowCoarseStep",
+                "Accept a physics step sample_step / extraTimeStepDivider above the stability bound "
+                "(docs/simulator.md); results are then physics artefacts"},
+      c.allow_coarse_step);
+}
+
+// One reason a SimConfig cannot run, naming the fields (FieldSpec::name) involved.
+struct ConfigProblem {
+    std::vector<std::string_view> fields;
+    std::string why;
+};
+
+// Every field outside its FieldSpec range, then every cross-field rule broken
+// (start before stop, delayed_start in [sample_from, sample_to), control step
+// within the simulated time, physics step within kMaxStablePhysicsStep unless
+// allow_coarse_step). Empty = the config runs.
+std::vector<ConfigProblem> config_problems(const SimConfig& c);
 
 } // namespace cic::sim

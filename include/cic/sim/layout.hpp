@@ -42,7 +42,7 @@ struct LayoutJoint {
     Vec3 anchor{};          // the module's chassis centre, world, start pose
 };
 
-struct Layout {
+struct BodyLayout {
     int body_count = 0;
     std::vector<LayoutGeom> geoms;       // chassis of module i is geoms[chassis_geom[i]]
     std::vector<int> chassis_geom;       // per module
@@ -56,7 +56,7 @@ struct Layout {
 };
 
 // Validates the robot (cic::InputError) and lays it out resting just above z = 0.
-Layout make_layout(const RobotSpec& robot);
+BodyLayout make_body_layout(const RobotSpec& robot);
 
 Vec3 axis_vector(Axis a);   // unit vector; Fixed -> invalid_argument
 

@@ -33,7 +33,7 @@ class NeuralController final : public sim::Controller {
 public:
     // Throws cic::InputError for sample_average_count < 1 (or clock inputs with
     // clock_period <= 0) and std::invalid_argument if network and layout disagree.
-    NeuralController(nn::Network network, nn::Layout layout, const nn::NeuralConfig& cfg);
+    NeuralController(nn::Network network, nn::NeuronLayout layout, const nn::NeuralConfig& cfg);
 
     // reset() throws std::invalid_argument unless joints == the network's output count.
     void reset(std::size_t joints) override;
@@ -43,11 +43,11 @@ public:
     void set_recording(bool on) { recording_ = on; }
     const ControlRecord& record() const { return record_; }
     const nn::Network& network() const { return network_; }
-    const nn::Layout& layout() const { return layout_; }
+    const nn::NeuronLayout& layout() const { return layout_; }
 
 private:
     nn::Network network_;
-    nn::Layout layout_;
+    nn::NeuronLayout layout_;
     nn::NeuralConfig cfg_;
     std::vector<double> in_, out_, sum_, command_;
     int window_ = 0;               // outputs summed since the last command update
@@ -55,7 +55,7 @@ private:
     ControlRecord record_;
 };
 
-// Genotype + robot -> ready controller: substrate_geometry, make_layout, build_network.
+// Genotype + robot -> ready controller: substrate_geometry, make_neuron_layout, build_network.
 NeuralController make_neural_controller(const sim::RobotSpec& robot, const tree::Forest& genotype,
                                         const nn::NeuralConfig& cfg);
 

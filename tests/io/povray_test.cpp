@@ -1,36 +1,22 @@
-// POV-Ray export: scene text, argument checks, determinism, and one real render.
+// POV-Ray export: scene text, argument checks, determinism.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <set>
-#include <sstream>
+#include <stdexcept>
+#include <string>
 
-#include "cic/app/preset_replay.hpp"
 #include "cic/core/error.hpp"
 #include "cic/io/povray.hpp"
+#include "support/files.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace cic;
+using cic::testing::read_text;
 
-fs::path fresh_dir(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("cic_povray_test_" + std::to_string(::getpid()) + "_" + name);
-    fs::remove_all(dir);
-    return dir;
-}
-
-std::string slurp(const fs::path& p) {
-    std::ostringstream s;
-    s << std::ifstream(p).rdbuf();
-    return s.str();
-}
+fs::path fresh_dir(const std::string& name) { return cic::testing::temp_dir("povray-" + name); }
 
 // Two bodies: a 1 m chassis on body 0, a thin panel on body 1; 1 s at 10 frames/s.
 sim::Recording two_bodies() {
@@ -59,14 +45,14 @@ TEST(Povray, WritesOneSceneAFrameAndTheSharedIncludes) {
         EXPECT_TRUE(fs::exists(dir / inc)) << inc;
     EXPECT_TRUE(fs::exists(dir / "frame_00025.pov"));
     EXPECT_FALSE(fs::exists(dir / "frame_00026.pov"));
-    const std::string first = slurp(dir / "frame_00000.pov");
+    const std::string first = read_text(dir / "frame_00000.pov");
     EXPECT_NE(first.find("#include \"camera.inc\""), std::string::npos);
     EXPECT_NE(first.find("texture { CicChassis }"), std::string::npos);
     EXPECT_NE(first.find("texture { CicPanel }"), std::string::npos);
     // ODE (1, 2, 3) is POV-Ray <1, 3, 2>: y and z swap.
     EXPECT_NE(first.find("#declare CicCentre = <1.000000, 3.000000, 2.000000>;"), std::string::npos) << first;
     EXPECT_NE(first.find("1.000000, 3.000000, 2.000000> }"), std::string::npos) << first;
-    EXPECT_NE(slurp(dir / "materials.inc").find("#declare CicChassis"), std::string::npos);
+    EXPECT_NE(read_text(dir / "materials.inc").find("#declare CicChassis"), std::string::npos);
     fs::remove_all(dir);
 }
 
@@ -75,7 +61,7 @@ TEST(Povray, SameRecordingGivesIdenticalFiles) {
     io::write_povray(two_bodies(), a, 10.0);
     io::write_povray(two_bodies(), b, 10.0);
     for (const auto& entry : fs::directory_iterator(a))
-        EXPECT_EQ(slurp(entry.path()), slurp(b / entry.path().filename())) << entry.path();
+        EXPECT_EQ(read_text(entry.path()), read_text(b / entry.path().filename())) << entry.path();
     fs::remove_all(a);
     fs::remove_all(b);
 }
@@ -101,49 +87,6 @@ TEST(Povray, RejectsBadArguments) {
         EXPECT_NE(std::string(e.what()).find("already holds POV-Ray frames"), std::string::npos) << e.what();
         EXPECT_EQ(e.file(), dir.string());
     }
-    fs::remove_all(dir);
-}
-
-bool have(const char* tool) { return std::system(("command -v " + std::string(tool) + " >/dev/null 2>&1").c_str()) == 0; }
-
-// A real R1 recording rendered by scripts/render-video.sh at 80x60: PNGs and an MP4 appear,
-// and a frame is a picture, not one flat colour.
-TEST(Povray, RenderScriptMakesFramesAndAVideo) {
-    if (!have("povray") || !have("ffmpeg")) GTEST_SKIP() << "povray or ffmpeg not installed";
-    app::PresetReplay preset;
-    preset.sim.sample_to = 0.2;
-    preset.sim.delayed_start = 0.0;
-    const app::ReplayItem item = app::replay_preset(preset, 10.0, false);
-    const fs::path dir = fresh_dir("render");
-    io::PovrayOptions options;
-    options.centre_body = item.centre_body;
-    ASSERT_EQ(io::write_povray(item.recording, dir, 10.0, options), 3);
-
-    const std::string script = std::string(CIC_SOURCE_DIR) + "/scripts/render-video.sh";
-    const std::string cmd = "'" + script + "' '" + dir.string() + "' --width 80 --height 60 --fps 10 --jobs 2 2>&1";
-    ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-    const fs::path png = dir / "frame_00000.png";
-    ASSERT_TRUE(fs::exists(png));
-    EXPECT_GT(fs::file_size(dir / "out.mp4"), 0u);
-
-    // Decode the PNG with ffmpeg into raw RGB and count its colours.
-    const std::string decode = "ffmpeg -loglevel error -i '" + png.string() + "' -f rawvideo -pix_fmt rgb24 -";
-    FILE* pipe = popen(decode.c_str(), "r");
-    ASSERT_NE(pipe, nullptr);
-    std::string pixels;
-    char buf[4096];
-    for (std::size_t got; (got = fread(buf, 1, sizeof buf, pipe)) > 0;) pixels.append(buf, got);
-    ASSERT_EQ(pclose(pipe), 0);
-    ASSERT_EQ(pixels.size(), 80u * 60u * 3u);
-    std::set<std::string> colours;
-    int orange = 0;
-    for (std::size_t i = 0; i < pixels.size(); i += 3) {
-        colours.insert(pixels.substr(i, 3));
-        const auto r = static_cast<unsigned char>(pixels[i]), b = static_cast<unsigned char>(pixels[i + 2]);
-        if (r > 80 && r > 2 * b) ++orange;
-    }
-    EXPECT_GT(colours.size(), 20u) << "a flat image";
-    EXPECT_GT(orange, 10) << "no robot (chassis) pixels";
     fs::remove_all(dir);
 }
 
