@@ -1,24 +1,16 @@
 // The gait experiment's loop: a pagmo2 optimiser tunes an open-loop gait
 // (experiments/gait/), one generation at a time, with the same run folder,
 // statistics, checkpoints, progress and stop signals as the GP experiments.
-#include <csignal>
-#include <cstdio>
-#include <fstream>
 
 #include <fmt/format.h>
 
 #include "cic/app/progress.hpp"
-#include "cic/core/parallel_for.hpp"
 #include "cic/io/gait_xml.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/stats_csv.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/experiments/gait/setup.hpp"
 #include "run_support.hpp"
-#ifdef CIC_HAVE_MPI
-#include "cic/app/mpi_pool.hpp"
-#include "cic/io/settings_io.hpp"
-#endif
 
 namespace cic::app::detail {
 namespace {
@@ -74,35 +66,10 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
     namespace fs = std::filesystem;
     using Clock = std::chrono::steady_clock;
     const io::Settings& s = prepared.settings;
-    const fs::path base_dir = s.source_file.empty() ? fs::current_path() : fs::path(s.source_file).parent_path();
-    const int workers = s.experiment.workers > 0 ? s.experiment.workers : hardware_threads();
-
-    std::ofstream log(opt.run_dir / "run.log", std::ios::app);
-    ProgressPrinter progress = ProgressPrinter::for_stderr(
-        opt.quiet ? Verbosity::Quiet : (opt.verbose ? Verbosity::Verbose : Verbosity::Normal));
-    auto say = [&](const std::string& line) {
-        log << line << '\n' << std::flush;
-        progress.message(line);
-    };
-    auto warn = [&](const std::string& line) {
-        log << line << '\n' << std::flush;
-        if (opt.quiet) std::fprintf(stderr, "cic: %s\n", line.c_str());
-        else progress.message(line);
-    };
-
+    RunConsole console(opt);
+    auto say = [&](const std::string& line) { console.say(line); };
+    const int workers = resolved_workers(s);
     const gait::Setup setup = gait::Setup::from_settings(s);
-    experiments::Context ctx{s, base_dir, opt.run_dir / "settings.xml", opt.worker_executable, workers};
-    ctx.warn = warn;
-#ifdef CIC_HAVE_MPI
-    if (const int ranks = mpi_world_size(); ranks > 1) {
-        ctx.make_runner = [text = io::write_settings(s)] { return std::make_unique<MpiPool>(text); };
-        say(fmt::format("MPI: {} ranks, evaluation on ranks 1..{} (Experiment.workers is not used)", ranks, ranks - 1));
-    }
-#endif
-    gait::Evaluator evaluator(ctx, setup);
-    long failed_before = 0;
-    const gait::BatchEvaluator batch = [&](const std::vector<std::vector<double>>& xs) { return evaluator(xs); };
-
     gait::Search search = prepared.gait_resume
         ? gait::resume_search(setup, *prepared.gait_resume, s.control.population_load_from)
         : gait::Search(setup.optimizer, setup.encoding.dimension(), setup.population, setup.sigma0, s.experiment.seed);
@@ -110,6 +77,10 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
                     "evaluations), seed {}, {} worker{}, output {}",
                     CIC_VERSION, gait::to_string(setup.optimizer), setup.encoding.dimension(), setup.population,
                     s.gait.evaluations, s.experiment.seed, workers, workers == 1 ? "" : "s", opt.run_dir.string()));
+    const experiments::Context ctx = make_context(s, opt, console);
+    gait::Evaluator evaluator(ctx, setup);
+    long failed_before = 0;
+    const gait::BatchEvaluator batch = [&](const std::vector<std::vector<double>>& xs) { return evaluator(xs); };
 
     const auto started = Clock::now();
     auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -120,17 +91,12 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
                                                  generation_seconds);
         failed_before = evaluator.failed();
         stats->write(r);
-        log << fmt::format("gen {} best {:.17g} mean {:.17g} median {:.17g} champion {:.17g} evaluations {} {:.2f}s",
-                           r.generation, r.best, r.mean, r.median, search.champion().fitness, r.evaluations,
-                           r.wall_seconds)
-            << '\n' << std::flush;
+        console.log(fmt::format("gen {} best {:.17g} mean {:.17g} median {:.17g} champion {:.17g} evaluations {} {:.2f}s",
+                                r.generation, r.best, r.mean, r.median, search.champion().fitness, r.evaluations,
+                                r.wall_seconds));
         const int interval = std::max(1, s.experiment.checkpoint_interval);
-        if ((r.generation + 1) % interval == 0 || s.gait.evaluations - search.evaluations() < setup.population) {
-            const std::string text = io::to_xml(checkpoint_of(search, s));
-            const auto checkpoint = opt.run_dir / "populations" / population_name(r.generation);
-            io::xml::write_file_atomically(checkpoint, text);
-            point_latest_at(checkpoint, opt.run_dir / "population.xml", text);
-        }
+        if ((r.generation + 1) % interval == 0 || s.gait.evaluations - search.evaluations() < setup.population)
+            write_checkpoint(opt.run_dir, r.generation, io::to_xml(checkpoint_of(search, s)));
         const long per_generation = setup.population;
         const int max_generations = static_cast<int>(s.gait.evaluations / per_generation);
         ProgressLine p;
@@ -140,7 +106,7 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
         p.best = search.champion().fitness;
         p.mean = r.mean;
         p.eta_seconds = generation_seconds * std::max(0, max_generations - (r.generation + 1));
-        progress(p);
+        console.progress(p);
     };
 
     StopSignalGuard stop_signals;
@@ -184,23 +150,13 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
         fmt::format("stopped: {} at generation {}\nbest: fitness {:.17g} ({}; robot {})\nevaluations: {}\nbest gait: {}\n",
                     reason, search.generation(), best.fitness, gait::to_string(setup.optimizer), setup.robot.name,
                     search.evaluations(), describe_gait(setup.encoding.decode(best.x)));
-    io::xml::write_file_atomically(opt.run_dir / "summary.txt", summary);
-    progress.finish();
-    log << summary << std::flush;
-    std::fputs(summary.c_str(), stdout);
-    std::fflush(stdout);
+    console.summary(summary);
     if (reason == "interrupted") {
-        const bool term = detail::stop_signal() == SIGTERM;
         // The checkpoint of the last finished generation is on disk unless the interval skipped it.
-        const std::string text = io::to_xml(checkpoint_of(search, s));
-        const auto checkpoint = opt.run_dir / "populations" / population_name(search.generation());
-        io::xml::write_file_atomically(checkpoint, text);
-        point_latest_at(checkpoint, opt.run_dir / "population.xml", text);
-        warn(std::string("interrupted by ") + (term ? "SIGTERM" : "SIGINT") + ": state saved to " +
-             (opt.run_dir / "population.xml").string() + "; resume with Control.populationXmlLoadFrom");
-        return term ? 143 : 130;
+        write_checkpoint(opt.run_dir, search.generation(), io::to_xml(checkpoint_of(search, s)));
+        return console.interrupted();
     }
-    finish_run(s, opt, say);
+    finish_run(s, opt, console);
     return 0;
 }
 

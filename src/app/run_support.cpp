@@ -3,11 +3,17 @@
 #include "run_support.hpp"
 
 #include <csignal>
+#include <cstdio>
 #include <unistd.h>
 
 #include <fmt/format.h>
 
+#ifdef CIC_HAVE_MPI
+#include "cic/app/mpi_pool.hpp"
+#include "cic/io/settings_io.hpp"
+#endif
 #include "cic/app/plot.hpp"
+#include "cic/core/parallel_for.hpp"
 #include "cic/app/replay.hpp"
 #include "cic/io/povray.hpp"
 #include "cic/io/xml.hpp"
@@ -49,6 +55,71 @@ StopSignalGuard::~StopSignalGuard() {
     std::signal(SIGTERM, previous_term_);
 }
 
+RunConsole::RunConsole(const RunOptions& opt)
+    : opt_(opt),
+      log_(opt.run_dir / "run.log", std::ios::app),
+      progress_(ProgressPrinter::for_stderr(opt.quiet ? Verbosity::Quiet
+                                                      : (opt.verbose ? Verbosity::Verbose : Verbosity::Normal))) {}
+
+void RunConsole::log(const std::string& line) { log_ << line << '\n' << std::flush; }
+
+void RunConsole::say(const std::string& line) {
+    log(line);
+    progress_.message(line);
+}
+
+void RunConsole::warn(const std::string& line) {
+    log(line);
+    if (opt_.quiet) std::fprintf(stderr, "cic: %s\n", line.c_str());
+    else progress_.message(line);
+}
+
+void RunConsole::summary(const std::string& text) {
+    io::xml::write_file_atomically(opt_.run_dir / "summary.txt", text);
+    progress_.finish();
+    log_ << text << std::flush;
+    std::fputs(text.c_str(), stdout);
+    std::fflush(stdout);
+}
+
+int RunConsole::interrupted() {
+    const bool term = stop_signal() == SIGTERM;
+    warn(std::string("interrupted by ") + (term ? "SIGTERM" : "SIGINT") + ": state saved to " +
+         (opt_.run_dir / "population.xml").string() + "; resume with Control.populationXmlLoadFrom");
+    return term ? 143 : 130;
+}
+
+int resolved_workers(const io::Settings& s) {
+    return s.experiment.workers > 0 ? s.experiment.workers : hardware_threads();
+}
+
+experiments::Context make_context(const io::Settings& s, const RunOptions& opt, RunConsole& console) {
+    namespace fs = std::filesystem;
+    const fs::path base_dir = s.source_file.empty() ? fs::current_path() : fs::path(s.source_file).parent_path();
+    const int workers = resolved_workers(s);
+    experiments::Context ctx{s, base_dir, opt.run_dir / "settings.xml", opt.worker_executable, workers};
+    ctx.warn = [&console](const std::string& line) { console.warn(line); };
+#ifdef CIC_HAVE_MPI
+    // Under mpirun with more than one rank, evaluation jobs go to ranks 1..N-1
+    // (they get the settings as text: they may not see this run folder).
+    if (const int ranks = mpi_world_size(); ranks > 1) {
+        ctx.make_runner = [text = io::write_settings(s)] { return std::make_unique<MpiPool>(text); };
+        console.say(s.experiment.type == io::ExperimentType::Symreg
+                        ? fmt::format("MPI: {} ranks; symbolic regression evaluates on rank 0 with {} thread{}, the "
+                                      "other ranks stay idle", ranks, workers, workers == 1 ? "" : "s")
+                        : fmt::format("MPI: {} ranks, evaluation on ranks 1..{} (Experiment.workers is not used)",
+                                      ranks, ranks - 1));
+    }
+#endif
+    return ctx;
+}
+
+void write_checkpoint(const std::filesystem::path& run_dir, int generation, const std::string& text) {
+    const auto checkpoint = run_dir / "populations" / population_name(generation);
+    io::xml::write_file_atomically(checkpoint, text);
+    point_latest_at(checkpoint, run_dir / "population.xml", text);
+}
+
 std::string population_name(int generation) { return fmt::format("gen-{:04d}.xml", generation); }
 
 // population.xml becomes a second name of the checkpoint just written (a hard
@@ -70,7 +141,8 @@ void point_latest_at(const std::filesystem::path& checkpoint, const std::filesys
 // What the thesis did when a run ended (Appendix B): plots (useMatlabPlot, now
 // gnuplot), POV-Ray scenes of the best (generatePovrayFiles) and showing the best
 // (isAutonomousExperiment = 0). A failure here is reported, never loses the run.
-void finish_run(const io::Settings& s, const RunOptions& opt, const std::function<void(const std::string&)>& say) {
+void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& console) {
+    auto say = [&](const std::string& line) { console.say(line); };
     // Robot experiments (HyperGP, gait) have a best gait to export and show.
     const bool hypergp = s.experiment.type != io::ExperimentType::Symreg;
     auto attempt = [&](const char* what, auto&& action) {

@@ -8,154 +8,16 @@
 #include <set>
 
 #include "cic/core/limits.hpp"
+#include "settings_rows.hpp"
 #include "settings_values.hpp"
 
 namespace cic::io {
 namespace {
 
+using namespace rows;
 using detail::format_double;
 using detail::join;
 using detail::split_items;
-
-constexpr double kHuge = std::numeric_limits<double>::max();
-
-// FIELD(gp.population_size) -> an accessor returning a reference into Settings.
-#define FIELD(member) [](Settings& s) -> decltype(auto) { return (s.member); }
-
-template <class F>
-auto& field(F ref, const Settings& s) { return ref(const_cast<Settings&>(s)); }
-
-SettingKey row(std::string section, std::string key, ValueType type, std::string doc) {
-    SettingKey k{};
-    k.section = std::move(section);
-    k.key = std::move(key);
-    k.type = type;
-    k.doc = std::move(doc);
-    return k;
-}
-
-template <class F>
-SettingKey bool_row(std::string sec, std::string key, std::string doc, F ref) {
-    auto k = row(std::move(sec), std::move(key), ValueType::Bool, std::move(doc));
-    k.get = [ref](const Settings& s) { return std::string(field(ref, s) ? "1" : "0"); };
-    k.set = [ref](Settings& s, std::string_view t) { ref(s) = detail::parse_bool(t); };
-    return k;
-}
-
-template <class F>
-SettingKey int_row(std::string sec, std::string key, long long lo, long long hi, std::string doc, F ref) {
-    auto k = row(std::move(sec), std::move(key), ValueType::Int, std::move(doc));
-    k.min = static_cast<double>(lo);
-    k.max = static_cast<double>(hi);
-    SettingKey bounds = k;
-    k.get = [ref](const Settings& s) { return std::to_string(field(ref, s)); };
-    k.set = [ref, bounds](Settings& s, std::string_view t) {
-        ref(s) = static_cast<int>(detail::parse_integer(bounds, t));
-    };
-    return k;
-}
-
-struct Bounds {
-    double min = -kHuge, max = kHuge;
-    bool min_exclusive = false, allow_inf = false;
-};
-constexpr Bounds kAnyFinite{};
-constexpr Bounds kPositive{0.0, kHuge, true, false};
-constexpr Bounds kNonNegative{0.0, kHuge, false, false};
-constexpr Bounds kUnit{0.0, 1.0, false, false};
-
-template <class F>
-SettingKey double_row(std::string sec, std::string key, Bounds b, std::string doc, F ref) {
-    auto k = row(std::move(sec), std::move(key), ValueType::Double, std::move(doc));
-    k.min = b.min;
-    k.max = b.max;
-    k.min_exclusive = b.min_exclusive;
-    k.allow_inf = b.allow_inf;
-    SettingKey bounds = k;
-    k.get = [ref](const Settings& s) { return format_double(field(ref, s)); };
-    k.set = [ref, bounds](Settings& s, std::string_view t) { ref(s) = detail::parse_number(bounds, t); };
-    return k;
-}
-
-template <class F>
-SettingKey string_row(std::string sec, std::string key, ValueType type, bool may_be_empty, std::string doc,
-                      F ref) {
-    auto k = row(std::move(sec), std::move(key), type, std::move(doc));
-    k.min_items = may_be_empty ? 0 : 1;
-    k.get = [ref](const Settings& s) { return std::string(field(ref, s)); };
-    k.set = [ref](Settings& s, std::string_view t) { ref(s) = std::string(t); };
-    return k;
-}
-
-template <class E, class F>
-SettingKey enum_row(std::string sec, std::string key, std::vector<std::pair<E, std::vector<std::string>>> choices,
-                    std::string doc, F ref) {
-    auto k = row(std::move(sec), std::move(key), ValueType::Enum, std::move(doc));
-    std::vector<E> values;
-    for (auto& [v, spellings] : choices) {
-        values.push_back(v);
-        k.choices.push_back(spellings);
-    }
-    SettingKey bounds = k;
-    k.get = [ref, values, bounds](const Settings& s) {
-        auto it = std::find(values.begin(), values.end(), field(ref, s));
-        if (it == values.end()) throw std::invalid_argument("settings: enum value without a name");
-        return bounds.choices[static_cast<std::size_t>(it - values.begin())].front();
-    };
-    k.set = [ref, values, bounds](Settings& s, std::string_view t) {
-        ref(s) = values[detail::parse_choice(bounds, t)];
-    };
-    return k;
-}
-
-template <class F>
-SettingKey double_list_row(std::string sec, std::string key, Bounds b, std::size_t min_items, std::string doc,
-                           F ref) {
-    auto k = row(std::move(sec), std::move(key), ValueType::DoubleList, std::move(doc));
-    k.min = b.min;
-    k.max = b.max;
-    k.min_exclusive = b.min_exclusive;
-    k.min_items = min_items;
-    SettingKey bounds = k;
-    k.get = [ref](const Settings& s) {
-        std::vector<std::string> items;
-        for (double v : field(ref, s)) items.push_back(format_double(v));
-        return join(items);
-    };
-    k.set = [ref, bounds](Settings& s, std::string_view t) {
-        std::vector<double> values;
-        for (auto item : split_items(t)) values.push_back(detail::parse_number(bounds, item));
-        ref(s) = std::move(values);
-    };
-    return k;
-}
-
-// The SimConfig member that f describes, found by name in s.sim.
-template <class T>
-auto sim_member(std::string_view name) {
-    return [name](Settings& s) -> T& {
-        T* found = nullptr;
-        sim::for_each_field(s.sim, [&](const sim::FieldSpec& f, auto& v) {
-            if constexpr (std::is_same_v<std::decay_t<decltype(v)>, T>)
-                if (f.name == name) found = &v;
-        });
-        return *found;
-    };
-}
-
-// A <Simulator> row with the key, doc and range of sim::for_each_field.
-template <class T>
-SettingKey sim_row(const sim::FieldSpec& f) {
-    std::string key(f.key), doc(f.doc);
-    if constexpr (std::is_same_v<T, bool>)
-        return bool_row("Simulator", key, doc, sim_member<T>(f.name));
-    else if constexpr (std::is_same_v<T, int>)
-        return int_row("Simulator", key, static_cast<long long>(f.min), static_cast<long long>(f.max), doc,
-                       sim_member<T>(f.name));
-    else
-        return double_row("Simulator", key, Bounds{f.min, f.max, f.min_exclusive, f.allow_inf}, doc,
-                          sim_member<T>(f.name));
-}
 
 std::vector<std::string> function_names() {
     std::vector<std::string> names;
@@ -298,14 +160,14 @@ SettingKey forest_map_row() {
     return k;
 }
 
-std::vector<SettingKey> build_table() {
-    using gp::BloatVariant;
-    using gp::ForestDepth;
-    using gp::InitMethod;
-    using gp::NodeSelection;
-    using gp::SelectionType;
-    std::vector<SettingKey> t;
-    // ---- Experiment (ours)
+using gp::BloatVariant;
+using gp::ForestDepth;
+using gp::InitMethod;
+using gp::NodeSelection;
+using gp::SelectionType;
+
+// Experiment (ours)
+void experiment_rows(std::vector<SettingKey>& t) {
     t.push_back(enum_row<ExperimentType>("Experiment", "type",
                                          {{ExperimentType::HyperGP, {"hypergp"}}, {ExperimentType::Symreg, {"symreg"}},
                                           {ExperimentType::Gait, {"gait"}}},
@@ -332,7 +194,10 @@ std::vector<SettingKey> build_table() {
                         "A population file after every N evaluated generations (N = 1: each one), and always after the last", FIELD(experiment.checkpoint_interval)));
     t.push_back(double_row("Experiment", "workerTimeout", kPositive,
                            "Seconds before a hung worker is replaced", FIELD(experiment.worker_timeout)));
-    // ---- GP (thesis Appendix B)
+}
+
+// GP (thesis Appendix B)
+void gp_rows(std::vector<SettingKey>& t) {
     t.push_back(double_row("GP", "defaultFitness", kAnyFinite, "Fitness of individuals before they are evaluated",
                            FIELD(gp.default_fitness)));
     t.push_back(int_row("GP", "generatedPopulationSize", 2, static_cast<long long>(limits::kMaxPopulation),
@@ -416,8 +281,11 @@ std::vector<SettingKey> build_table() {
                                       "Depth of a forest genotype for Dynamic Limits and statistics: the sum of its "
                                       "trees' depths (thesis 7.2.1, fig. 7.4b) or its deepest tree",
                                       FIELD(gp.forest_depth)));
-    // ---- Simulator: SimConfig's fields as sim::for_each_field describes them,
-    // with the robot's keys where the thesis's files have them.
+}
+
+// Simulator: SimConfig's fields as sim::for_each_field describes them, with
+// the robot's keys where the thesis's files have them.
+void simulator_rows(std::vector<SettingKey>& t) {
     const sim::SimConfig defaults{};
     sim::for_each_field(defaults, [&](const sim::FieldSpec& f, const auto& v) {
         t.push_back(sim_row<std::decay_t<decltype(v)>>(f));
@@ -431,7 +299,10 @@ std::vector<SettingKey> build_table() {
             t.push_back(bool_row("Simulator", "generatePovrayFiles",
                                  "Write POV-Ray scenes of the best individual's run", FIELD(robot.generate_povray)));
     });
-    // ---- Control
+}
+
+// Control
+void control_rows(std::vector<SettingKey>& t) {
     t.push_back(int_row("Control", "maximumIterations", 1, 10000000,
                         "Maximum number of generations, counting generation 0",
                         FIELD(control.maximum_iterations)));
@@ -444,7 +315,10 @@ std::vector<SettingKey> build_table() {
                          FIELD(control.plot)));
     t.push_back(bool_row("Control", "isAutonomousExperiment", "1 = never open the viewer; 0 = show the best at the end",
                          FIELD(control.autonomous)));
-    // ---- BloatControl
+}
+
+// BloatControl
+void bloat_rows(std::vector<SettingKey>& t) {
     t.push_back(bool_row("BloatControl", "useBloatControl", "Use Dynamic Limits bloat control (thesis 5.2)",
                          FIELD(bloat.enabled)));
     t.push_back(enum_row<BloatVariant>("BloatControl", "bloatControlVariant",
@@ -452,7 +326,10 @@ std::vector<SettingKey> build_table() {
                                         {BloatVariant::Heavy, {"1", "heavy"}},
                                         {BloatVariant::VeryHeavy, {"2", "veryHeavy"}}},
                                        "Dynamic Limits variant: 0 simple, 1 heavy, 2 very heavy", FIELD(bloat.variant)));
-    // ---- Neural
+}
+
+// Neural
+void neural_rows(std::vector<SettingKey>& t) {
     t.push_back(double_row("Neural", "synopsisThreshold", kNonNegative,
                            "Synapses with |weight| below this are left out of the substrate", FIELD(neural.threshold)));
     t.push_back(bool_row("Neural", "useMiddleLegs", "Use the 6-leg variant of the robot (0 = 4 legs)",
@@ -485,7 +362,10 @@ std::vector<SettingKey> build_table() {
                            FIELD(neural.penalty_max_frequency)));
     t.push_back(double_row("Neural", "penaltyWeight", kNonNegative, "Weight of the command-change penalty",
                            FIELD(neural.penalty_weight)));
-    // ---- SymbolicRegression
+}
+
+// SymbolicRegression
+void symreg_rows(std::vector<SettingKey>& t) {
     t.push_back(string_row("SymbolicRegression", "target", ValueType::String, false,
                            "Benchmark name (koza-1 ...) or an expression over x0, x1, ...", FIELD(symreg.target)));
     t.push_back(string_row("SymbolicRegression", "dataFile", ValueType::Path, true,
@@ -502,7 +382,10 @@ std::vector<SettingKey> build_table() {
                          FIELD(symreg.benchmark_sampling)));
     t.push_back(double_row("SymbolicRegression", "hitTolerance", kNonNegative,
                            "A point is a hit when |error| <= this", FIELD(symreg.hit_tolerance)));
-    // ---- Gait (ours: the parameter-optimised baseline)
+}
+
+// Gait (ours: the parameter-optimised baseline)
+void gait_rows(std::vector<SettingKey>& t) {
     t.push_back(enum_row<GaitOptimizer>("Gait", "optimizer",
                                         {{GaitOptimizer::Cmaes, {"cmaes"}}, {GaitOptimizer::Xnes, {"xnes"}},
                                          {GaitOptimizer::Sade, {"sade"}}},
@@ -528,6 +411,18 @@ std::vector<SettingKey> build_table() {
                            FIELD(gait.sigma0)));
     t.push_back(double_row("Gait", "frequencyMin", kPositive, "Lowest gait frequency, Hz", FIELD(gait.frequency_min)));
     t.push_back(double_row("Gait", "frequencyMax", kPositive, "Highest gait frequency, Hz", FIELD(gait.frequency_max)));
+}
+
+std::vector<SettingKey> build_table() {
+    std::vector<SettingKey> t;
+    experiment_rows(t);
+    gp_rows(t);
+    simulator_rows(t);
+    control_rows(t);
+    bloat_rows(t);
+    neural_rows(t);
+    symreg_rows(t);
+    gait_rows(t);
     return t;
 }
 
