@@ -7,19 +7,21 @@
 #   sweep overhead per run and --jobs 2 x 1 worker vs --jobs 1 x 2 workers;
 #   per-evaluation breakdown (substrate build, network steps, physics);
 #   with --deap N: DEAP vs cic on DEAP's symbreg example over N seeds (default off);
-#   with --r1: the default R1 run (50 x 50, seed 1, 2 workers): wall time and best fitness.
+#   with --r1: the default R1 run (50 x 50, seed 1, 2 workers): wall time and best fitness;
+#   with --tricks: whether the GP loop's speed tricks pay (scripts/bench-gp-tricks.sh).
 # Builds the benchmark programs into build/ first (Release).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # shellcheck source=scripts/setup.sh
 source "$ROOT/scripts/setup.sh"
-deap=0 r1=0 min_time=0.5
+deap=0 r1=0 tricks=0 min_time=0.5
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) min_time=0.1; shift ;;
     --deap) deap="$2"; shift 2 ;;
     --r1) r1=1; shift ;;
-    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
+    --tricks) tricks=1; shift ;;
+    -h|--help) sed -n '2,11p' "$0"; exit 0 ;;
     *) echo "bench.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -79,4 +81,8 @@ print(f"  wall time: {float(sys.argv[3]) - float(sys.argv[2]):.1f} s for {len(ro
 print(f"  best fitness: generation 0 (random genotypes) {float(rows[0]['best']):.3f}, final {float(rows[-1]['best']):.3f}")
 PY
   echo "  run folder: $run"
+fi
+if [ "$tricks" = 1 ]; then
+  echo
+  bash "$ROOT/scripts/bench-gp-tricks.sh"
 fi
