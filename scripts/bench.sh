@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/bench.sh [--quick] [--deap N] [--r1]
+# scripts/bench.sh [--quick] [--deap N] [--r1] [--tricks]
 # Prints every speed figure the issues ask for, each measured within one run of this
 # script (the machine is shared: compare ratios, not absolute numbers, across days):
 #   GP node evaluations per second (Operon's protocol), 1 and 2 threads;
