@@ -1,6 +1,6 @@
 #pragma once
 // Individual and Population (thesis 6.3.1-6.3.2): plain data that the
-// population modifiers read and change.
+// stages of the evolution loop (evolution.hpp) read and change.
 #include <cstdint>
 #include <memory>
 #include <optional>
