@@ -12,44 +12,19 @@
 
 #include "cic/gp/evolution.hpp"
 #include "cic/tree/eval.hpp"
+#include "support/gp_fixtures.hpp"
 
 namespace cic::gp {
 namespace {
 
-// A pure fitness: -sum |f(x) - (x^2 + x)| on 11 points.
-class QuadraticEvaluator final : public Evaluator {
-public:
-    void evaluate(std::span<const IndividualPtr> todo) override {
-        for (const auto& ind : todo) {
-            double err = 0;
-            for (int i = 0; i <= 10; ++i) {
-                const double xs[1] = {-1.0 + 0.2 * i};
-                err += std::abs(tree::evaluate_point(ind->genotype[0], xs) - (xs[0] * xs[0] + xs[0]));
-            }
-            ind->fitness = std::isfinite(err) ? -err : -1e30;
-            ind->evaluated = true;
-            ++calls;
-        }
-    }
-    long calls = 0;
-};
+using cic::testing::QuadraticEvaluator;
+using cic::testing::small_gp_config;
 
 // Forgets to evaluate: the loop must notice.
 class LazyEvaluator final : public Evaluator {
 public:
     void evaluate(std::span<const IndividualPtr>) override {}
 };
-
-GpConfig small_config() {
-    GpConfig c;
-    c.population_size = 30;
-    c.expected_tree_size = 8;
-    c.min_init_depth = 1;
-    c.max_init_depth = 4;
-    c.primitives = {{tree::Op::Add, tree::Op::Sub, tree::Op::Mul}, {}, 1, {1.0}};
-    c.tournament_size = 3;
-    return c;
-}
 
 EvolutionState state(std::uint64_t seed) {
     EvolutionState st;
@@ -106,7 +81,7 @@ std::vector<std::string> texts(const Population& pop) {
 // ------------------------------------------------------------------ Initialise
 
 TEST(Initialise, UniqueGenotypesFromThePrimitiveSetWithinTheDepth) {
-    GpConfig c = small_config();
+    GpConfig c = small_gp_config();
     c.trees_per_genotype = 2;
     c.primitives.ephemeral = true;
     const tree::PrimitiveSet ps(c.primitives);
@@ -155,7 +130,7 @@ Bred breed_once(const GpConfig& c, std::uint64_t seed) {
 }
 
 TEST(Breed, ChildrenFillThePopulationFromTheSetWithKnownParents) {
-    const GpConfig c = small_config();
+    const GpConfig c = small_gp_config();
     const tree::PrimitiveSet ps(c.primitives);
     const Bred b = breed_once(c, 3);
     ASSERT_EQ(b.children.size(), b.parents.size());
@@ -176,7 +151,7 @@ TEST(Breed, ChildrenFillThePopulationFromTheSetWithKnownParents) {
 }
 
 TEST(Breed, ReproductionCopiesAParentWithItsFitness) {
-    GpConfig c = small_config();
+    GpConfig c = small_gp_config();
     c.crossover_rate = 0;
     c.mutation_rate = 0;
     c.prevent_duplicates = false;
@@ -193,7 +168,7 @@ TEST(Breed, ReproductionCopiesAParentWithItsFitness) {
 }
 
 TEST(Breed, ElitesSurviveUnchanged) {
-    GpConfig c = small_config();
+    GpConfig c = small_gp_config();
     c.elitism = 3;
     const Bred b = breed_once(c, 9);
     std::vector<const Individual*> ranked;
@@ -203,7 +178,7 @@ TEST(Breed, ElitesSurviveUnchanged) {
 }
 
 TEST(Breed, MutationOnlyChildrenStayInTheSet) {
-    GpConfig c = small_config();
+    GpConfig c = small_gp_config();
     c.crossover_rate = 0;
     c.mutation_rate = 1;
     c.primitives.ephemeral = true;
@@ -220,9 +195,9 @@ TEST(Breed, MutationOnlyChildrenStayInTheSet) {
 // Parents: ids 1..3 with depths 4, 2, 3; the best (id 1, fitness 5) is 4 deep.
 // The breeder is run on them once so that BloatControl can look them up.
 struct BloatBench {
-    GpConfig gp = small_config();
+    GpConfig gp = small_gp_config();
     BloatConfig bloat;
-    tree::PrimitiveSet ps{small_config().primitives};
+    tree::PrimitiveSet ps{small_gp_config().primitives};
     Population parents;
     EvolutionState st = state(1);
 
@@ -328,7 +303,7 @@ EvolutionResult run(const GpConfig& c, int generations, std::uint64_t seed, std:
 }
 
 TEST(Evolve, BadArgumentsThrow) {
-    const GpConfig c = small_config();
+    const GpConfig c = small_gp_config();
     const tree::PrimitiveSet ps(c.primitives);
     QuadraticEvaluator eval;
     EXPECT_THROW(evolve(c, BloatConfig{}, StopConditions{0, 1e9}, ps, eval, state(1), std::nullopt, {}),
@@ -340,11 +315,11 @@ TEST(Evolve, BadArgumentsThrow) {
 
 TEST(Evolve, SameSeedSameRunAndOneRecordPerGeneration) {
     std::vector<GenerationRecord> records;
-    const auto a = run(small_config(), 6, 21, &records);
-    const auto b = run(small_config(), 6, 21);
+    const auto a = run(small_gp_config(), 6, 21, &records);
+    const auto b = run(small_gp_config(), 6, 21);
     EXPECT_EQ(texts(a.population), texts(b.population));
     EXPECT_EQ(a.state.rng.state(), b.state.rng.state());
-    EXPECT_NE(texts(a.population), texts(run(small_config(), 6, 22).population));
+    EXPECT_NE(texts(a.population), texts(run(small_gp_config(), 6, 22).population));
     ASSERT_EQ(records.size(), 6u);
     for (int g = 0; g < 6; ++g) EXPECT_EQ(records[g].generation, g);
     EXPECT_EQ(a.reason, StopReason::MaximumIterations);
@@ -352,7 +327,7 @@ TEST(Evolve, SameSeedSameRunAndOneRecordPerGeneration) {
 }
 
 TEST(Evolve, ContinuingFromAGenerationGivesTheSameRun) {
-    const GpConfig c = small_config();
+    const GpConfig c = small_gp_config();
     const auto whole = run(c, 7, 4);
     const auto half = run(c, 3, 4);
     // A deep copy, as a population file would give.
@@ -369,11 +344,11 @@ TEST(Evolve, ContinuingFromAGenerationGivesTheSameRun) {
 }
 
 TEST(Evolve, StopsAtTheMinimumFitnessOrWhenAsked) {
-    const auto reached = run(small_config(), 50, 8, nullptr, nullptr, -1e9);
+    const auto reached = run(small_gp_config(), 50, 8, nullptr, nullptr, -1e9);
     EXPECT_EQ(reached.reason, StopReason::MinimumFitness);
     EXPECT_EQ(reached.population.generation, 0);
     const std::atomic<bool> stop{true};
-    const auto asked = run(small_config(), 50, 8, nullptr, &stop);
+    const auto asked = run(small_gp_config(), 50, 8, nullptr, &stop);
     EXPECT_EQ(asked.reason, StopReason::Interrupted);
     EXPECT_EQ(asked.population.generation, 0);
 }

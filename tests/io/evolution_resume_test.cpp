@@ -7,40 +7,13 @@
 #include "cic/gp/evolution.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/tree/eval.hpp"
+#include "support/gp_fixtures.hpp"
 
 namespace cic::gp {
 namespace {
 
-// A pure fitness: -sum |f(x) - (x^2 + x)| on 11 points. Counts its calls.
-class QuadraticEvaluator final : public Evaluator {
-public:
-    void evaluate(std::span<const IndividualPtr> todo) override {
-        for (const auto& ind : todo) {
-            double err = 0;
-            for (int i = 0; i <= 10; ++i) {
-                const double x = -1.0 + 0.2 * i;
-                const double xs[1] = {x};
-                const double y = tree::evaluate_point(ind->genotype[0], xs);
-                err += std::abs(y - (x * x + x));
-            }
-            ind->fitness = std::isfinite(err) ? -err : -1e30;
-            ind->evaluated = true;
-            ++calls;
-        }
-    }
-    long calls = 0;
-};
-
-GpConfig small_config() {
-    GpConfig c;
-    c.population_size = 30;
-    c.expected_tree_size = 8;
-    c.min_init_depth = 1;
-    c.max_init_depth = 4;
-    c.primitives = {{tree::Op::Add, tree::Op::Sub, tree::Op::Mul}, {}, 1, {1.0}};
-    c.tournament_size = 3;
-    return c;
-}
+using cic::testing::QuadraticEvaluator;
+using cic::testing::small_gp_config;
 
 struct Run {
     EvolutionResult result;
@@ -82,7 +55,7 @@ Run run(const GpConfig& c, const BloatConfig& b, int generations, std::uint64_t 
 }
 
 TEST(Evolution, SameSeedGivesIdenticalPopulations) {
-    const auto c = small_config();
+    const auto c = small_gp_config();
     const auto a = run(c, {}, 6, 42);
     const auto b = run(c, {}, 6, 42);
     ASSERT_EQ(a.checkpoints.size(), 6u);
@@ -93,7 +66,7 @@ TEST(Evolution, SameSeedGivesIdenticalPopulations) {
 
 TEST(Evolution, ResumeFromACheckpointIsExact) {
     for (auto variant : {BloatVariant::Simple, BloatVariant::Heavy, BloatVariant::VeryHeavy}) {
-        const auto c = small_config();
+        const auto c = small_gp_config();
         const BloatConfig b{true, variant};
         const auto full = run(c, b, 8, 7);
         const auto part = run(c, b, 3, 7);
@@ -107,14 +80,14 @@ TEST(Evolution, ResumeFromACheckpointIsExact) {
 }
 
 TEST(Evolution, ElitismKeepsTheBest) {
-    auto c = small_config();
+    auto c = small_gp_config();
     c.elitism = 1;
     const auto r = run(c, {}, 10, 5);
     for (std::size_t i = 1; i < r.records.size(); ++i) EXPECT_GE(r.records[i].best, r.records[i - 1].best);
 }
 
 TEST(Evolution, StopsAtMinimumFitness) {
-    const auto c = small_config();
+    const auto c = small_gp_config();
     tree::PrimitiveSet ps(c.primitives);
     QuadraticEvaluator eval;
     EvolutionState st;
@@ -125,7 +98,7 @@ TEST(Evolution, StopsAtMinimumFitness) {
 }
 
 TEST(Evolution, InterruptStopsAtAGenerationBoundary) {
-    const auto c = small_config();
+    const auto c = small_gp_config();
     tree::PrimitiveSet ps(c.primitives);
     QuadraticEvaluator eval;
     std::atomic<bool> stop{false};
@@ -150,7 +123,7 @@ TEST(Evolution, InterruptStopsAtAGenerationBoundary) {
 }
 
 TEST(Evolution, PreventDuplicatesKeepsGenotypesUnique) {
-    auto c = small_config();
+    auto c = small_gp_config();
     c.prevent_duplicates = true;
     const auto r = run(c, {}, 5, 11);
     std::set<std::uint64_t> hashes;
@@ -159,7 +132,7 @@ TEST(Evolution, PreventDuplicatesKeepsGenotypesUnique) {
 }
 
 TEST(Evolution, BadStopConditionThrows) {
-    const auto c = small_config();
+    const auto c = small_gp_config();
     tree::PrimitiveSet ps(c.primitives);
     QuadraticEvaluator eval;
     const EvolutionState st;
