@@ -15,6 +15,7 @@
 #include "cic/viz/palette.hpp"
 #include "cic/viz/viewer.hpp"
 #include "support/child_env.hpp"
+#include "support/run_helpers.hpp"
 
 namespace {
 
@@ -95,6 +96,32 @@ TEST(Screenshot, RejectsBadArguments) {
     entry.centre_body = 3;
     EXPECT_THROW(viz::Viewer({entry}), std::invalid_argument);
     EXPECT_THROW(viz::Viewer({}), std::invalid_argument);
+}
+
+// scripts/screenshot-strip.sh on a real (tiny) run: one PNG, the frames side by side.
+TEST(Screenshot, StripScriptTilesFramesOfARunsBest) {
+    if (std::system("command -v ffmpeg >/dev/null 2>&1") != 0) GTEST_SKIP() << "ffmpeg not installed";
+    if (!std::getenv("DISPLAY") && std::system("command -v xvfb-run >/dev/null 2>&1") != 0)
+        GTEST_SKIP() << "no DISPLAY and no xvfb-run";
+    const fs::path dir = cic::testing::temp_dir("strip");
+    const auto run = cic::testing::run_settings(dir, "tiny", cic::testing::tiny_hypergp_settings(1, 1));
+    ASSERT_EQ(run.rc, 0) << run.log;
+    const fs::path png = dir / "strip.png";
+    const std::string cmd = cic::testing::without_leak_check() + "CIC='" + cic::testing::cic_binary() + "' '" +
+                            std::string(CIC_SOURCE_DIR) + "/scripts/screenshot-strip.sh' '" + run.run.string() +
+                            "' '" + png.string() + "' --at '0.5 1 2' --width 160 --height 120 > '" +
+                            (dir / "strip.log").string() + "' 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << cic::testing::read_text(dir / "strip.log");
+    const osg::ref_ptr<osg::Image> image = osgDB::readImageFile(png.string());
+    ASSERT_TRUE(image.valid());
+    EXPECT_EQ(image->s(), 3 * 160);
+    EXPECT_EQ(image->t(), 120);
+    // A missing run is refused with exit 2 before anything is written.
+    const std::string bad = "'" + std::string(CIC_SOURCE_DIR) + "/scripts/screenshot-strip.sh' '" +
+                            (dir / "nothing").string() + "' '" + (dir / "x.png").string() + "' 2>/dev/null";
+    EXPECT_EQ(WEXITSTATUS(std::system(bad.c_str())), 2);
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+    fs::remove_all(dir);
 }
 
 } // namespace
