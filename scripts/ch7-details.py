@@ -72,3 +72,26 @@ if (R / "legs" / "index.csv").exists():
                         for s in range(1, 11)] for m in (0, 1)}
             p, a = test(best[1], best[0])
             print(f"| R{robot} | {gen} | {st.median(best[1]):.2f} | {st.median(best[0]):.2f} | {p:.3g} | {a:.2f} |")
+
+if (R / "sample-step" / "index.csv").exists():
+    # What a run-wide cache of evaluated genotypes could save (evaluations are
+    # deterministic, so it would change no result). Upper bound: children that
+    # bloat control rejected were evaluated but are in no population file, so
+    # the distinct genotypes evaluated can be more than those counted here.
+    import re
+    print("\n## Repeated genotypes within a run (sample-step study)\n")
+    print("| config | runs | evaluations (mean) | distinct genotypes in the populations (mean) | repeats, at most |")
+    print("|---|---|---|---|---|")
+    by = {}
+    for r in done("sample-step"):
+        run = R / "sample-step" / r["run_dir"]
+        seen = set()
+        for f in sorted((run / "populations").glob("gen-*.xml")):
+            seen.update(re.findall(r'hash="([0-9a-f]+)"', f.read_text()))
+        by.setdefault(r["config"], []).append((int(stats(run)[-1]["evaluations"]), len(seen)))
+    total_e = total_d = 0
+    for c, v in sorted(by.items()):
+        e = sum(x for x, _ in v); d = sum(y for _, y in v)
+        total_e += e; total_d += d
+        print(f"| {c} | {len(v)} | {e / len(v):.0f} | {d / len(v):.0f} | {100 * (1 - d / e):.0f} % |")
+    print(f"| all | {sum(len(v) for v in by.values())} | | | {100 * (1 - total_d / total_e):.0f} % |")
