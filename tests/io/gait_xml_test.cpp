@@ -1,0 +1,82 @@
+// Gait checkpoints: exact round trip, refusal of broken files, compatibility.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "cic/core/error.hpp"
+#include "cic/io/gait_xml.hpp"
+#include "support/files.hpp"
+
+namespace cic::io {
+namespace {
+
+GaitFile sample() {
+    GaitFile g;
+    g.settings_digest = "0123abcd";
+    g.optimizer = "cmaes";
+    g.seed = 18446744073709551615ULL;   // the largest seed survives
+    g.generation = 3;
+    g.evaluations = 40;
+    g.dimension = 3;
+    g.population = {{{0.1, 1.0 / 3.0, 0.9999999999999999}, -0.5}, {{0.0, 1.0, 0.5}, 2.25}};
+    g.champion = {{0.0, 1.0, 0.5}, 2.25};
+    for (int i = 0; i < 40; ++i) g.history.push_back(std::sin(i) / 7.0);
+    return g;
+}
+
+std::string error_of(const std::string& text) {
+    try {
+        parse_gait(text, "g.xml");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST(GaitXml, RoundTripsExactly) {
+    const GaitFile g = sample();
+    const std::string text = to_xml(g);
+    const GaitFile back = parse_gait(text, "g.xml");
+    EXPECT_EQ(to_xml(back), text);
+    EXPECT_EQ(back.seed, g.seed);
+    EXPECT_EQ(back.population[0].x[1], 1.0 / 3.0);   // bit for bit
+    EXPECT_EQ(back.history, g.history);
+    EXPECT_EQ(back.champion.fitness, 2.25);
+}
+
+TEST(GaitXml, SavedFileIsRecognisedAndLoads) {
+    const auto dir = cic::testing::temp_dir("gait-xml");
+    cic::testing::write_text(dir / "population.xml", to_xml(sample()));
+    EXPECT_TRUE(is_gait_file(dir / "population.xml"));
+    EXPECT_EQ(load_gait(dir / "population.xml").generation, 3);
+    cic::testing::write_text(dir / "other.xml", "<population format=\"cic-population\"/>");
+    EXPECT_FALSE(is_gait_file(dir / "other.xml"));
+    std::filesystem::remove_all(dir);
+}
+
+TEST(GaitXml, BrokenFilesAreRefusedWithTheirLine) {
+    const std::string text = to_xml(sample());
+    EXPECT_NE(error_of(text.substr(0, text.size() / 2)), "(no error)");
+    std::string bad = text;
+    bad.replace(bad.find("0.5"), 3, "0.5x");
+    EXPECT_NE(error_of(bad).find("g.xml:"), std::string::npos) << error_of(bad);
+    EXPECT_NE(error_of(bad).find("is not a valid number"), std::string::npos) << error_of(bad);
+    bad = text;
+    bad.replace(bad.find(" 0.5"), 4, "");   // a point with one parameter too few
+    EXPECT_NE(error_of(bad).find("parameters"), std::string::npos) << error_of(bad);
+}
+
+TEST(GaitXml, ACheckpointOfOtherSettingsIsRefused) {
+    Settings s;
+    s.experiment.type = ExperimentType::Gait;
+    EXPECT_NO_THROW(check_compatible(sample(), s, 3, "g.xml"));
+    EXPECT_THROW(check_compatible(sample(), s, 5, "g.xml"), InputError);       // another robot
+    s.gait.optimizer = GaitOptimizer::Sade;
+    EXPECT_THROW(check_compatible(sample(), s, 3, "g.xml"), InputError);       // another optimiser
+    s.experiment.type = ExperimentType::HyperGP;
+    EXPECT_THROW(check_compatible(sample(), s, 3, "g.xml"), InputError);
+}
+
+} // namespace
+} // namespace cic::io
