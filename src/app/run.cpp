@@ -176,6 +176,7 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
     const auto result = gp::evolve(s.gp, s.bloat, {s.control.maximum_iterations, s.control.minimum_fitness}, ps,
                                    experiment->evaluator(), start.state, std::move(start.population),
                                    observer.hooks());
+    if (const std::string note = experiment->session_note(); !note.empty()) console.log(note);
     console.summary(summary_of(result, *experiment, s));
     if (result.reason == gp::StopReason::Interrupted) return console.interrupted();
     finish_run(s, opt, console);

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstdio>
+#include <map>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -34,6 +37,40 @@ TEST(HypergpRun, TinyRunWritesPopulationStatsAndCheckpoints) {
     const auto pop = io::load_population(r.run / "population.xml");
     EXPECT_EQ(pop.population.size(), 6u);
     EXPECT_EQ(pop.population.generation, 2);
+    fs::remove_all(dir);
+}
+
+// A genotype met again reuses its result: with tiny trees and no duplicate
+// prevention many repeat, run.log counts them, and every repeated genotype in
+// the population has the fitness bits of its first evaluation.
+TEST(HypergpRun, RepeatedGenotypesReuseTheirResult) {
+    const auto dir = temp_dir("hgp-reuse");
+    std::string text = tiny_hypergp_settings(8, 2);
+    text.replace(text.find("<elitism>1</elitism>"), 0,
+                 "<preventDuplicates>0</preventDuplicates><maximumGeneratedTreeDepth>1</maximumGeneratedTreeDepth>"
+                 "<minimumGeneratedTreeDepth>1</minimumGeneratedTreeDepth><maximumMutationDepth>1</maximumMutationDepth>"
+                 "<crossoverRate>0.2</crossoverRate><mutationRate>0.8</mutationRate>");
+    text.erase(text.find("<maximumGeneratedTreeDepth>4</maximumGeneratedTreeDepth>"),
+               std::string("<maximumGeneratedTreeDepth>4</maximumGeneratedTreeDepth>").size());
+    const auto r = run_settings(dir, "a", text);
+    ASSERT_EQ(r.rc, 0) << r.log;
+    const std::string log = read_text(r.run / "run.log");
+    const auto at = log.find("evaluations this session: ");
+    ASSERT_NE(at, std::string::npos) << log;
+    long simulated = 0, reused = 0;
+    ASSERT_EQ(std::sscanf(log.c_str() + at, "evaluations this session: %ld simulated, %ld reused", &simulated, &reused), 2);
+    EXPECT_GT(reused, 0) << log.substr(at);
+    const auto pop = io::load_population(r.run / "population.xml");
+    EXPECT_EQ(simulated + reused, pop.state.evaluations);
+    std::map<std::string, double> fitness_of;
+    for (const auto& ind : pop.population) {
+        std::string key;
+        for (const auto& t : ind->genotype) key += t.to_string() + "|";
+        const auto [it, fresh] = fitness_of.emplace(key, ind->fitness);
+        if (!fresh) {
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(it->second), std::bit_cast<std::uint64_t>(ind->fitness)) << key;
+        }
+    }
     fs::remove_all(dir);
 }
 

@@ -35,6 +35,9 @@ public:
     virtual std::string describe(const gp::Individual& ind) const = 0;
     // Whether the best individual solved the task (symreg: every point a hit).
     virtual bool success(const gp::Individual&) const { return false; }
+    // A line for run.log at the end of the session (e.g. how many evaluations
+    // reused an earlier result); empty = nothing to say.
+    virtual std::string session_note() const { return {}; }
 };
 
 std::unique_ptr<Experiment> make_experiment(const Context& ctx);
