@@ -96,3 +96,24 @@ if (R / "sample-step" / "index.csv").exists():
         total_e += e; total_d += d
         print(f"| {c} | {len(v)} | {e / len(v):.0f} | {d / len(v):.0f} | {100 * (1 - d / e):.0f} % |")
     print(f"| all | {sum(len(v) for v in by.values())} | | | {100 * (1 - total_d / total_e):.0f} % |")
+
+# Compute: every finished run once (studies share runs through the store), by
+# the wall time its own stats.csv records (with --jobs 2 two run at a time).
+print("\n## Compute\n")
+print("| study | runs | distinct runs not counted above | run time, sum (h) |")
+print("|---|---|---|---|")
+counted, total = set(), 0.0
+for study in ("topology", "forest", "legs", "sample-step", "averaging", "integrating", "penalty", "clock", "long-runs"):
+    if not (R / study / "index.csv").exists():
+        continue
+    rows, new, hours = done(study), 0, 0.0
+    for r in rows:
+        run = (R / study / r["run_dir"]).resolve()
+        if run in counted:
+            continue
+        counted.add(run)
+        new += 1
+        hours += float(stats(run)[-1]["wall_seconds"]) / 3600
+    total += hours
+    print(f"| {study} | {len(rows)} | {new} | {hours:.2f} |")
+print(f"| all | | {len(counted)} | {total:.2f} (about {total / 2:.1f} h of wall time at --jobs 2) |")
