@@ -12,7 +12,8 @@ if(NOT patches)
   message(FATAL_ERROR "no patches in benchmarks/variants/")
 endif()
 foreach(p IN LISTS patches)
-  execute_process(COMMAND ${GIT} -C "${SOURCE_DIR}" apply --check "${p}"
+  # safe.directory: CI may check out as another user than the one running the tests.
+  execute_process(COMMAND ${GIT} -c safe.directory=* -C "${SOURCE_DIR}" apply --check "${p}"
                   RESULT_VARIABLE rc ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "${p} no longer applies to the sources:\n${err}")
