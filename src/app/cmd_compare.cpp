@@ -24,7 +24,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::array<std::string_view, 4> kMetrics = {"final_best", "generations", "evaluations", "wall_seconds"};
+constexpr std::array<std::string_view, 5> kMetrics = {"final_best", "best_ever", "generations", "evaluations",
+                                                      "wall_seconds"};
 
 struct CompareOptions {
     std::string study;
@@ -61,6 +62,7 @@ struct PairResult {
 
 std::optional<double> metric_of(const StudyRun& run, const std::string& metric) {
     if (metric == "final_best") return run.final_best;
+    if (metric == "best_ever") return run.best_ever;
     if (metric == "generations") return run.generations;
     if (metric == "evaluations") return run.evaluations;
     return run.wall_seconds;
@@ -373,7 +375,8 @@ void add_compare_command(CLI::App& app, CommandContext& ctx) {
         cmd->add_option("--threshold", opts->threshold,
                         "report the generation and evaluations at which each run's best first reached X (best >= X)");
     cmd->add_option("--metric", opts->metric,
-                    "index.csv column to summarise and test: final_best, generations, evaluations, wall_seconds")
+                    "index.csv column to summarise and test: final_best, best_ever (the best of every generation; the "
+                    "fair measure when the last generation can lose the best), generations, evaluations, wall_seconds")
         ->capture_default_str();
     cmd->add_option("--out", opts->out, "also write PREFIX.md, PREFIX-configs.csv and PREFIX-pairs.csv");
     cmd->add_option("--alpha", opts->alpha, "significance level for the Holm-adjusted p-values")

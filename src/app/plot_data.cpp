@@ -195,10 +195,15 @@ StudyIndex read_study_index(const std::filesystem::path& study) {
                       c_status = column("status"), c_best = column("final_best"),
                       c_generations = column("generations"), c_evaluations = column("evaluations"),
                       c_wall = column("wall_seconds");
+    // best_ever came later: an older index has no such column.
+    constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
+    const auto best_ever_it = std::find(header.begin(), header.end(), "best_ever");
+    const std::size_t c_best_ever =
+        best_ever_it == header.end() ? kAbsent : static_cast<std::size_t>(best_ever_it - header.begin());
     if (c_seed < c_config) throw InputError("header has 'seed' before 'config'", file, 1);
     // The varied keys: the other columns between config and seed.
-    const std::array<std::size_t, 8> known = {c_run, c_config, c_seed, c_status,
-                                              c_best, c_generations, c_evaluations, c_wall};
+    const std::array<std::size_t, 9> known = {c_run, c_config, c_seed, c_status, c_best,
+                                              c_generations, c_evaluations, c_wall, c_best_ever};
     std::vector<std::size_t> varied;
     for (std::size_t c = c_config + 1; c < c_seed; ++c) {
         if (std::find(known.begin(), known.end(), c) != known.end()) continue;
@@ -242,6 +247,7 @@ StudyIndex read_study_index(const std::filesystem::path& study) {
         run.generations = number(c_generations);
         run.evaluations = number(c_evaluations);
         run.wall_seconds = number(c_wall);
+        if (c_best_ever != kAbsent) run.best_ever = number(c_best_ever);
         index.runs.push_back(std::move(run));
     }
     return index;

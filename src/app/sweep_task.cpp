@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -61,8 +62,8 @@ std::vector<std::string> split(const std::string& line) {
     return out;
 }
 
-// Generations, last best, evaluations and wall time (summed over sessions: the
-// column restarts from 0 when a run is resumed) from a run's stats.csv.
+// Generations, last best, best ever, evaluations and wall time (summed over
+// sessions: the column restarts from 0 when a run is resumed) from a run's stats.csv.
 void read_progress(const fs::path& stats, TaskState& st) {
     std::ifstream in(stats);
     std::string line;
@@ -74,13 +75,18 @@ void read_progress(const fs::path& stats, TaskState& st) {
         return -1L;
     };
     const long best = column("best"), evals = column("evaluations"), wall = column("wall_seconds");
-    double session = 0;
+    double session = 0, best_ever = -std::numeric_limits<double>::infinity();
     while (std::getline(in, line)) {
         const auto cells = split(line);
         if (best < 0 || evals < 0 || wall < 0 || static_cast<long>(cells.size()) <= std::max({best, evals, wall}))
             continue;
         ++st.generations;
         st.final_best = cells[static_cast<std::size_t>(best)];
+        // Kept as written (17 digits), so the index holds the exact value.
+        if (const double b = std::atof(st.final_best.c_str()); b > best_ever) {
+            best_ever = b;
+            st.best_ever = st.final_best;
+        }
         st.evaluations = std::atol(cells[static_cast<std::size_t>(evals)].c_str());
         const double w = std::atof(cells[static_cast<std::size_t>(wall)].c_str());
         if (w < session) st.wall_seconds += session;   // a new session began
@@ -137,14 +143,15 @@ void write_index(const SweepPlan& plan) {
     const FileLock lock(plan.study / ".index.lock", true);
     std::string text = "run_dir,config";
     for (const auto& k : plan.varied_keys) text += "," + csv_cell(k);
-    text += ",seed,status,final_best,generations,evaluations,wall_seconds\n";
+    // best_ever last: it came after the others, and readers find columns by name.
+    text += ",seed,status,final_best,generations,evaluations,wall_seconds,best_ever\n";
     for (const SweepTask& t : plan.tasks()) {
         const TaskState st = task_state(plan, t);
         const SweepConfig& cfg = plan.configs[t.config];
         text += csv_cell(t.run_dir.string()) + "," + csv_cell(cfg.name);
         for (const auto& [key, value] : cfg.varied) text += "," + csv_cell(value);
-        text += fmt::format(",{},{},{},{},{},{:.3f}\n", t.seed, to_string(st.status), st.final_best, st.generations,
-                            st.evaluations, st.wall_seconds);
+        text += fmt::format(",{},{},{},{},{},{:.3f},{}\n", t.seed, to_string(st.status), st.final_best, st.generations,
+                            st.evaluations, st.wall_seconds, st.best_ever);
     }
     io::xml::write_file_atomically(plan.study / "index.csv", text);
 }

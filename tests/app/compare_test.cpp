@@ -371,4 +371,32 @@ TEST(ComparePlotStudy, ThroughTheCommandLine) {
     EXPECT_NE(r.err.find((study / "index.csv").string() + ":2:"), std::string::npos) << r.err;
 }
 
+// best_ever (the best of any generation) is read when the index has it, and
+// can be the metric; an index written before the column existed still reads.
+TEST(CompareStudy, BestEverIsAMetricWhenTheIndexHasIt) {
+    const fs::path study = make_study("best-ever");
+    const StudyIndex old = read_study_index(study);
+    EXPECT_FALSE(old.runs[0].best_ever.has_value());
+    // Rewrite the index with the column: tour5's runs lost their best at the end.
+    std::string index = kIndexHeader.substr(0, kIndexHeader.size() - 1) + ",best_ever\n";
+    for (const auto& r : fake_runs()) {
+        const std::string run_dir = fmt::format("runs/{}/s{}", r.config, r.seed);
+        const double last = r.config == "tour5" ? 0.1 : r.bests.back();
+        index += fmt::format("{},{},{},\"add,mul\",{},{},{},{},{},{},{}\n", run_dir, r.config, r.tournament, r.seed,
+                             r.status, last, r.bests.size(), 10 * r.bests.size(),
+                             12.5 * static_cast<double>(r.bests.size()),
+                             *std::max_element(r.bests.begin(), r.bests.end()));
+    }
+    write_text(study / "index.csv", index);
+    const StudyIndex with = read_study_index(study);
+    ASSERT_TRUE(with.runs[5].best_ever.has_value());
+    EXPECT_DOUBLE_EQ(*with.runs[5].best_ever, 0.61);
+    EXPECT_DOUBLE_EQ(*with.runs[5].final_best, 0.1);
+    EXPECT_TRUE(with.varied_keys == old.varied_keys);
+    const Result r = cic("compare '" + study.string() + "' --metric best_ever");
+    ASSERT_EQ(r.rc, 0) << r.err;
+    EXPECT_NE(r.out.find("Metric: `best_ever`"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("| 5 | 0.672 ± "), std::string::npos) << r.out;   // tour5: the mean of 0.61 .. 0.72
+}
+
 } // namespace

@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cic/app/plot.hpp"
 #include "cic/app/sweep.hpp"
 #include "cic/io/xml.hpp"
 #include "support/run_helpers.hpp"
@@ -102,10 +103,22 @@ TEST(Sweep, RunsEveryTaskInItsFolderAndMatchesAPlainRun) {
     ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "log"), 0) << read_text(dir / "log");
     const std::string index = read_text(dir / "study" / "index.csv");
     EXPECT_EQ(index.rfind("run_dir,config,GP.elitism,Neural.sampleAverageCount,seed,status,final_best,generations,"
-                          "evaluations,wall_seconds\n",
+                          "evaluations,wall_seconds,best_ever\n",
                           0),
               0u)
         << index;
+    // best_ever is the largest best of the run's generations, as stats.csv writes it.
+    {
+        const app::StudyIndex study = app::read_study_index(dir / "study");
+        ASSERT_EQ(study.runs.size(), 12u);
+        for (const app::StudyRun& run : study.runs) {
+            double most = -1e300;
+            for (const auto& row : app::read_stats_csv(dir / "study" / run.run_dir / "stats.csv")) most = std::max(most, row.best);
+            ASSERT_TRUE(run.best_ever.has_value()) << run.run_dir;
+            EXPECT_EQ(*run.best_ever, most) << run.run_dir;
+            EXPECT_GE(*run.best_ever, *run.final_best);
+        }
+    }
     EXPECT_EQ(lines(index), 13) << index;
     EXPECT_EQ(std::count(index.begin(), index.end(), 'd') >= 12, true);
     EXPECT_NE(index.find("runs/elitism=1+sampleAverageCount=2/s6,elitism=1+sampleAverageCount=2,1,2,6,done,"),

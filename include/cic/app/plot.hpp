@@ -52,7 +52,7 @@ struct GenerationSummary {
 std::vector<GenerationSummary> summarise(const std::vector<std::vector<StatsRow>>& runs);
 
 // A study folder (written by `cic sweep`): STUDY/index.csv lists one run per line,
-//   run_dir,config,<varied key columns...>,seed,status,final_best,generations,evaluations,wall_seconds
+//   run_dir,config,<varied key columns...>,seed,status,final_best,generations,evaluations,wall_seconds[,best_ever]
 // with run_dir relative to STUDY and status one of pending, running, done,
 // interrupted, failed. Cells holding a comma or a double quote are quoted
 // ("..." with "" for a quote).
@@ -65,6 +65,7 @@ struct StudyRun {
     std::string seed;
     std::string status;
     std::optional<double> final_best;     // empty cells stay empty
+    std::optional<double> best_ever;      // empty too in an index written before the column existed
     std::optional<double> generations, evaluations, wall_seconds;
     int line = 0;                         // line in index.csv
 };

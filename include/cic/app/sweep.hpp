@@ -65,6 +65,7 @@ std::string to_string(TaskStatus s);
 struct TaskState {
     TaskStatus status = TaskStatus::Pending;
     std::string final_best;       // last generation's best, as written in stats.csv
+    std::string best_ever;        // the best of every generation (stats.csv's best column, its maximum)
     int generations = 0;
     long evaluations = 0;
     double wall_seconds = 0;      // summed over the sessions that ran it
@@ -72,7 +73,7 @@ struct TaskState {
 TaskState task_state(const SweepPlan& plan, const SweepTask& task);
 
 // Rewrites STUDY/index.csv (atomically, under a lock shared by every task):
-// run_dir,config,<varied keys>,seed,status,final_best,generations,evaluations,wall_seconds
+// run_dir,config,<varied keys>,seed,status,final_best,generations,evaluations,wall_seconds,best_ever
 void write_index(const SweepPlan& plan);
 
 // The run store folder of a task (plan.store must be set): STORE/KEY, KEY the
