@@ -10,6 +10,7 @@
 #   compare   the comparison at 2,500 evaluations on R0, R1, R2 (4 legs) and R1
 #             (6 legs): HyperGP at Table B.1 values and CMA-ES gaits, seeds 1..10,
 #             and the deterministic sine grid (scripts/tune-sine.sh)
+#   long      15,000 evaluations on R1: CMA-ES gaits, seeds 1..10 (gait-15000.xml)
 # Tables and plots go to experiments/baselines/results/.
 #   --jobs N        runs at a time (default 2)
 #   --output DIR    study folders (default runs/baselines); the run store is shared
@@ -29,12 +30,12 @@ while [ $# -gt 0 ]; do
     --jobs) jobs="$2"; shift 2 ;;
     --output) output="$2"; shift 2 ;;
     --summary-only) summary_only=1; shift ;;
-    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    search|compare) stages+=("$1"); shift ;;
+    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    search|compare|long) stages+=("$1"); shift ;;
     *) echo "baselines.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-[ ${#stages[@]} -gt 0 ] || { echo "baselines.sh: name a stage: search, compare (see --help)" >&2; exit 2; }
+[ ${#stages[@]} -gt 0 ] || { echo "baselines.sh: name a stage: search, compare, long (see --help)" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "baselines.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
 
 mkdir -p "$HERE/results"
@@ -43,6 +44,11 @@ summarise() {   # STUDY
   # best_ever: CMA-ES keeps its best, HyperGP at Table B.1 values (no elitism) may lose it.
   "$CIC" compare "$output/$1" --metric best_ever --out "$HERE/results/$1" > /dev/null
   "$CIC" plot "$output/$1" --title "$1 (median, Q1..Q3)" --median --out "$HERE/results/$1.svg"
+  # Walking or shaking (thesis 7.3.2.1): each finished run's best, replayed.
+  mapfile -t done_runs < <(awk -F, -v s="$output/$1" 'NR > 1 && $0 ~ /,done,/ {print s "/" $1}' "$output/$1/index.csv")
+  if [ ${#done_runs[@]} -gt 0 ]; then
+    "$CIC" --quiet assess "${done_runs[@]}" --out "$HERE/results/$1-gaits.csv"
+  fi
 }
 study() {   # STUDY
   echo "== $1" >&2
@@ -67,6 +73,8 @@ for stage in "${stages[@]}"; do
         } > "$HERE/results/sine-grid.csv"
       fi
       ;;
+    long) study gait-15000 ;;
   esac
 done
-echo "baselines.sh: tables and plots in $HERE/results" >&2
+python3 "$ROOT/scripts/baselines-report.py" --studies "$output" > "$HERE/results/report.md"
+echo "baselines.sh: tables and plots in $HERE/results (summary: results/report.md)" >&2

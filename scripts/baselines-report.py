@@ -1,0 +1,123 @@
+#!/usr/bin/env python3
+"""The tables of docs/baselines.md from the baseline studies' folders.
+
+    scripts/baselines-report.py [--studies DIR] [--results DIR]
+
+DIR (default runs/baselines) holds the study folders that scripts/baselines.sh
+writes; --results (default experiments/baselines/results) holds the gait
+assessments (<study>-gaits.csv from `cic assess`) and sine-grid.csv. Per robot
+and budget: each method's runs (n), median and IQR of best_ever (the best
+fitness found within the budget), Mann-Whitney U (two-sided) and A12 between
+HyperGP (its best configuration where that study exists, else Table B.1) and
+CMA-ES, and whether each method's best gait walks (dominant command frequency,
+centre height, flipped, shaking; `cic assess` replays the best individual of
+the last population of the run with the highest best_ever). A shaking gait does
+not win its cell (thesis 7.3.2.1). Statistics follow docs/statistics.md: exact U when scipy is present,
+A12 as the probability that a HyperGP run beats a CMA-ES run (ties half).
+Methods whose study has not run are listed as "not run".
+"""
+import argparse
+import csv
+import pathlib
+import statistics as st
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+ap.add_argument("--studies", default="runs/baselines")
+ap.add_argument("--results", default=str(ROOT / "experiments" / "baselines" / "results"))
+args = ap.parse_args()
+STUDIES, RESULTS = pathlib.Path(args.studies), pathlib.Path(args.results)
+
+# (budget, method label, study, is HyperGP)
+METHODS = [
+    (2500, "HyperGP, Table B.1", "hypergp-b1-2500", True),
+    (2500, "HyperGP, best configuration", "hypergp-best-2500", True),
+    (2500, "CMA-ES gait", "gait-2500", False),
+    (15000, "HyperGP, best configuration", "hypergp-best-15000", True),
+    (15000, "CMA-ES gait", "gait-15000", False),
+]
+ROBOTS = ["R0", "R1", "R2", "R1-6legs"]
+
+
+def runs(study):
+    """{variant: [(best_ever, run folder)]} of the finished runs."""
+    index = STUDIES / study / "index.csv"
+    if not index.exists():
+        return None
+    out = {}
+    for r in csv.DictReader(open(index)):
+        if r["status"] != "done" or not r.get("best_ever"):
+            continue
+        out.setdefault(r.get("variant") or r["config"], []).append((float(r["best_ever"]), STUDIES / study / r["run_dir"]))
+    return out
+
+
+def gaits(study):
+    f = RESULTS / f"{study}-gaits.csv"
+    return {pathlib.Path(r["input"]).resolve(): r for r in csv.DictReader(open(f))} if f.exists() else {}
+
+
+def a12(x, y):
+    return sum(1 if a > b else 0.5 if a == b else 0 for a in x for b in y) / (len(x) * len(y))
+
+
+def mann_whitney_p(x, y):
+    try:
+        from scipy.stats import mannwhitneyu
+    except ImportError:
+        return None
+    return mannwhitneyu(x, y, alternative="two-sided").pvalue
+
+
+def quartiles(v):
+    q = st.quantiles(v, n=4, method="inclusive") if len(v) > 1 else [v[0]] * 3
+    return q[0], q[2]
+
+
+sine = {}
+if (RESULTS / "sine-grid.csv").exists():
+    sine = {r["robot"]: float(r["fitness"]) for r in csv.DictReader(open(RESULTS / "sine-grid.csv"))}
+
+print("# HyperGP against parameter-optimised gaits: the tables\n")
+print("Made by `scripts/baselines-report.py` from the studies in "
+      f"`{STUDIES}`; metric best_ever (the best fitness found within the budget).\n")
+for budget in (2500, 15000):
+    robots = ROBOTS if budget == 2500 else ["R1"]
+    print(f"## {budget:,} evaluations\n")
+    print("| robot | method | n | median | IQR [Q1, Q3] | best run's gait: Hz, height m, flipped, shaking |")
+    print("|---|---|---|---|---|---|")
+    for robot in robots:
+        samples = {}
+        for b, label, study, _ in METHODS:
+            if b != budget:
+                continue
+            found = runs(study)
+            if found is None:
+                print(f"| {robot} | {label} | not run | | | |")
+                continue
+            v = found.get(robot, [])
+            if not v:
+                print(f"| {robot} | {label} | 0 | | | |")
+                continue
+            fitness = [f for f, _ in v]
+            samples[label] = fitness
+            q1, q3 = quartiles(fitness)
+            best_run = max(v)[1].resolve()
+            g = gaits(study).get(best_run)
+            walk = (f"{float(g['dominant_hz']):.1f}, {float(g['mean_height']):.2f}, "
+                    f"{'yes' if g['flipped'] == '1' else 'no'}, {'**shaking**' if g['shaking'] == '1' else 'no'}"
+                    if g else "not assessed")
+            print(f"| {robot} | {label} | {len(fitness)} | {st.median(fitness):.2f} | "
+                  f"{q3 - q1:.2f} [{q1:.2f}, {q3:.2f}] | {walk} |")
+        if budget == 2500:
+            print(f"| {robot} | sine grid (deterministic) | 1 | "
+                  f"{sine[robot]:.2f} | | |" if robot in sine else f"| {robot} | sine grid | not run | | | |")
+        hypergp = samples.get("HyperGP, best configuration") or samples.get("HyperGP, Table B.1")
+        which = "best configuration" if "HyperGP, best configuration" in samples else "Table B.1"
+        cma = samples.get("CMA-ES gait")
+        if hypergp and cma:
+            p = mann_whitney_p(hypergp, cma)
+            ptext = f"p = {p:.3g}" if p is not None else "p: scipy missing"
+            print(f"| {robot} | **HyperGP ({which}) vs CMA-ES** | | | | {ptext}, A12 = {a12(hypergp, cma):.2f} |")
+    print()
