@@ -1,6 +1,7 @@
 // The `cic` command line: options of the main job, subcommand registration,
 // and the mapping of errors to exit codes (0 ok, 1 run failure, 2 bad input).
 #include "cic/app/cli.hpp"
+#include "cic/app/self_path.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -58,13 +59,6 @@ std::vector<std::string> expand_seeds(const std::string& text) {
     return out;
 }
 
-std::string self_executable(const char* argv0) {
-    std::error_code ec;
-    fs::path p = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) return p.string();
-    return fs::absolute(argv0, ec).string();
-}
-
 std::string command_line(int argc, char** argv) {
     std::string s;
     for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
@@ -97,7 +91,7 @@ int run_main_job(const MainOptions& o, const CommandContext& ctx, int argc, char
     run.run_dir = run_dir;
     run.quiet = ctx.quiet;
     run.verbose = ctx.verbose;
-    run.worker_executable = self_executable(argv[0]);
+    run.worker_executable = self_exec_path();
     return run_experiment(std::move(prepared), run);
 }
 

@@ -16,6 +16,7 @@
 #include "cic/app/command_guard.hpp"
 #include "cic/app/commands.hpp"
 #include "cic/app/run.hpp"
+#include "cic/app/self_path.hpp"
 #include "cic/app/sweep.hpp"
 #include "cic/core/parallel_for.hpp"
 #include "cic/io/settings_io.hpp"
@@ -42,12 +43,6 @@ extern "C" void on_sweep_signal(int sig) {
     if (g_stop_signal == 0) g_stop_signal = sig;
 }
 
-std::string self_path() {
-    std::error_code ec;
-    const fs::path p = fs::read_symlink("/proc/self/exe", ec);
-    return ec ? std::string("cic") : p.string();
-}
-
 // Loads and checks the settings of every configuration (seeds change no input)
 // before anything is written.
 void check_every_configuration(const SweepPlan& plan) {
@@ -64,8 +59,11 @@ void check_every_configuration(const SweepPlan& plan) {
     }
 }
 
-std::vector<std::string> task_argv(const SweepPlan& plan, const SweepTask& t, int workers) {
-    return {self_path(), "--quiet",  "sweep", plan.file.string(), "--task", std::to_string(t.index), "--workers",
+// `program`: self_path() where the command is shown or written down,
+// self_exec_path() where it is run.
+std::vector<std::string> task_argv(const SweepPlan& plan, const SweepTask& t, int workers,
+                                   const std::string& program = self_path()) {
+    return {program, "--quiet",  "sweep", plan.file.string(), "--task", std::to_string(t.index), "--workers",
             std::to_string(workers), "--output", plan.study.string()};
 }
 
@@ -157,7 +155,7 @@ int run_locally(const SweepOptions& o, const SweepPlan& plan, int workers, bool 
     while (next < todo.size() || !running.empty()) {
         while (g_stop_signal == 0 && next < todo.size() && static_cast<int>(running.size()) < o.jobs) {
             const SweepTask& t = todo[next++];
-            const auto argv = task_argv(plan, t, workers);
+            const auto argv = task_argv(plan, t, workers, self_exec_path());
             std::vector<char*> args;
             for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
             args.push_back(nullptr);
@@ -234,7 +232,7 @@ void add_sweep_command(CLI::App& app, CommandContext& ctx) {
                 if (static_cast<std::size_t>(o->task) >= tasks.size())
                     throw InputError(fmt::format("--task {}: the sweep has tasks 0..{}", o->task, tasks.size() - 1),
                                      plan.file.string());
-                return run_task(plan, tasks[static_cast<std::size_t>(o->task)], workers, ctx.quiet, self_path());
+                return run_task(plan, tasks[static_cast<std::size_t>(o->task)], workers, ctx.quiet, self_exec_path());
             }
             check_every_configuration(plan);
             if (o->dry_run) return dry_run(plan, workers);

@@ -14,6 +14,7 @@
 
 #include "cic/app/command_guard.hpp"
 #include "cic/app/commands.hpp"
+#include "cic/app/self_path.hpp"
 #include "cic/app/preset_replay.hpp"
 #include "cic/viz/viewer.hpp"
 
@@ -29,10 +30,7 @@ void reexec_under_xvfb() {
     std::vector<std::string> args;
     for (std::string arg; std::getline(in, arg, '\0');) args.push_back(arg);
     if (args.empty()) return;
-    std::error_code ec;
-    const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);   // this binary, not xvfb-run's shell
-    if (ec) return;
-    args[0] = self.string();
+    args[0] = self_path();   // this binary's file: under xvfb-run, /proc/self/exe would be its shell
     std::vector<std::string> cmd = {"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
     cmd.insert(cmd.end(), args.begin(), args.end());
     std::vector<char*> argv;

@@ -2,6 +2,8 @@
 // found next to the installed binary or in the source tree (docs/install.md).
 #include "cic/app/settings_lookup.hpp"
 
+#include "cic/app/self_path.hpp"
+
 #include <iostream>
 #include <system_error>
 
@@ -13,9 +15,7 @@ namespace fs = std::filesystem;
 
 std::vector<fs::path> settings_search_folders() {
     std::vector<fs::path> out;
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec && !exe.empty())
+    if (const fs::path exe = self_path(); exe.has_parent_path())
         out.push_back((exe.parent_path() / ".." / "share" / "cic" / "settings").lexically_normal());
 #ifdef CIC_SOURCE_DIR
     out.push_back(fs::path(CIC_SOURCE_DIR) / "settings");

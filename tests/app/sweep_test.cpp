@@ -181,6 +181,43 @@ TEST(Sweep, StudiesSharingAStoreRunACommonConfigurationOnce) {
     fs::remove_all(dir);
 }
 
+// cic reinstalled while a study runs: the tasks still to start run the binary
+// that started the study (/proc/self/exe), not a missing or different file.
+TEST(Sweep, ReplacingTheBinaryMidStudyChangesNothing) {
+    const auto dir = temp_dir("sweep-replaced");
+    const fs::path bin = dir / "cic-copy";
+    fs::copy_file(cic_binary(), bin);
+    write_text(dir / "s.xml", tiny_sweep_text("replaced", dir / "study", 6, 3, 2.5,
+                                              "<variant name=\"R0\"><set>Simulator.robot_type=0</set></variant>", 3));
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        freopen((dir / "sweep.log").c_str(), "w", stderr);
+        const std::string file = (dir / "s.xml").string();
+        execl(bin.c_str(), bin.c_str(), "sweep", file.c_str(), "--jobs", "1", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    // The first task's folder exists: the sweep is running and tasks 2 and 3 are still to start.
+    bool started = false;
+    for (int i = 0; i < 1200 && !started; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(25));
+        started = fs::exists(dir / "study" / "runs" / "R0" / "s1" / "settings.xml");
+    }
+    ASSERT_TRUE(started) << read_text(dir / "sweep.log");
+    fs::remove(bin);
+    write_text(bin, "#!/bin/sh\nexit 3\n");   // a broken "new version" in its place
+    fs::permissions(bin, fs::perms::owner_all);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << read_text(dir / "sweep.log");
+    EXPECT_EQ(WEXITSTATUS(status), 0) << read_text(dir / "sweep.log");
+    const std::string index = read_text(dir / "study" / "index.csv");
+    EXPECT_EQ(std::count(index.begin(), index.end(), '\n'), 4) << index;
+    EXPECT_EQ(index.find(",pending,"), std::string::npos) << index;
+    EXPECT_EQ(index.find(",failed,"), std::string::npos) << index;
+    fs::remove_all(dir);
+}
+
 TEST(Sweep, InterruptedStudyResumesToTheSameBytes) {
     const auto dir = temp_dir("sweep-resume");
     write_text(dir / "ref.xml", sweep_text(dir / "reference", 6));
