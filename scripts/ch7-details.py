@@ -117,3 +117,24 @@ for study in ("topology", "forest", "legs", "sample-step", "averaging", "integra
     total += hours
     print(f"| {study} | {len(rows)} | {new} | {hours:.2f} |")
 print(f"| all | | {len(counted)} | {total:.2f} (about {total / 2:.1f} h of wall time at --jobs 2) |")
+
+if (R / "long-runs" / "index.csv").exists() and done("long-runs"):
+    # 7.2.1's wish: up to 300 generations. The same runs at several generations:
+    # a paired test (Wilcoxon signed-rank) of generation 49 against the last.
+    from scipy.stats import wilcoxon
+    rows = [stats(R / "long-runs" / r["run_dir"]) for r in done("long-runs")]
+    rows = [r for r in rows if len(r) == 300]
+    print(f"\n## 300 generations (R1, Table B.1), {len(rows)} finished runs\n")
+    print("| generation | best: median | best ever so far: median | mean depth (sum): median | max depth: median | limit: median | mean size: median |")
+    print("|---|---|---|---|---|---|---|")
+    for g in (0, 49, 99, 149, 199, 249, 299):
+        col = lambda k: st.median(float(r[g][k]) for r in rows)
+        ever = st.median(max(float(x["best"]) for x in r[: g + 1]) for r in rows)
+        print(f"| {g} | {col('best'):.2f} | {ever:.2f} | {col('mean_depth_sum'):.1f} | {col('max_depth'):.0f} | "
+              f"{col('limit'):.0f} | {col('mean_size'):.1f} |")
+    if len(rows) >= 5:
+        at49 = [max(float(x["best"]) for x in r[:50]) for r in rows]
+        at299 = [max(float(x["best"]) for x in r) for r in rows]
+        p = wilcoxon(at299, at49).pvalue if any(a != b for a, b in zip(at299, at49)) else 1.0
+        print(f"\nBest so far, generation 299 against 49 (same runs, Wilcoxon signed-rank): p = {p:.3g}; "
+              f"{sum(a > b for a, b in zip(at299, at49))} of {len(rows)} runs improved.")
