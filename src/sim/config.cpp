@@ -1,23 +1,20 @@
 // Checks of a SimConfig against its one field description (config.hpp).
 #include "cic/sim/config.hpp"
 
+#include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
+#include <string>
 
 namespace cic::sim {
 
 namespace {
 
+// Shortest text that reads back as v ("0.025", not "0.025000000000000001"),
+// as the settings writer formats numbers.
 std::string number(double v) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    // Shortest text that reads back as v keeps messages short ("0.025", not "0.025000000000000001").
-    for (int digits = 1; digits <= 17; ++digits) {
-        std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-        if (std::strtod(buf, nullptr) == v) break;
-    }
-    return buf;
+    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+    return ec == std::errc() ? std::string(buf, end) : std::to_string(v);
 }
 
 std::string range_text(const FieldSpec& f) {
