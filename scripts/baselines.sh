@@ -6,16 +6,20 @@
 # missing runs. Seeds are fixed in the sweep files (experiments/baselines/).
 # Stages:
 #   search    HyperGP configurations on R1 at 2,500 evaluations, tuning seeds
-#             101..105 (search-a.xml, search-clock.xml)
+#             101..105 (search-a.xml, search-clock.xml, then search-b.xml)
 #   compare   the comparison at 2,500 evaluations on R0, R1, R2 (4 legs) and R1
-#             (6 legs): HyperGP at Table B.1 values and CMA-ES gaits, seeds 1..10,
-#             and the deterministic sine grid (scripts/tune-sine.sh)
-#   long      15,000 evaluations on R1: CMA-ES gaits, seeds 1..10 (gait-15000.xml)
+#             (6 legs): HyperGP at Table B.1 values, HyperGP's best configuration
+#             and CMA-ES gaits, seeds 1..10, and the deterministic sine grid
+#             (scripts/tune-sine.sh); curves of best fitness against evaluations
+#   long      15,000 evaluations on R1: HyperGP's best configuration and CMA-ES
+#             gaits, seeds 1..10 (hypergp-best-15000.xml, gait-15000.xml)
 # Tables and plots go to experiments/baselines/results/.
 #   --jobs N        runs at a time (default 2)
 #   --output DIR    study folders (default runs/baselines); the run store is shared
 #                   with the chapter-7 studies (runs/thesis-ch7/store)
 #   --summary-only  run nothing; summarise what is there
+# PYTHON names the interpreter for the report (default python3; the p-values
+# need scipy, Debian's python3-scipy).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 HERE="$ROOT/experiments/baselines"
@@ -30,7 +34,7 @@ while [ $# -gt 0 ]; do
     --jobs) jobs="$2"; shift 2 ;;
     --output) output="$2"; shift 2 ;;
     --summary-only) summary_only=1; shift ;;
-    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     search|compare|long) stages+=("$1"); shift ;;
     *) echo "baselines.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
   esac
@@ -51,17 +55,33 @@ summarise() {   # STUDY
   fi
 }
 study() {   # STUDY
+  if [ ! -f "$HERE/$1.xml" ]; then
+    echo "== $1: no sweep file yet (experiments/baselines/$1.xml), skipped" >&2
+    return 0
+  fi
   echo "== $1" >&2
   [ "$summary_only" = 1 ] || "$CIC" sweep "$HERE/$1.xml" --output "$output/$1" --jobs "$jobs" >&2
   summarise "$1"
 }
+# Best fitness so far against evaluations, per robot: every method of a budget that has runs.
+curves() {   # BUDGET ROBOT STUDY...
+  local budget="$1" robot="$2" found=()
+  shift 2
+  for s in "$@"; do [ -f "$output/$s/index.csv" ] && found+=("$output/$s"); done
+  [ ${#found[@]} -gt 0 ] || return 0
+  "$CIC" --quiet plot --by-evaluations "${found[@]}" --config "$robot" --median \
+    --title "$robot, $budget evaluations: best fitness so far" --out "$HERE/results/curves-$budget-$robot.svg" ||
+    echo "baselines.sh: no curves for $robot at $budget evaluations yet" >&2
+}
 
 for stage in "${stages[@]}"; do
   case "$stage" in
-    search) study search-a; study search-clock ;;
+    search) study search-a; study search-clock; study search-b ;;
     compare)
       study hypergp-b1-2500
+      study hypergp-best-2500
       study gait-2500
+      for r in R0 R1 R2 R1-6legs; do curves 2500 "$r" hypergp-b1-2500 hypergp-best-2500 gait-2500; done
       if [ "$summary_only" = 0 ]; then
         echo "== sine grid" >&2
         {
@@ -73,8 +93,12 @@ for stage in "${stages[@]}"; do
         } > "$HERE/results/sine-grid.csv"
       fi
       ;;
-    long) study gait-15000 ;;
+    long)
+      study hypergp-best-15000
+      study gait-15000
+      curves 15000 R1 hypergp-best-15000 gait-15000
+      ;;
   esac
 done
-python3 "$ROOT/scripts/baselines-report.py" --studies "$output" > "$HERE/results/report.md"
+"${PYTHON:-python3}" "$ROOT/scripts/baselines-report.py" --studies "$output" > "$HERE/results/report.md"
 echo "baselines.sh: tables and plots in $HERE/results (summary: results/report.md)" >&2

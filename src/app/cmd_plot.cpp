@@ -23,13 +23,18 @@ void add_plot_command(CLI::App& app, CommandContext& ctx) {
         int width = 0, height = 0;
         bool median = false;
         bool include_unfinished = false;
+        bool by_evaluations = false;
+        std::vector<std::string> configs;
     };
     auto opts = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand(
         "plot", "Plot best/mean fitness, depth and size per generation of run folders (folders named NAME-NNN "
                 "are grouped by NAME: mean curve, +-1 sd band) or of a study folder from cic sweep (one colour per "
-                "configuration), or a trace CSV with --trace");
-    cmd->add_option("runs", opts->runs, "run folders (each holds stats.csv), or one study folder (holds index.csv)");
+                "configuration), or best fitness so far against evaluations of several studies (--by-evaluations), or a "
+                "trace CSV with --trace");
+    cmd->add_option("runs", opts->runs,
+                    "run folders (each holds stats.csv), or one study folder (holds index.csv), or with "
+                    "--by-evaluations several study folders");
     cmd->add_option("--trace", opts->trace, "plot this trace CSV (from cic trace) instead");
     cmd->add_option("--out", opts->out, "output .svg or .png (default: plot.svg, or trace.svg with --trace)");
     cmd->add_option("--title", opts->title, "figure title");
@@ -41,10 +46,19 @@ void add_plot_command(CLI::App& app, CommandContext& ctx) {
     cmd->add_flag("--median", opts->median, "with a study: median curves with Q1..Q3 bands (default: mean, +-1 sd)");
     cmd->add_flag("--include-unfinished", opts->include_unfinished,
                   "with a study: also runs whose status is not done (default: done runs only)");
+    cmd->add_flag("--by-evaluations", opts->by_evaluations,
+                  "study folders on one panel: best fitness so far against evaluations used, one curve per "
+                  "study and configuration (e.g. HyperGP against CMA-ES at the same budget)");
+    cmd->add_option("--config", opts->configs,
+                    "with --by-evaluations: only these configurations (config names of index.csv); every study "
+                    "must have them")
+        ->delimiter(',');
     cmd->callback([opts, &ctx] {
         run_guarded(ctx, "plot", [&] {
             if (opts->trace.empty() == opts->runs.empty())
                 throw InputError("give either run folders or --trace FILE.csv");
+            if (opts->by_evaluations && !opts->trace.empty())
+                throw InputError("--by-evaluations plots study folders, not a trace");
             if (!opts->trace.empty()) {
                 TracePlotOptions plot;
                 plot.title = opts->title;
@@ -55,6 +69,28 @@ void add_plot_command(CLI::App& app, CommandContext& ctx) {
                 plot.to = opts->to;
                 const std::string out = opts->out.empty() ? "trace.svg" : opts->out;
                 plot_trace(opts->trace, out, plot);
+                if (!ctx.quiet) std::cerr << "wrote " << out << '\n';
+                return 0;
+            }
+            if (!opts->configs.empty() && !opts->by_evaluations)
+                throw InputError("--config applies with --by-evaluations");
+            if (opts->by_evaluations) {
+                std::vector<std::filesystem::path> studies;
+                for (const auto& dir : opts->runs) {
+                    if (!is_study_folder(dir))
+                        throw InputError("--by-evaluations plots study folders (each holds index.csv from cic sweep)",
+                                         dir);
+                    studies.emplace_back(dir);
+                }
+                EvaluationPlotOptions plot;
+                plot.title = opts->title;
+                plot.width = opts->width;
+                plot.height = opts->height;
+                plot.median = opts->median;
+                plot.include_unfinished = opts->include_unfinished;
+                plot.configs = opts->configs;
+                const std::string out = opts->out.empty() ? "plot.svg" : opts->out;
+                plot_studies_by_evaluations(studies, out, plot);
                 if (!ctx.quiet) std::cerr << "wrote " << out << '\n';
                 return 0;
             }

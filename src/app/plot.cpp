@@ -97,6 +97,45 @@ void render(const std::string& gnuplot, const fs::path& scratch, const std::stri
         throw std::runtime_error("gnuplot exited normally but wrote no " + out_file.string());
 }
 
+// A curve with a band per series: centre column `col`, band columns col+1 (low)
+// and col+2 (high); the band only where a series has several runs.
+struct BandSeries {
+    std::string label;
+    std::size_t runs = 0;
+    std::string data;   // gnuplot-quoted data file
+};
+std::string band_plot_command(const std::vector<BandSeries>& series, int col) {
+    std::vector<std::string> items;
+    for (std::size_t k = 0; k < series.size(); ++k) {
+        const std::string colour = fmt::format("rgb '{}'", kColours[k % kColours.size()]);
+        const std::string label =
+            fmt::format("{} ({} run{})", series[k].label, series[k].runs, series[k].runs == 1 ? "" : "s");
+        if (series[k].runs > 1)
+            items.push_back(fmt::format("{} using 1:{}:{} with filledcurves fs transparent solid 0.18 noborder "
+                                        "lc {} notitle",
+                                        series[k].data, col + 1, col + 2, colour));
+        items.push_back(
+            fmt::format("{} using 1:{} with lines lw 2 lc {} title {}", series[k].data, col, colour, quote(label)));
+    }
+    return fmt::format("plot {}\n", fmt::join(items, ", \\\n  "));
+}
+
+// The done runs of a study configuration (or every run with statistics).
+std::vector<std::vector<StatsRow>> stats_of(const StudyIndex& index, const StudyGroup& group) {
+    std::vector<std::vector<StatsRow>> runs;
+    for (const StudyRun* run : group.runs) {
+        auto rows = read_study_run_stats(index, *run);
+        if (!rows.empty()) runs.push_back(std::move(rows));
+    }
+    return runs;
+}
+
+std::string study_name(const fs::path& study) {
+    fs::path p = study;
+    if (!p.has_filename()) p = p.parent_path();
+    return fs::weakly_canonical(p).filename().string();
+}
+
 } // namespace
 
 void plot_runs(const std::vector<fs::path>& run_dirs, const fs::path& out_file, const PlotOptions& options) {
@@ -167,19 +206,10 @@ void plot_runs(const std::vector<fs::path>& run_dirs, const fs::path& out_file, 
 void plot_study(const fs::path& study, const fs::path& out_file, const StudyPlotOptions& options) {
     check_output_folder(out_file);
     const StudyIndex index = read_study_index(study);
-    struct Series {
-        std::string label;
-        std::size_t runs = 0;
-        std::string data;   // gnuplot-quoted data file
-    };
-    std::vector<Series> series;
+    std::vector<BandSeries> series;
     ScratchDir scratch;
     for (const auto& group : group_study(index, options.include_unfinished)) {
-        std::vector<std::vector<StatsRow>> runs;
-        for (const StudyRun* run : group.runs) {
-            auto rows = read_study_run_stats(index, *run);
-            if (!rows.empty()) runs.push_back(std::move(rows));
-        }
+        const auto runs = stats_of(index, group);
         if (runs.empty()) continue;
         std::string text = "# generation runs then centre low high of: best mean mean_depth max_depth\n";
         for (const auto& g : summarise_bands(runs, options.median)) {
@@ -198,34 +228,15 @@ void plot_study(const fs::path& study, const fs::path& out_file, const StudyPlot
                                                       "also plots the others)",
                          index.file.string());
 
-    auto colour = [](std::size_t k) { return fmt::format("rgb '{}'", kColours[k % kColours.size()]); };
-    auto label = [&](std::size_t k) {
-        return fmt::format("{} ({} run{})", series[k].label, series[k].runs, series[k].runs == 1 ? "" : "s");
-    };
     const std::string band_name = options.median ? "median, IQR band" : "mean, +-1 sd band";
-    // Centre column `col`, band columns col+1 (low) and col+2 (high).
     auto panel = [&](const std::string& title, const char* ylabel, int col) {
-        std::vector<std::string> items;
-        for (std::size_t k = 0; k < series.size(); ++k) {
-            if (series[k].runs > 1)
-                items.push_back(fmt::format("{} using 1:{}:{} with filledcurves fs transparent solid 0.18 noborder "
-                                            "lc {} notitle",
-                                            series[k].data, col + 1, col + 2, colour(k)));
-            items.push_back(fmt::format("{} using 1:{} with lines lw 2 lc {} title {}", series[k].data, col,
-                                        colour(k), quote(label(k))));
-        }
-        return fmt::format("set title {}\nset ylabel {}\nplot {}\n", quote(title + " (" + band_name + ")"),
-                           quote(ylabel), fmt::join(items, ", \\\n  "));
+        return fmt::format("set title {}\nset ylabel {}\n{}", quote(title + " (" + band_name + ")"), quote(ylabel),
+                           band_plot_command(series, col));
     };
 
     const int width = options.width > 0 ? options.width : 1200;
     const int height = options.height > 0 ? options.height : 900;
-    std::string title = options.title;
-    if (title.empty()) {
-        fs::path p = study;
-        if (!p.has_filename()) p = p.parent_path();
-        title = "study " + fs::weakly_canonical(p).filename().string();
-    }
+    const std::string title = options.title.empty() ? "study " + study_name(study) : options.title;
     std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
     script += fmt::format("set output {}\n", quote(out_file.string()));
     script += fmt::format("set multiplot layout 2,2 title {}\n", quote(title));
@@ -235,6 +246,67 @@ void plot_study(const fs::path& study, const fs::path& out_file, const StudyPlot
     script += panel("max depth", "depth", 12);
     script += panel("mean depth", "depth", 9);
     script += "unset multiplot\nset output\n";
+    render(options.gnuplot, scratch.path(), script, out_file);
+}
+
+void plot_studies_by_evaluations(const std::vector<fs::path>& studies, const fs::path& out_file,
+                                 const EvaluationPlotOptions& options) {
+    if (studies.empty()) throw InputError("plot: give at least one study folder");
+    check_output_folder(out_file);
+    const bool one_per_study = options.configs.size() == 1;
+    std::vector<BandSeries> series;
+    ScratchDir scratch;
+    for (const auto& study : studies) {
+        const StudyIndex index = read_study_index(study);
+        const auto groups = group_study(index, options.include_unfinished);
+        std::vector<const StudyGroup*> chosen;
+        if (options.configs.empty()) {
+            for (const auto& g : groups) chosen.push_back(&g);
+        } else {
+            for (const auto& name : options.configs) {
+                const auto it = std::find_if(groups.begin(), groups.end(),
+                                             [&](const StudyGroup& g) { return g.config == name; });
+                if (it == groups.end()) {
+                    std::vector<std::string> names;
+                    for (const auto& g : groups) names.push_back(g.config);
+                    throw InputError(fmt::format("no configuration '{}' in the study (it has: {})", name,
+                                                 fmt::join(names, ", ")),
+                                     index.file.string());
+                }
+                chosen.push_back(&*it);
+            }
+        }
+        const std::size_t before = series.size();
+        for (const StudyGroup* group : chosen) {
+            const auto runs = stats_of(index, *group);
+            if (runs.empty()) continue;
+            std::string text = "# evaluations runs best_so_far low high\n";
+            for (const auto& b : summarise_by_evaluations(runs, options.median))
+                text += fmt::format("{:.10g} {} {:.10g} {:.10g} {:.10g}\n", b.evaluations, b.runs,
+                                    b.best_so_far.centre, b.best_so_far.low, b.best_so_far.high);
+            const fs::path data = scratch.path() / fmt::format("series{}.dat", series.size());
+            write_file(data, text);
+            const std::string name = study_name(study);
+            series.push_back({one_per_study ? name : name + ": " + group->config, runs.size(), quote(data.string())});
+        }
+        if (series.size() == before)
+            throw InputError(options.include_unfinished ? "the study has no run with statistics yet"
+                                                        : "the study has no done run to plot (--include-unfinished "
+                                                          "also plots the others)",
+                             index.file.string());
+    }
+
+    const int width = options.width > 0 ? options.width : 900;
+    const int height = options.height > 0 ? options.height : 600;
+    const std::string band_name = options.median ? "median, IQR band" : "mean, +-1 sd band";
+    const std::string title = options.title.empty() ? "best fitness so far" : options.title;
+    std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
+    script += fmt::format("set output {}\n", quote(out_file.string()));
+    script += fmt::format("set title {}\n", quote(title + " (" + band_name + ")"));
+    script += "set grid\nset key left top box opaque\nset xlabel 'evaluations'\nset ylabel 'best fitness so far'\n"
+              "set autoscale xfix\n";
+    script += band_plot_command(series, 3);
+    script += "set output\n";
     render(options.gnuplot, scratch.path(), script, out_file);
 }
 

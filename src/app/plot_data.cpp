@@ -7,6 +7,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <stdexcept>
 
 #include "cic/app/plot.hpp"
 #include "cic/app/statistics.hpp"
@@ -297,6 +298,35 @@ std::vector<GenerationBands> summarise_bands(const std::vector<std::vector<Stats
         g.mean_depth = band(&StatsRow::mean_depth);
         g.max_depth = band(&StatsRow::max_depth);
         out.push_back(g);
+    }
+    return out;
+}
+
+std::vector<EvaluationBand> summarise_by_evaluations(const std::vector<std::vector<StatsRow>>& runs, bool median,
+                                                     int points) {
+    if (points < 1) throw std::invalid_argument("summarise_by_evaluations: points must be at least 1");
+    double most = 0;
+    for (const auto& run : runs)
+        if (!run.empty()) most = std::max(most, run.back().evaluations);
+    std::vector<EvaluationBand> out;
+    if (most <= 0) return out;
+    // Per run: the next row to take in and the best so far (NaN until a finite best).
+    std::vector<std::size_t> next(runs.size(), 0);
+    std::vector<double> best(runs.size(), NAN);
+    for (int k = 1; k <= points; ++k) {
+        const double e = most * k / points;
+        std::vector<double> v;
+        for (std::size_t r = 0; r < runs.size(); ++r) {
+            while (next[r] < runs[r].size() && runs[r][next[r]].evaluations <= e) {
+                const double b = runs[r][next[r]++].best;
+                if (!std::isnan(b) && !(b <= best[r])) best[r] = b;   // also replaces the first NaN
+            }
+            if (!std::isnan(best[r])) v.push_back(best[r]);
+        }
+        if (v.empty()) continue;
+        const stats::Descriptive d = stats::describe(v);
+        out.push_back({e, static_cast<int>(v.size()),
+                       median ? Band{d.median, d.q1, d.q3} : Band{d.mean, d.mean - d.sd, d.mean + d.sd}});
     }
     return out;
 }

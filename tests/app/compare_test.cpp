@@ -371,6 +371,89 @@ TEST(ComparePlotStudy, ThroughTheCommandLine) {
     EXPECT_NE(r.err.find((study / "index.csv").string() + ":2:"), std::string::npos) << r.err;
 }
 
+// --- cic plot --by-evaluations STUDY... -----------------------------------------
+
+// Rows at the given cumulative evaluation counts with the given generation bests.
+std::vector<StatsRow> rows_at(const std::vector<double>& evaluations, const std::vector<double>& bests) {
+    std::vector<StatsRow> rows(bests.size());
+    for (std::size_t g = 0; g < bests.size(); ++g) {
+        rows[g].generation = static_cast<int>(g);
+        rows[g].evaluations = evaluations[g];
+        rows[g].best = bests[g];
+    }
+    return rows;
+}
+
+TEST(ComparePlotByEvaluations, BestSoFarAtEvenlySpacedCosts) {
+    // a: 50 per generation, loses its best at 150 (no elitism); b: 30 per
+    // generation, stops at 60; c: its first generation all failed (NaN).
+    const auto a = rows_at({50, 100, 150, 200}, {1, 4, 2, 3});
+    const auto b = rows_at({30, 60}, {2, 6});
+    const auto c = rows_at({50, 100, 150, 200}, {NAN, 1, 1, 5});
+    const auto bands = summarise_by_evaluations({a, b, c}, true, 4);   // at 50, 100, 150, 200
+    ASSERT_EQ(bands.size(), 4u);
+    EXPECT_DOUBLE_EQ(bands[0].evaluations, 50);
+    EXPECT_EQ(bands[0].runs, 2);                           // a: 1, b: 2 (c has no finite best yet)
+    EXPECT_DOUBLE_EQ(bands[0].best_so_far.centre, 1.5);
+    EXPECT_EQ(bands[1].runs, 3);                           // a: 4, b: 6 (kept after it stopped), c: 1
+    EXPECT_DOUBLE_EQ(bands[1].best_so_far.centre, 4);
+    EXPECT_DOUBLE_EQ(bands[2].best_so_far.centre, 4);      // a keeps 4 although its generation best fell to 2
+    EXPECT_DOUBLE_EQ(bands[3].best_so_far.centre, 5);      // 4, 6, 5
+    EXPECT_DOUBLE_EQ(bands[3].best_so_far.low, 4.5);
+    EXPECT_DOUBLE_EQ(bands[3].best_so_far.high, 5.5);
+    const auto mean = summarise_by_evaluations({a, b}, false, 2);   // at 100, 200
+    ASSERT_EQ(mean.size(), 2u);
+    EXPECT_DOUBLE_EQ(mean[1].best_so_far.centre, 5);
+    EXPECT_DOUBLE_EQ(mean[1].best_so_far.low, 5 - std::sqrt(2.0));
+    EXPECT_THROW(summarise_by_evaluations({a}, true, 0), std::invalid_argument);
+    EXPECT_TRUE(summarise_by_evaluations({}, true, 10).empty());
+}
+
+TEST(ComparePlotByEvaluations, SeveralStudiesOnOnePanel) {
+    const fs::path one = make_study("by-evaluations-a");
+    const fs::path two = make_study("by-evaluations-b");
+    const fs::path out = one.parent_path() / "curves.svg";
+    EvaluationPlotOptions options;
+    options.median = true;
+    options.configs = {"tour3", "tour7"};
+    plot_studies_by_evaluations({one, two}, out, options);
+    const std::string svg = read_text(out);
+    for (const char* label : {"study: tour3 (5 runs)", "study: tour7 (4 runs)", "evaluations",
+                              "best fitness so far (median, IQR band)"})
+        EXPECT_NE(svg.find(label), std::string::npos) << label;
+    EXPECT_EQ(svg.find("tour5"), std::string::npos);
+    // One configuration per study: the curves are named by their study.
+    options.configs = {"tour5"};
+    options.title = "tour5 everywhere";
+    plot_studies_by_evaluations({one}, out, options);
+    EXPECT_NE(read_text(out).find("study (5 runs)"), std::string::npos);
+    // A configuration a study lacks names the study's index and what it has.
+    options.configs = {"tour9"};
+    const std::string message = input_error([&] { plot_studies_by_evaluations({one}, out, options); });
+    EXPECT_NE(message.find((one / "index.csv").string()), std::string::npos) << message;
+    EXPECT_NE(message.find("it has: tour3, tour5, tour7"), std::string::npos) << message;
+    EXPECT_THROW(plot_studies_by_evaluations({}, out, {}), InputError);
+}
+
+TEST(ComparePlotByEvaluations, ThroughTheCommandLine) {
+    const fs::path one = make_study("by-evaluations-cli-a");
+    const fs::path two = make_study("by-evaluations-cli-b");
+    const fs::path out = one.parent_path() / "curves.svg";
+    Result r = cic("plot --by-evaluations " + one.string() + " " + two.string() + " --config tour3 --median --out " +
+                   out.string());
+    ASSERT_EQ(r.rc, 0) << r.err;
+    EXPECT_NE(read_text(out).find("<svg"), std::string::npos);
+    // A run folder is not a study; --config needs --by-evaluations; no trace.
+    r = cic("plot --by-evaluations " + (one / "runs/tour3/s1").string() + " --out " + out.string());
+    EXPECT_EQ(r.rc, 2);
+    EXPECT_NE(r.err.find("study folders"), std::string::npos) << r.err;
+    EXPECT_EQ(cic("plot " + one.string() + " --config tour3 --out " + out.string()).rc, 2);
+    EXPECT_EQ(cic("plot --by-evaluations --trace x.csv --out " + out.string()).rc, 2);
+    r = cic("plot --by-evaluations " + one.string() + " --config nope --out " + out.string());
+    EXPECT_EQ(r.rc, 2);
+    EXPECT_NE(r.err.find("no configuration 'nope'"), std::string::npos) << r.err;
+}
+
 // best_ever (the best of any generation) is read when the index has it, and
 // can be the metric; an index written before the column existed still reads.
 TEST(CompareStudy, BestEverIsAMetricWhenTheIndexHasIt) {

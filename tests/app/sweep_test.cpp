@@ -57,6 +57,32 @@ TEST(SweepFile, PlansEveryConfigurationAndSeed) {
     fs::remove_all(dir);
 }
 
+// Every study the repository ships (experiments/**/*.xml with a <sweep> root)
+// passes the schema and plans with every configuration's settings accepted, so a
+// reader can rerun any of them as the docs say.
+TEST(SweepFile, ShippedStudiesAreValid) {
+    const fs::path root = CIC_SOURCE_DIR;
+    const auto dir = temp_dir("sweep-shipped");
+    int checked = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(root / "experiments")) {
+        if (entry.path().extension() != ".xml") continue;
+        const auto doc = io::xml::Document::load_file(entry.path());
+        if (doc.root().name() != "sweep") continue;
+        SCOPED_TRACE(entry.path().string());
+        const auto problems = doc.validate(root / "settings" / "cic-sweep.xsd");
+        EXPECT_TRUE(problems.empty()) << problems.front();
+        const fs::path study = dir / std::to_string(checked);
+        EXPECT_EQ(run_command("--quiet sweep '" + entry.path().string() + "' --dry-run --output '" + study.string() +
+                                  "'",
+                              dir / "log"),
+                  0)
+            << read_text(dir / "log");
+        ++checked;
+    }
+    EXPECT_GE(checked, 10);
+    fs::remove_all(dir);
+}
+
 TEST(SweepFile, MistakesAreRefusedWithFileAndLine) {
     const auto dir = temp_dir("sweep-errors");
     const std::string good = sweep_text(dir / "study");

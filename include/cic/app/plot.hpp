@@ -111,6 +111,22 @@ struct GenerationBands {
 };
 std::vector<GenerationBands> summarise_bands(const std::vector<std::vector<StatsRow>>& runs, bool median);
 
+// Best fitness found so far against evaluations used, over the runs of one
+// configuration: at `points` evenly spaced evaluation counts up to the most any
+// of the runs used (the `evaluations` column is cumulative), the centre and band
+// (as summarise_bands) of each run's best so far. A run counts from its first
+// row on and keeps its last value after it stopped, since a best found within
+// the budget stays found. Runs of a method that counts evaluations per
+// generation differently (HyperGP: the population; CMA-ES: lambda) so line up
+// at equal cost. Throws std::invalid_argument for points < 1.
+struct EvaluationBand {
+    double evaluations = 0;
+    int runs = 0;
+    Band best_so_far;
+};
+std::vector<EvaluationBand> summarise_by_evaluations(const std::vector<std::vector<StatsRow>>& runs, bool median,
+                                                     int points = 200);
+
 struct PlotOptions {
     std::string gnuplot = "gnuplot";   // executable, looked up on PATH
     std::string title;                 // figure title; empty = none
@@ -136,6 +152,19 @@ struct StudyPlotOptions : PlotOptions {
 };
 void plot_study(const std::filesystem::path& study, const std::filesystem::path& out_file,
                 const StudyPlotOptions& options = {});
+
+// Several studies on one panel: best fitness so far against evaluations (see
+// summarise_by_evaluations), one colour per (study, configuration), e.g. HyperGP
+// against CMA-ES at the same budget. With `configs`, only those configurations
+// (by their config name), and every study must have each of them. Labels are
+// "STUDY: CONFIG", or "STUDY" when one configuration per study is shown.
+// Throws cic::InputError naming the study for a missing configuration or a
+// study without a done run (or any run with statistics, with include_unfinished).
+struct EvaluationPlotOptions : StudyPlotOptions {
+    std::vector<std::string> configs;  // empty = every configuration
+};
+void plot_studies_by_evaluations(const std::vector<std::filesystem::path>& studies,
+                                 const std::filesystem::path& out_file, const EvaluationPlotOptions& options = {});
 
 struct TracePlotOptions : PlotOptions {
     std::vector<std::string> joints;                                // empty = all joints
