@@ -121,19 +121,20 @@ int main(int argc, char** argv) {
     app.require_subcommand(0, 1);
     app.fallthrough();
 
-    add_settings_command(app, ctx);
-    add_simulate_command(app, ctx);
-    add_worker_command(app, ctx);
-    add_render_command(app, ctx);
-    add_plot_command(app, ctx);
-    add_compare_command(app, ctx);
-    add_trace_command(app, ctx);
-    add_sweep_command(app, ctx);
-    add_assess_command(app, ctx);
+    Command root(&app);
+    add_settings_command(root, ctx);
+    add_simulate_command(root, ctx);
+    add_worker_command(root, ctx);
+    add_render_command(root, ctx);
+    add_plot_command(root, ctx);
+    add_compare_command(root, ctx);
+    add_trace_command(root, ctx);
+    add_sweep_command(root, ctx);
+    add_assess_command(root, ctx);
 #ifdef CIC_HAVE_VIEWER
-    add_view_command(app, ctx);
+    add_view_command(root, ctx);
 #endif
-    add_docs_commands(app, ctx);   // last: `cic man` / `cic completion` document every subcommand
+    add_docs_commands(root, ctx);   // last: `cic man` / `cic completion` document every subcommand
 
     try {
         app.parse(argc, argv);

@@ -13,23 +13,23 @@
 
 namespace cic::app {
 
-void add_assess_command(CLI::App& app, CommandContext& ctx) {
+void add_assess_command(Command& app, CommandContext& ctx) {
     struct Options {
         std::vector<std::string> inputs;
         std::string out;
         double shaking_above = kShakingAboveHz;
     };
     auto opts = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand(
+    Command cmd = app.subcommand(
         "assess", "Replay the best individual of each run folder (or population file) and say whether it walks: "
                   "dominant command frequency, centre height, flipped, shaking (thesis 7.3.2.1). CSV, one row per input");
-    cmd->add_option("inputs", opts->inputs, "run folders or population XML files")->required();
-    cmd->add_option("--out", opts->out, "write the CSV here (atomically) instead of stdout");
-    cmd->add_option("--shaking-above", opts->shaking_above, "dominant command frequency, Hz, above which a gait is "
+    cmd.option("inputs", opts->inputs, "run folders or population XML files").required();
+    cmd.option("--out", opts->out, "write the CSV here (atomically) instead of stdout");
+    cmd.option("--shaking-above", opts->shaking_above, "dominant command frequency, Hz, above which a gait is "
                                                             "marked shaking")
-        ->capture_default_str()
-        ->check(CLI::PositiveNumber);
-    cmd->callback([opts, &ctx] {
+        .show_default()
+        .positive();
+    cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "assess", [&] {
             std::ostringstream csv;
             csv << "input,fitness,dominant_hz,mean_height,min_height,final_up,flipped,shaking\n";

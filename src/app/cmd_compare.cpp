@@ -364,28 +364,28 @@ int run_compare(const CompareOptions& o, const CommandContext& ctx) {
 
 } // namespace
 
-void add_compare_command(CLI::App& app, CommandContext& ctx) {
+void add_compare_command(Command& app, CommandContext& ctx) {
     auto opts = std::make_shared<CompareOptions>();
-    CLI::App* cmd = app.add_subcommand(
+    Command cmd = app.subcommand(
         "compare", "Compare the configurations of a study folder (from cic sweep): per configuration n, "
                    "mean +- sd, median and IQR of the final best fitness, time to a threshold; per pair "
                    "Mann-Whitney U, Vargha-Delaney A12 and Holm-adjusted p (docs/statistics.md). Markdown on stdout");
-    cmd->add_option("study", opts->study, "study folder (holds index.csv)")->required();
-    CLI::Option* threshold =
-        cmd->add_option("--threshold", opts->threshold,
+    cmd.option("study", opts->study, "study folder (holds index.csv)").required();
+    Option threshold =
+        cmd.option("--threshold", opts->threshold,
                         "report the generation and evaluations at which each run's best first reached X (best >= X)");
-    cmd->add_option("--metric", opts->metric,
+    cmd.option("--metric", opts->metric,
                     "index.csv column to summarise and test: final_best, best_ever (the best of every generation; the "
                     "fair measure when the last generation can lose the best), generations, evaluations, wall_seconds")
-        ->capture_default_str();
-    cmd->add_option("--out", opts->out, "also write PREFIX.md, PREFIX-configs.csv and PREFIX-pairs.csv");
-    cmd->add_option("--alpha", opts->alpha, "significance level for the Holm-adjusted p-values")
-        ->capture_default_str();
-    cmd->add_flag("--include-unfinished", opts->include_unfinished,
+        .show_default();
+    cmd.option("--out", opts->out, "also write PREFIX.md, PREFIX-configs.csv and PREFIX-pairs.csv");
+    cmd.option("--alpha", opts->alpha, "significance level for the Holm-adjusted p-values")
+        .show_default();
+    cmd.flag("--include-unfinished", opts->include_unfinished,
                   "also use runs whose status is not done (pending, running, interrupted, failed)");
-    cmd->callback([opts, threshold, &ctx] {
+    cmd.on_run([opts, threshold, &ctx] {
         run_guarded(ctx, "compare", [&] {
-            opts->has_threshold = threshold->count() > 0;
+            opts->has_threshold = threshold.count() > 0;
             return run_compare(*opts, ctx);
         });
     });

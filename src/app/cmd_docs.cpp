@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "cic/app/command_guard.hpp"
 #include "cic/app/commands.hpp"
 #include "cic/io/settings_table.hpp"
@@ -449,7 +451,8 @@ complete -F _cic cic
 
 } // namespace
 
-void add_docs_commands(CLI::App& app, CommandContext& ctx) {
+void add_docs_commands(Command& root, CommandContext& ctx) {
+    CLI::App& app = *root.app();   // introspection: every option and check of every command
     // group(""): hidden from --help; the build runs them to make cic.1 and the completion.
     app.add_subcommand("man", "Print the man page cic(1) as roff, made from the command line and settings table")
         ->group("")

@@ -11,7 +11,7 @@
 
 namespace cic::app {
 
-void add_plot_command(CLI::App& app, CommandContext& ctx) {
+void add_plot_command(Command& app, CommandContext& ctx) {
     struct Options {
         std::vector<std::string> runs;
         std::string trace;
@@ -27,33 +27,33 @@ void add_plot_command(CLI::App& app, CommandContext& ctx) {
         std::vector<std::string> configs;
     };
     auto opts = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand(
+    Command cmd = app.subcommand(
         "plot", "Plot best/mean fitness, depth and size per generation of run folders (folders named NAME-NNN "
                 "are grouped by NAME: mean curve, +-1 sd band) or of a study folder from cic sweep (one colour per "
                 "configuration), or best fitness so far against evaluations of several studies (--by-evaluations), or a "
                 "trace CSV with --trace");
-    cmd->add_option("runs", opts->runs,
+    cmd.option("runs", opts->runs,
                     "run folders (each holds stats.csv), or one study folder (holds index.csv), or with "
                     "--by-evaluations several study folders");
-    cmd->add_option("--trace", opts->trace, "plot this trace CSV (from cic trace) instead");
-    cmd->add_option("--out", opts->out, "output .svg or .png (default: plot.svg, or trace.svg with --trace)");
-    cmd->add_option("--title", opts->title, "figure title");
-    cmd->add_option("--joints", opts->joints, "with --trace: only these joints")->delimiter(',');
-    cmd->add_option("--from", opts->from, "with --trace: start time, s");
-    cmd->add_option("--to", opts->to, "with --trace: end time, s");
-    cmd->add_option("--width", opts->width, "pixels")->check(CLI::PositiveNumber);
-    cmd->add_option("--height", opts->height, "pixels")->check(CLI::PositiveNumber);
-    cmd->add_flag("--median", opts->median, "with a study: median curves with Q1..Q3 bands (default: mean, +-1 sd)");
-    cmd->add_flag("--include-unfinished", opts->include_unfinished,
+    cmd.option("--trace", opts->trace, "plot this trace CSV (from cic trace) instead");
+    cmd.option("--out", opts->out, "output .svg or .png (default: plot.svg, or trace.svg with --trace)");
+    cmd.option("--title", opts->title, "figure title");
+    cmd.option("--joints", opts->joints, "with --trace: only these joints").delimiter(',');
+    cmd.option("--from", opts->from, "with --trace: start time, s");
+    cmd.option("--to", opts->to, "with --trace: end time, s");
+    cmd.option("--width", opts->width, "pixels").positive();
+    cmd.option("--height", opts->height, "pixels").positive();
+    cmd.flag("--median", opts->median, "with a study: median curves with Q1..Q3 bands (default: mean, +-1 sd)");
+    cmd.flag("--include-unfinished", opts->include_unfinished,
                   "with a study: also runs whose status is not done (default: done runs only)");
-    cmd->add_flag("--by-evaluations", opts->by_evaluations,
+    cmd.flag("--by-evaluations", opts->by_evaluations,
                   "study folders on one panel: best fitness so far against evaluations used, one curve per "
                   "study and configuration (e.g. HyperGP against CMA-ES at the same budget)");
-    cmd->add_option("--config", opts->configs,
+    cmd.option("--config", opts->configs,
                     "with --by-evaluations: only these configurations (config names of index.csv); every study "
                     "must have them")
-        ->delimiter(',');
-    cmd->callback([opts, &ctx] {
+        .delimiter(',');
+    cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "plot", [&] {
             if (opts->trace.empty() == opts->runs.empty())
                 throw InputError("give either run folders or --trace FILE.csv");

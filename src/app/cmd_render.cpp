@@ -11,21 +11,20 @@
 
 namespace cic::app {
 
-void add_render_command(CLI::App& app, CommandContext& ctx) {
+void add_render_command(Command& app, CommandContext& ctx) {
     struct Options {
         ReplaySource source;
         std::string out;
         double fps = 25.0;
     };
     auto opts = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand(
+    Command cmd = app.subcommand(
         "render", "Write POV-Ray scenes (one per frame) of an individual's replay; "
                   "scripts/render-video.sh DIR turns them into an MP4");
-    add_replay_options(*cmd, opts->source);
-    cmd->add_option("--out", opts->out, "folder for frame_NNNNN.pov and the shared includes")->required();
-    cmd->add_option("--fps", opts->fps, "frames per second of the video")->capture_default_str()->check(
-        CLI::PositiveNumber);
-    cmd->callback([opts, &ctx] {
+    add_replay_options(cmd, opts->source);
+    cmd.option("--out", opts->out, "folder for frame_NNNNN.pov and the shared includes").required();
+    cmd.option("--fps", opts->fps, "frames per second of the video").show_default().positive();
+    cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "render", [&] {
             const auto items = load_replay(opts->source, 1, opts->fps, false);
             const ReplayItem& item = items.at(0);

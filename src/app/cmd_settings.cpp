@@ -29,7 +29,7 @@ std::string key_table() {
 
 } // namespace
 
-void add_settings_command(CLI::App& app, CommandContext& ctx) {
+void add_settings_command(Command& app, CommandContext& ctx) {
     struct Options {
         std::string file;
         std::vector<std::string> sets;
@@ -37,16 +37,16 @@ void add_settings_command(CLI::App& app, CommandContext& ctx) {
         bool defaults = false, schema = false, keys = false;
     };
     auto opts = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand(
+    Command cmd = app.subcommand(
         "settings", "Print the documented default settings, the XSD schema or the key table; with FILE, "
                     "check it and print its effective settings (every key, defaults filled in)");
-    cmd->add_option("file", opts->file, "settings file to check");
-    cmd->add_option("--set", opts->sets, "override Section.key=value (repeatable)");
-    cmd->add_flag("--defaults", opts->defaults, "print a complete settings file with every default, documented");
-    cmd->add_flag("--schema", opts->schema, "print the XSD schema (settings/cic-settings.xsd)");
-    cmd->add_flag("--keys", opts->keys, "print every key with default, allowed values and meaning (Markdown)");
-    cmd->add_option("--xsd", opts->validate_xsd, "also validate FILE against this XSD with libxml2");
-    cmd->callback([opts, &ctx] {
+    cmd.option("file", opts->file, "settings file to check");
+    cmd.option("--set", opts->sets, "override Section.key=value (repeatable)");
+    cmd.flag("--defaults", opts->defaults, "print a complete settings file with every default, documented");
+    cmd.flag("--schema", opts->schema, "print the XSD schema (settings/cic-settings.xsd)");
+    cmd.flag("--keys", opts->keys, "print every key with default, allowed values and meaning (Markdown)");
+    cmd.option("--xsd", opts->validate_xsd, "also validate FILE against this XSD with libxml2");
+    cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "settings", [&] {
             if (opts->defaults + opts->schema + opts->keys + !opts->file.empty() != 1)
                 throw InputError("give exactly one of FILE, --defaults, --schema, --keys");

@@ -83,18 +83,18 @@ int simulate(const SimulateOptions& o) {
 
 } // namespace
 
-void add_simulate_command(CLI::App& app, CommandContext& ctx) {
+void add_simulate_command(Command& app, CommandContext& ctx) {
     auto o = std::make_shared<SimulateOptions>();
-    CLI::App* cmd = app.add_subcommand("simulate", "Run one evaluation of a robot under a baseline controller");
-    cmd->add_option("--robot", o->robot, "R0, R1, R2 or a robot file (default: the settings' robot)");
-    cmd->add_flag("--middle-legs", o->middle_legs, "With R0/R1/R2: add the middle pair of legs");
-    cmd->add_option("--controller", o->controller,
+    Command cmd = app.subcommand("simulate", "Run one evaluation of a robot under a baseline controller");
+    cmd.option("--robot", o->robot, "R0, R1, R2 or a robot file (default: the settings' robot)");
+    cmd.flag("--middle-legs", o->middle_legs, "With R0/R1/R2: add the middle pair of legs");
+    cmd.option("--controller", o->controller,
                     "constant | sine | sine:AMPLITUDE,FREQUENCY[,PHASE_STEP] | constant:ANGLE")
-        ->capture_default_str();
-    cmd->add_option("--settings", o->settings, "Settings file (its Simulator section is used)");
-    cmd->add_option("--set", o->overrides, "Override Section.key=value (repeatable), e.g. Simulator.sample_step=0.025");
-    cmd->add_option("--seconds", o->seconds, "Simulated time (default: the settings' sample_to)");
-    cmd->callback([o, &ctx] { ctx.exit_code = simulate(*o); });
+        .show_default();
+    cmd.option("--settings", o->settings, "Settings file (its Simulator section is used)");
+    cmd.option("--set", o->overrides, "Override Section.key=value (repeatable), e.g. Simulator.sample_step=0.025");
+    cmd.option("--seconds", o->seconds, "Simulated time (default: the settings' sample_to)");
+    cmd.on_run([o, &ctx] { ctx.exit_code = simulate(*o); });
 }
 
 } // namespace cic::app

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <memory>
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -205,25 +206,25 @@ int run_locally(const SweepOptions& o, const SweepPlan& plan, int workers, bool 
 
 } // namespace
 
-void add_sweep_command(CLI::App& app, CommandContext& ctx) {
+void add_sweep_command(Command& app, CommandContext& ctx) {
     auto o = std::make_shared<SweepOptions>();
-    CLI::App* cmd = app.add_subcommand(
+    Command cmd = app.subcommand(
         "sweep", "Run a study: every (configuration, seed) of a sweep file in its own run folder, N at a time, "
                  "resumable; or write a Slurm job array for it");
-    cmd->add_option("file", o->file, "sweep file (docs/cluster.md)")->required();
-    cmd->add_option("--jobs,-j", o->jobs, "runs at the same time (with --slurm: array tasks at once)")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 4096));
-    cmd->add_option("--workers", o->workers, "worker processes per run (default: cores / jobs, at least 1)")
-        ->check(CLI::Range(0, 4096));
-    cmd->add_option("--output", o->output, "study folder (default: the sweep file's <output>, else runs/NAME)");
-    cmd->add_flag("--dry-run", o->dry_run, "list every run with its status and command; run nothing");
-    cmd->add_flag("--index-only", o->index_only,
+    cmd.option("file", o->file, "sweep file (docs/cluster.md)").required();
+    cmd.option("--jobs,-j", o->jobs, "runs at the same time (with --slurm: array tasks at once)")
+        .show_default()
+        .range(1, 4096);
+    cmd.option("--workers", o->workers, "worker processes per run (default: cores / jobs, at least 1)")
+        .range(0, 4096);
+    cmd.option("--output", o->output, "study folder (default: the sweep file's <output>, else runs/NAME)");
+    cmd.flag("--dry-run", o->dry_run, "list every run with its status and command; run nothing");
+    cmd.flag("--index-only", o->index_only,
                   "rewrite STUDY/index.csv from the run folders (and link runs another study stored); run nothing");
-    cmd->add_flag("--slurm", o->slurm, "write STUDY/slurm.sh, a job array with one task per run");
-    cmd->add_option("--task", o->task, "run only task I (0-based), resumably: what each array task runs")
-        ->check(CLI::Range(0L, 100000000L));
-    cmd->callback([o, &ctx] {
+    cmd.flag("--slurm", o->slurm, "write STUDY/slurm.sh, a job array with one task per run");
+    cmd.option("--task", o->task, "run only task I (0-based), resumably: what each array task runs")
+        .range(0L, 100000000L);
+    cmd.on_run([o, &ctx] {
         run_guarded(ctx, "sweep", [&] {
             const SweepPlan plan = read_sweep_file(o->file, o->output);
             const int workers = o->workers > 0 ? o->workers : std::max(1, hardware_threads() / o->jobs);

@@ -12,20 +12,20 @@
 
 namespace cic::app {
 
-void add_trace_command(CLI::App& app, CommandContext& ctx) {
+void add_trace_command(Command& app, CommandContext& ctx) {
     struct Options {
         ReplaySource source;
         std::string out = "trace.csv";
         std::string plot;
     };
     auto opts = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand(
+    Command cmd = app.subcommand(
         "trace", "Write the network trace of an individual's replay as CSV "
                  "(t, out_<joint>, cmd_<joint>, angle_<joint>, cx, cy, cz)");
-    add_replay_options(*cmd, opts->source);
-    cmd->add_option("--out", opts->out, "CSV file to write")->capture_default_str();
-    cmd->add_option("--plot", opts->plot, "also draw it into this .svg or .png (like cic plot --trace)");
-    cmd->callback([opts, &ctx] {
+    add_replay_options(cmd, opts->source);
+    cmd.option("--out", opts->out, "CSV file to write").show_default();
+    cmd.option("--plot", opts->plot, "also draw it into this .svg or .png (like cic plot --trace)");
+    cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "trace", [&] {
             const auto items = load_replay(opts->source, 1, 0.0, true);
             const ReplayItem& item = items.at(0);

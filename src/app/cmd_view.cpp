@@ -54,7 +54,7 @@ viz::ViewEntry to_entry(ReplayItem& item) {
 
 } // namespace
 
-void add_view_command(CLI::App& app, CommandContext& ctx) {
+void add_view_command(Command& app, CommandContext& ctx) {
     struct Options {
         ReplaySource source;
         int count = 5;
@@ -66,24 +66,22 @@ void add_view_command(CLI::App& app, CommandContext& ctx) {
         bool no_shadows = false;
     };
     auto opts = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand(
+    Command cmd = app.subcommand(
         "view", "Replay individuals in a 3D window (space pause, r restart, +/- speed, n/p next/previous), "
                 "or render one instant offscreen with --screenshot");
-    add_replay_options(*cmd, opts->source);
-    cmd->add_option("--count", opts->count, "with --individual best: how many of the best to switch between")
-        ->capture_default_str()->check(CLI::PositiveNumber);
-    cmd->add_option("--screenshot", opts->screenshot, "write a PNG without opening a window (uses xvfb-run when "
+    add_replay_options(cmd, opts->source);
+    cmd.option("--count", opts->count, "with --individual best: how many of the best to switch between")
+        .show_default().positive();
+    cmd.option("--screenshot", opts->screenshot, "write a PNG without opening a window (uses xvfb-run when "
                                                       "there is no X display)");
-    cmd->add_option("--at", opts->at, "with --screenshot: seconds into the replay")->capture_default_str()->check(
-        CLI::NonNegativeNumber);
-    cmd->add_option("--width", opts->width, "pixels (default 1024, or 800 for a screenshot)")->check(CLI::PositiveNumber);
-    cmd->add_option("--height", opts->height, "pixels (default 768, or 600 for a screenshot)")->check(CLI::PositiveNumber);
-    cmd->add_option("--speed", opts->speed, "playback speed, 1 = real time (1/16 to 16)")->capture_default_str()->check(
-        CLI::Range(1.0 / 16, 16.0));
-    cmd->add_option("--fps", opts->fps, "recorded frames per second (interpolated in between)")
-        ->capture_default_str()->check(CLI::PositiveNumber);
-    cmd->add_flag("--no-shadows", opts->no_shadows, "draw without shadow mapping");
-    cmd->callback([opts, &ctx] {
+    cmd.option("--at", opts->at, "with --screenshot: seconds into the replay").show_default().non_negative();
+    cmd.option("--width", opts->width, "pixels (default 1024, or 800 for a screenshot)").positive();
+    cmd.option("--height", opts->height, "pixels (default 768, or 600 for a screenshot)").positive();
+    cmd.option("--speed", opts->speed, "playback speed, 1 = real time (1/16 to 16)").show_default().range(1.0 / 16, 16.0);
+    cmd.option("--fps", opts->fps, "recorded frames per second (interpolated in between)")
+        .show_default().positive();
+    cmd.flag("--no-shadows", opts->no_shadows, "draw without shadow mapping");
+    cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "view", [&] {
             if (!opts->screenshot.empty()) reexec_under_xvfb();
             const int count = opts->screenshot.empty() ? opts->count : 1;

@@ -2,18 +2,20 @@
 // ProcessPool in the parent process (framed, see core/process_pool.hpp).
 #include <unistd.h>
 
+#include <memory>
+
 #include "cic/app/commands.hpp"
 #include "cic/app/worker_jobs.hpp"
 #include "cic/core/process_pool.hpp"
 
 namespace cic::app {
 
-void add_worker_command(CLI::App& app, CommandContext& ctx) {
+void add_worker_command(Command& app, CommandContext& ctx) {
     auto context = std::make_shared<WorkerContext>();
-    CLI::App* cmd = app.add_subcommand("worker", "Serve evaluation jobs on stdin/stdout (started by cic itself)");
-    cmd->add_option("--settings", context->settings_file, "Settings file of the run");
-    cmd->group("");   // internal: hidden from --help
-    cmd->callback([context, &ctx] {
+    Command cmd = app.subcommand("worker", "Serve evaluation jobs on stdin/stdout (started by cic itself)");
+    cmd.option("--settings", context->settings_file, "Settings file of the run");
+    cmd.hide();   // internal: hidden from --help
+    cmd.on_run([context, &ctx] {
         // Frames go to the original stdout; anything else printed to stdout
         // (by a library, say) goes to stderr instead of corrupting the stream.
         const int out = ::dup(1);

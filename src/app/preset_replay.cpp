@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <filesystem>
+#include <memory>
 #include <cmath>
 #include <numbers>
 
@@ -122,16 +123,16 @@ std::vector<std::string> joint_names_of(const ReplayItem& item) {
     return out;
 }
 
-void add_replay_options(CLI::App& command, ReplaySource& source) {
-    command.add_option("input", source.input, "run folder or population XML file to replay");
-    command.add_option("--individual", source.individual, "best, or an individual's id")->capture_default_str();
-    command.add_option("--robot", source.robot, "replay a robot instead: R0, R1, R2 or a robot file");
-    command.add_flag("--middle-legs", source.middle_legs, "with --robot: the 6-legged variant");
-    command.add_option("--controller", source.controller,
+void add_replay_options(Command& command, ReplaySource& source) {
+    command.option("input", source.input, "run folder or population XML file to replay");
+    command.option("--individual", source.individual, "best, or an individual's id").show_default();
+    command.option("--robot", source.robot, "replay a robot instead: R0, R1, R2 or a robot file");
+    command.flag("--middle-legs", source.middle_legs, "with --robot: the 6-legged variant");
+    command.option("--controller", source.controller,
                        "with --robot: sine:AMPLITUDE,FREQUENCY[,PHASE_STEP] or constant:ANGLE")
-        ->capture_default_str();
-    command.add_option("--seconds", source.seconds, "with --robot: simulated seconds (default: the simulator's)");
-    command.add_option("--set", source.overrides,
+        .show_default();
+    command.option("--seconds", source.seconds, "with --robot: simulated seconds (default: the simulator's)");
+    command.option("--set", source.overrides,
                        "with --robot: a simulator setting, Simulator.key=value (repeatable), e.g. "
                        "Simulator.selfCollision=0");
 }

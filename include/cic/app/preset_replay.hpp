@@ -7,8 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
+#include "cic/app/command_line.hpp"
 #include "cic/app/replay.hpp"
 #include "cic/sim/config.hpp"
 #include "cic/sim/controller.hpp"
@@ -50,7 +49,7 @@ struct ReplaySource {
 };
 
 // Adds the positional input and --individual, --robot, --middle-legs, --controller, --seconds, --set.
-void add_replay_options(CLI::App& command, ReplaySource& source);
+void add_replay_options(Command& command, ReplaySource& source);
 
 // Resolves the options (throws cic::InputError when neither or both sources are given).
 std::vector<ReplayItem> load_replay(const ReplaySource& source, int count, double fps, bool trace);
