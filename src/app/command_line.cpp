@@ -3,7 +3,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <cstdint>
 #include <vector>
 
 namespace cic::app {
@@ -55,7 +54,6 @@ Option Command::option(const std::string& names, T& value, const std::string& de
 template Option Command::option<int>(const std::string&, int&, const std::string&);
 template Option Command::option<long>(const std::string&, long&, const std::string&);
 template Option Command::option<double>(const std::string&, double&, const std::string&);
-template Option Command::option<std::uint64_t>(const std::string&, std::uint64_t&, const std::string&);
 template Option Command::option<std::string>(const std::string&, std::string&, const std::string&);
 template Option Command::option<std::vector<std::string>>(const std::string&, std::vector<std::string>&,
                                                           const std::string&);

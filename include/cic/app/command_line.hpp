@@ -37,7 +37,9 @@ public:
     explicit Command(CLI::App* app) : app_(app) {}
     Command subcommand(const std::string& name, const std::string& description);
     // A positional when `names` has no leading dash. T: int, long, double,
-    // std::uint64_t, std::string or std::vector<std::string> (repeatable).
+    // std::string or std::vector<std::string> (repeatable). No unsigned types:
+    // CLI11 2.1 wraps "-1" round to the largest value instead of refusing it, so
+    // seeds travel as text and the settings table checks them.
     template <class T>
     Option option(const std::string& names, T& value, const std::string& description);
     Option flag(const std::string& names, bool& value, const std::string& description);
