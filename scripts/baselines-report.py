@@ -75,13 +75,16 @@ def quartiles(v):
     return q[0], q[2]
 
 
-sine = {}
+sine, sine_spec = {}, {}
 if (RESULTS / "sine-grid.csv").exists():
-    sine = {r["robot"]: float(r["fitness"]) for r in csv.DictReader(open(RESULTS / "sine-grid.csv"))}
+    for r in csv.DictReader(open(RESULTS / "sine-grid.csv")):
+        sine[r["robot"]] = float(r["fitness"])
+        sine_spec[r["robot"]] = r["controller"]
 
 print("# HyperGP against parameter-optimised gaits: the tables\n")
 print("Made by `scripts/baselines-report.py` from the studies in "
       f"`{STUDIES}`; metric best_ever (the best fitness found within the budget).\n")
+winners = []   # (budget, robot, text)
 for budget in (2500, 15000):
     robots = ROBOTS if budget == 2500 else ["R1"]
     print(f"## {budget:,} evaluations\n")
@@ -89,6 +92,7 @@ for budget in (2500, 15000):
     print("|---|---|---|---|---|---|")
     for robot in robots:
         samples = {}
+        ranked = []   # (median, label, shakes) of every method with runs
         for b, label, study, _ in METHODS:
             if b != budget:
                 continue
@@ -108,11 +112,17 @@ for budget in (2500, 15000):
             walk = (f"{float(g['dominant_hz']):.1f}, {float(g['mean_height']):.2f}, "
                     f"{'yes' if g['flipped'] == '1' else 'no'}, {'**shaking**' if g['shaking'] == '1' else 'no'}"
                     if g else "not assessed")
+            ranked.append((st.median(fitness), label, g is not None and g["shaking"] == "1", g is None))
             print(f"| {robot} | {label} | {len(fitness)} | {st.median(fitness):.2f} | "
                   f"{q3 - q1:.2f} [{q1:.2f}, {q3:.2f}] | {walk} |")
         if budget == 2500:
-            print(f"| {robot} | sine grid (deterministic) | 1 | "
-                  f"{sine[robot]:.2f} | | |" if robot in sine else f"| {robot} | sine grid | not run | | | |")
+            if robot in sine:
+                # The grid's frequencies are 0.25..2 Hz: a sine gait cannot shake.
+                print(f"| {robot} | sine grid (deterministic) | 1 | {sine[robot]:.2f} | | "
+                      f"{sine_spec.get(robot, '')} |")
+                ranked.append((sine[robot], "sine grid", False, False))
+            else:
+                print(f"| {robot} | sine grid | not run | | | |")
         hypergp = samples.get("HyperGP, best configuration") or samples.get("HyperGP, Table B.1")
         which = "best configuration" if "HyperGP, best configuration" in samples else "Table B.1"
         cma = samples.get("CMA-ES gait")
@@ -120,4 +130,39 @@ for budget in (2500, 15000):
             p = mann_whitney_p(hypergp, cma)
             ptext = f"p = {p:.3g}" if p is not None else "p: scipy missing"
             print(f"| {robot} | **HyperGP ({which}) vs CMA-ES** | | | | {ptext}, A12 = {a12(hypergp, cma):.2f} |")
+        # The cell's winner: the highest median whose best gait walks (thesis 7.3.2.1).
+        ranked.sort(reverse=True)
+        walking = [(m, label, unassessed) for m, label, shakes, unassessed in ranked if not shakes]
+        if walking:
+            m, label, unassessed = walking[0]
+            text = f"{label} (median {m:.2f})" + (" — its best gait not assessed yet" if unassessed else "")
+            above = [f"{l} ({x:.2f})" for x, l, shakes, _ in ranked if shakes and x > m]
+            if above:
+                text += f"; passed over for shaking: {', '.join(above)}"
+            winners.append((budget, robot, text))
+        elif ranked:
+            winners.append((budget, robot, "none: every method's best gait shakes"))
     print()
+
+print("## Winner of each cell\n")
+print("The highest median whose best gait walks; a method whose best gait moves by "
+      "shaking (dominant command frequency above 4 Hz, thesis 7.3.2.1) does not win.\n")
+print("| budget | robot | winner |")
+print("|---|---|---|")
+for budget, robot, text in winners:
+    print(f"| {budget:,} | {robot} | {text} |")
+print()
+
+print("## Compute\n")
+print("| study | runs done | run time, sum (h) |")
+print("|---|---|---|")
+total = 0.0
+for study in sorted({m[2] for m in METHODS} | {p.parent.name for p in STUDIES.glob("search-*/index.csv")}):
+    index = STUDIES / study / "index.csv"
+    if not index.exists():
+        continue
+    rows = [r for r in csv.DictReader(open(index)) if r["status"] == "done"]
+    hours = sum(float(r["wall_seconds"] or 0) for r in rows) / 3600
+    total += hours
+    print(f"| {study} | {len(rows)} | {hours:.2f} |")
+print(f"| all (a run shared through the store counts in each study that lists it) | | {total:.2f} |")
