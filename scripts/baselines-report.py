@@ -10,8 +10,10 @@ and budget: each method's runs (n), median and IQR of best_ever (the best
 fitness found within the budget), Mann-Whitney U (two-sided) and A12 between
 HyperGP (its best configuration where that study exists, else Table B.1) and
 CMA-ES, and whether each method's best gait walks (dominant command frequency,
-centre height, flipped, shaking; `cic assess` replays the best individual of
-the last population of the run with the highest best_ever). A shaking gait does
+centre height, flipped, shaking; `cic assess` replays, of the run with the
+highest best_ever, the individual that reached it: baselines.sh assesses the
+saved population of the first generation at that fitness, since a HyperGP run
+without elitism may have lost it by its last generation). A shaking gait does
 not win its cell (thesis 7.3.2.1). Statistics follow docs/statistics.md: exact U when scipy is present,
 A12 as the probability that a HyperGP run beats a CMA-ES run (ties half).
 Methods whose study has not run are listed as "not run".
@@ -53,9 +55,15 @@ def runs(study):
     return out
 
 
+def run_of(input_path):
+    """The run folder of an assessed input: the folder itself, or RUN/populations/gen-NNNN.xml."""
+    p = pathlib.Path(input_path)
+    return (p.parent.parent if p.suffix == ".xml" and p.parent.name == "populations" else p).resolve()
+
+
 def gaits(study):
     f = RESULTS / f"{study}-gaits.csv"
-    return {pathlib.Path(r["input"]).resolve(): r for r in csv.DictReader(open(f))} if f.exists() else {}
+    return {run_of(r["input"]): r for r in csv.DictReader(open(f))} if f.exists() else {}
 
 
 def a12(x, y):

@@ -50,9 +50,22 @@ summarise() {   # STUDY
   "$CIC" plot "$output/$1" --title "$1 (median, Q1..Q3)" --median --out "$HERE/results/$1.svg"
   # Walking or shaking (thesis 7.3.2.1): each finished run's best, replayed.
   mapfile -t done_runs < <(awk -F, -v s="$output/$1" 'NR > 1 && $0 ~ /,done,/ {print s "/" $1}' "$output/$1/index.csv")
-  if [ ${#done_runs[@]} -gt 0 ]; then
-    "$CIC" --quiet assess "${done_runs[@]}" --out "$HERE/results/$1-gaits.csv"
+  local inputs=() run
+  for run in "${done_runs[@]}"; do inputs+=("$(best_ever_input "$run")"); done
+  if [ ${#inputs[@]} -gt 0 ]; then
+    "$CIC" --quiet assess "${inputs[@]}" --out "$HERE/results/$1-gaits.csv"
   fi
+}
+# What to replay for a run's best_ever: a HyperGP run without elitism may have
+# lost it by its last generation, so the saved population of the first
+# generation that reached it (RUN/populations/gen-NNNN.xml); a gait run keeps
+# its best in the run folder's population file.
+best_ever_input() {   # RUN
+  local g
+  g=$(awk -F, 'NR > 1 && (best == "" || $2 + 0 > best + 0) {best = $2; g = $1} END {print g}' "$1/stats.csv")
+  local file
+  file=$(printf '%s/populations/gen-%04d.xml' "$1" "$g")
+  if [ -n "$g" ] && [ -f "$file" ]; then echo "$file"; else echo "$1"; fi
 }
 study() {   # STUDY
   if [ ! -f "$HERE/$1.xml" ]; then
