@@ -2,7 +2,9 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <limits>
 #include <memory>
+#include <type_traits>
 
 #include "cic/app/command_guard.hpp"
 #include "cic/app/commands.hpp"
@@ -10,23 +12,41 @@
 #include "cic/core/error.hpp"
 
 namespace cic::app {
+namespace {
+
+struct PlotCommandOptions {
+    std::vector<std::string> runs;
+    std::string trace;
+    std::string out;
+    std::string title;
+    std::vector<std::string> joints;
+    double from = -std::numeric_limits<double>::infinity();
+    double to = std::numeric_limits<double>::infinity();
+    int width = 0, height = 0;
+    bool median = false;
+    bool include_unfinished = false;
+    bool by_evaluations = false;
+    std::vector<std::string> configs;
+};
+
+// The fields every kind of plot shares; P is PlotOptions or one derived from it.
+template <class P>
+P plot_options(const PlotCommandOptions& o) {
+    P plot;
+    plot.title = o.title;
+    plot.width = o.width;
+    plot.height = o.height;
+    if constexpr (std::is_base_of_v<StudyPlotOptions, P>) {
+        plot.median = o.median;
+        plot.include_unfinished = o.include_unfinished;
+    }
+    return plot;
+}
+
+} // namespace
 
 void add_plot_command(Command& app, CommandContext& ctx) {
-    struct Options {
-        std::vector<std::string> runs;
-        std::string trace;
-        std::string out;
-        std::string title;
-        std::vector<std::string> joints;
-        double from = -std::numeric_limits<double>::infinity();
-        double to = std::numeric_limits<double>::infinity();
-        int width = 0, height = 0;
-        bool median = false;
-        bool include_unfinished = false;
-        bool by_evaluations = false;
-        std::vector<std::string> configs;
-    };
-    auto opts = std::make_shared<Options>();
+    auto opts = std::make_shared<PlotCommandOptions>();
     Command cmd = app.subcommand(
         "plot", "Plot best/mean fitness, depth and size per generation of run folders (folders named NAME-NNN "
                 "are grouped by NAME: mean curve, +-1 sd band) or of a study folder from cic sweep (one colour per "
@@ -60,10 +80,7 @@ void add_plot_command(Command& app, CommandContext& ctx) {
             if (opts->by_evaluations && !opts->trace.empty())
                 throw InputError("--by-evaluations plots study folders, not a trace");
             if (!opts->trace.empty()) {
-                TracePlotOptions plot;
-                plot.title = opts->title;
-                plot.width = opts->width;
-                plot.height = opts->height;
+                auto plot = plot_options<TracePlotOptions>(*opts);
                 plot.joints = opts->joints;
                 plot.from = opts->from;
                 plot.to = opts->to;
@@ -82,12 +99,7 @@ void add_plot_command(Command& app, CommandContext& ctx) {
                                          dir);
                     studies.emplace_back(dir);
                 }
-                EvaluationPlotOptions plot;
-                plot.title = opts->title;
-                plot.width = opts->width;
-                plot.height = opts->height;
-                plot.median = opts->median;
-                plot.include_unfinished = opts->include_unfinished;
+                auto plot = plot_options<EvaluationPlotOptions>(*opts);
                 plot.configs = opts->configs;
                 const std::string out = opts->out.empty() ? "plot.svg" : opts->out;
                 plot_studies_by_evaluations(studies, out, plot);
@@ -103,12 +115,7 @@ void add_plot_command(Command& app, CommandContext& ctx) {
                 if (opts->median || opts->include_unfinished)
                     throw InputError("--median and --include-unfinished apply to a study folder (holds index.csv)");
             } else {
-                StudyPlotOptions plot;
-                plot.title = opts->title;
-                plot.width = opts->width;
-                plot.height = opts->height;
-                plot.median = opts->median;
-                plot.include_unfinished = opts->include_unfinished;
+                const auto plot = plot_options<StudyPlotOptions>(*opts);
                 const std::string out = opts->out.empty() ? "plot.svg" : opts->out;
                 plot_study(opts->runs[0], out, plot);
                 if (!ctx.quiet) {
@@ -119,10 +126,7 @@ void add_plot_command(Command& app, CommandContext& ctx) {
                 }
                 return 0;
             }
-            PlotOptions plot;
-            plot.title = opts->title;
-            plot.width = opts->width;
-            plot.height = opts->height;
+            const auto plot = plot_options<PlotOptions>(*opts);
             std::vector<std::filesystem::path> dirs(opts->runs.begin(), opts->runs.end());
             const std::string out = opts->out.empty() ? "plot.svg" : opts->out;
             plot_runs(dirs, out, plot);
