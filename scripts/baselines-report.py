@@ -48,11 +48,26 @@ def runs(study):
     if not index.exists():
         return None
     out = {}
-    for r in csv.DictReader(open(index)):
-        if r["status"] != "done" or not r.get("best_ever"):
-            continue
-        out.setdefault(r.get("variant") or r["config"], []).append((float(r["best_ever"]), STUDIES / study / r["run_dir"]))
+    with open(index, newline="") as f:
+        reader = csv.DictReader(f)
+        missing = {"run_dir", "config", "status", "best_ever"} - set(reader.fieldnames or [])
+        if missing:
+            fail(f"{index}:1: header has no column {', '.join(sorted(missing))} (an index.csv from cic sweep "
+                 "has them; rewrite it with `cic sweep FILE --index-only`)")
+        for r in reader:
+            if r["status"] != "done" or not r["best_ever"]:
+                continue
+            try:
+                fitness = float(r["best_ever"])
+            except ValueError:
+                fail(f"{index}:{reader.line_num}: column 'best_ever': '{r['best_ever']}' is not a number")
+            out.setdefault(r["config"], []).append((fitness, STUDIES / study / r["run_dir"]))
     return out
+
+
+def fail(message):
+    print(f"baselines-report.py: {message}", file=sys.stderr)
+    sys.exit(2)
 
 
 def run_of(input_path):
