@@ -11,6 +11,7 @@
 #             (6 legs): HyperGP at Table B.1 values, HyperGP's best configuration
 #             and CMA-ES gaits, seeds 1..10, and the deterministic sine grid
 #             (scripts/tune-sine.sh); curves of best fitness against evaluations
+#             and a screenshot strip of each robot's best gait from each method
 #   long      15,000 evaluations on R1: HyperGP's best configuration and CMA-ES
 #             gaits, seeds 1..10 (hypergp-best-15000.xml, gait-15000.xml)
 # Tables and plots go to experiments/baselines/results/.
@@ -76,6 +77,33 @@ study() {   # STUDY
   [ "$summary_only" = 1 ] || "$CIC" sweep "$HERE/$1.xml" --output "$output/$1" --jobs "$jobs" >&2
   summarise "$1"
 }
+# A screenshot strip of each robot's best gait from each method (results/strip-METHOD-ROBOT.png):
+# the run with the highest best_ever, replayed at the individual that reached it.
+strips() {   # STUDY...
+  local s r run
+  for s in "$@"; do
+    [ -f "$output/$s/index.csv" ] || continue
+    for r in R0 R1 R2 R1-6legs; do
+      run=$(awk -F, -v r="$r" 'NR == 1 {for (i = 1; i <= NF; i++) h[$i] = i; next}
+        $h["config"] == r && $h["status"] == "done" && $h["best_ever"] != "" &&
+        (best == "" || $h["best_ever"] + 0 > best + 0) {best = $h["best_ever"]; dir = $h["run_dir"]}
+        END {print dir}' "$output/$s/index.csv")
+      [ -n "$run" ] || continue
+      CIC="$CIC" "$ROOT/scripts/screenshot-strip.sh" "$(best_ever_input "$output/$s/$run")" \
+        "$HERE/results/strip-$s-$r.png" >&2
+    done
+  done
+}
+sine_strips() {   # from results/sine-grid.csv: robot,fitness,controller
+  local robot fitness controller legs
+  while IFS=, read -r robot fitness controller; do
+    [ "$robot" = robot ] && continue
+    legs=""
+    [ "$robot" = R1-6legs ] && legs="--middle-legs"
+    CIC="$CIC" "$ROOT/scripts/screenshot-strip.sh" - "$HERE/results/strip-sine-grid-$robot.png" \
+      --view "--robot ${robot%-6legs} $legs --controller $controller" >&2
+  done < "$HERE/results/sine-grid.csv"
+}
 # Best fitness so far against evaluations, per robot: every method of a budget that has runs.
 curves() {   # BUDGET ROBOT STUDY...
   local budget="$1" robot="$2" found=()
@@ -95,6 +123,7 @@ for stage in "${stages[@]}"; do
       study hypergp-best-2500
       study gait-2500
       for r in R0 R1 R2 R1-6legs; do curves 2500 "$r" hypergp-b1-2500 hypergp-best-2500 gait-2500; done
+      strips hypergp-b1-2500 hypergp-best-2500 gait-2500
       if [ "$summary_only" = 0 ]; then
         echo "== sine grid" >&2
         {
@@ -105,11 +134,13 @@ for stage in "${stages[@]}"; do
           CIC="$CIC" "$ROOT/scripts/tune-sine.sh" R1 --middle-legs | head -1 | awk '{print "R1-6legs," $1 "," $2}'
         } > "$HERE/results/sine-grid.csv"
       fi
+      [ -f "$HERE/results/sine-grid.csv" ] && sine_strips
       ;;
     long)
       study hypergp-best-15000
       study gait-15000
       curves 15000 R1 hypergp-best-15000 gait-15000
+      strips hypergp-best-15000 gait-15000
       ;;
   esac
 done

@@ -1,18 +1,21 @@
 #!/usr/bin/env bash
-# scripts/screenshot-strip.sh RUN OUT.png [--at "2 5 8 11 14"] [--width 320] [--height 240]
+# scripts/screenshot-strip.sh RUN OUT.png [--at "2 5 8 11 14"] [--width 320] [--height 240] [--view "ARGS"]
 # A strip of screenshots of a run's best individual (any input `cic view` takes:
 # a run folder or a population file), one frame per time in --at (seconds of
 # the replay), side by side in one PNG. Offscreen: `cic view --screenshot`
-# (xvfb-run when there is no display), then ffmpeg's tile filter.
+# (xvfb-run when there is no display), then ffmpeg's tile filter. --view adds
+# arguments for `cic view`; with RUN "-" they say what to replay instead, e.g.
+# - OUT.png --view "--robot R1 --controller sine:1.1,1,1.571".
 # Environment: CIC=path to the cic binary (default: build/cic, then cic on PATH).
 set -euo pipefail
-usage() { sed -n '2,7p' "$0" >&2; exit 2; }
+usage() { sed -n '2,9p' "$0" >&2; exit 2; }
 [ $# -ge 2 ] || usage
 RUN=$1 OUT=$2
 shift 2
-AT="2 5 8 11 14" W=320 H=240
+AT="2 5 8 11 14" W=320 H=240 VIEW=""
 while [ $# -gt 0 ]; do
   case "$1" in
+    --view) VIEW=$2; shift 2 ;;
     --at) AT=$2; shift 2 ;;
     --width) W=$2; shift 2 ;;
     --height) H=$2; shift 2 ;;
@@ -25,13 +28,20 @@ if [ -z "$CIC" ]; then
   if [ -x "$ROOT/build/cic" ]; then CIC="$ROOT/build/cic"; else CIC=$(command -v cic || true); fi
 fi
 [ -n "$CIC" ] && [ -x "$CIC" ] || { echo "screenshot-strip.sh: no cic binary (set CIC)" >&2; exit 2; }
-[ -e "$RUN" ] || { echo "screenshot-strip.sh: $RUN: no such run folder or file" >&2; exit 2; }
+INPUT=()
+if [ "$RUN" = - ]; then
+  [ -n "$VIEW" ] || { echo "screenshot-strip.sh: RUN '-' needs --view saying what to replay" >&2; exit 2; }
+else
+  [ -e "$RUN" ] || { echo "screenshot-strip.sh: $RUN: no such run folder or file" >&2; exit 2; }
+  INPUT=("$RUN")
+fi
+read -r -a VIEW_ARGS <<< "$VIEW"
 command -v ffmpeg >/dev/null || { echo "screenshot-strip.sh: ffmpeg is missing (apt-get install ffmpeg)" >&2; exit 2; }
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 n=0
 for t in $AT; do
-  "$CIC" view "$RUN" --screenshot "$TMP/$(printf '%02d' "$n").png" --at "$t" --width "$W" --height "$H" \
+  "$CIC" view "${INPUT[@]}" "${VIEW_ARGS[@]}" --screenshot "$TMP/$(printf '%02d' "$n").png" --at "$t" --width "$W" --height "$H" \
     >"$TMP/view.log" 2>&1 || { cat "$TMP/view.log" >&2; exit 1; }
   n=$((n + 1))
 done

@@ -121,6 +121,19 @@ TEST(Screenshot, StripScriptTilesFramesOfARunsBest) {
                             (dir / "nothing").string() + "' '" + (dir / "x.png").string() + "' 2>/dev/null";
     EXPECT_EQ(WEXITSTATUS(std::system(bad.c_str())), 2);
     EXPECT_FALSE(fs::exists(dir / "x.png"));
+    // RUN "-": what to replay comes from --view (a preset robot under a sine gait).
+    const fs::path sine = dir / "sine.png";
+    const std::string preset = cic::testing::without_leak_check() + "CIC='" + cic::testing::cic_binary() + "' '" +
+                               std::string(CIC_SOURCE_DIR) + "/scripts/screenshot-strip.sh' - '" + sine.string() +
+                               "' --at '0.5 1' --width 160 --height 120 --view '--robot R1 --controller "
+                               "sine:0.6,0.5' > '" + (dir / "sine.log").string() + "' 2>&1";
+    ASSERT_EQ(std::system(preset.c_str()), 0) << cic::testing::read_text(dir / "sine.log");
+    const osg::ref_ptr<osg::Image> strip = osgDB::readImageFile(sine.string());
+    ASSERT_TRUE(strip.valid());
+    EXPECT_EQ(strip->s(), 2 * 160);
+    const std::string no_view = "'" + std::string(CIC_SOURCE_DIR) + "/scripts/screenshot-strip.sh' - '" +
+                                (dir / "y.png").string() + "' 2>/dev/null";
+    EXPECT_EQ(WEXITSTATUS(std::system(no_view.c_str())), 2);
     fs::remove_all(dir);
 }
 
