@@ -100,9 +100,11 @@ def quartiles(v):
 
 sine, sine_spec = {}, {}
 if (RESULTS / "sine-grid.csv").exists():
-    for r in csv.DictReader(open(RESULTS / "sine-grid.csv")):
-        sine[r["robot"]] = float(r["fitness"])
-        sine_spec[r["robot"]] = r["controller"]
+    # robot,fitness,controller where the controller spec itself holds commas (sine:A,F,P)
+    for line in open(RESULTS / "sine-grid.csv").read().splitlines()[1:]:
+        robot, fitness, controller = line.split(",", 2)
+        sine[robot] = float(fitness)
+        sine_spec[robot] = controller
 
 print("# HyperGP against parameter-optimised gaits: the tables\n")
 print("Made by `scripts/baselines-report.py` from the studies in "

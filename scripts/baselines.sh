@@ -101,7 +101,7 @@ sine_strips() {   # from results/sine-grid.csv: robot,fitness,controller
     legs=""
     [ "$robot" = R1-6legs ] && legs="--middle-legs"
     CIC="$CIC" "$ROOT/scripts/screenshot-strip.sh" - "$HERE/results/strip-sine-grid-$robot.png" \
-      --view "--robot ${robot%-6legs} $legs --controller $controller" >&2
+      --view "--robot ${robot%-6legs} $legs --controller $controller" >&2 < /dev/null   # stdin is the CSV
   done < "$HERE/results/sine-grid.csv"
 }
 # Best fitness so far against evaluations, per robot: every method of a budget that has runs.
