@@ -130,6 +130,13 @@ std::vector<std::vector<StatsRow>> stats_of(const StudyIndex& index, const Study
     return runs;
 }
 
+InputError nothing_to_plot(const StudyIndex& index, bool include_unfinished) {
+    return InputError(include_unfinished ? "the study has no run with statistics yet"
+                                         : "the study has no done run to plot (--include-unfinished also plots "
+                                           "the others)",
+                      index.file.string());
+}
+
 std::string study_name(const fs::path& study) {
     fs::path p = study;
     if (!p.has_filename()) p = p.parent_path();
@@ -223,10 +230,7 @@ void plot_study(const fs::path& study, const fs::path& out_file, const StudyPlot
         series.push_back({group.config, runs.size(), quote(data.string())});
     }
     if (series.empty())
-        throw InputError(options.include_unfinished ? "the study has no run with statistics yet"
-                                                    : "the study has no done run to plot (--include-unfinished "
-                                                      "also plots the others)",
-                         index.file.string());
+        throw nothing_to_plot(index, options.include_unfinished);
 
     const std::string band_name = options.median ? "median, IQR band" : "mean, +-1 sd band";
     auto panel = [&](const std::string& title, const char* ylabel, int col) {
@@ -290,10 +294,7 @@ void plot_studies_by_evaluations(const std::vector<fs::path>& studies, const fs:
             series.push_back({one_per_study ? name : name + ": " + group->config, runs.size(), quote(data.string())});
         }
         if (series.size() == before)
-            throw InputError(options.include_unfinished ? "the study has no run with statistics yet"
-                                                        : "the study has no done run to plot (--include-unfinished "
-                                                          "also plots the others)",
-                             index.file.string());
+            throw nothing_to_plot(index, options.include_unfinished);
     }
 
     const int width = options.width > 0 ? options.width : 900;
