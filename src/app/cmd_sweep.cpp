@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <ctime>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -147,8 +148,15 @@ int run_locally(const SweepOptions& o, const SweepPlan& plan, int workers, bool 
                      plan.name.c_str(), todo.size(), total, o.jobs, workers, workers == 1 ? "" : "s",
                      plan.study.c_str());
     g_stop_signal = 0;
-    auto old_int = std::signal(SIGINT, on_sweep_signal);
-    auto old_term = std::signal(SIGTERM, on_sweep_signal);
+    // Without SA_RESTART (std::signal sets it), so that the wait below wakes up and a
+    // SIGTERM sent to the sweep alone reaches the running tasks now, not when the
+    // next of them happens to finish.
+    struct sigaction stop {}, old_int {}, old_term {};
+    stop.sa_handler = on_sweep_signal;
+    sigemptyset(&stop.sa_mask);
+    stop.sa_flags = 0;
+    ::sigaction(SIGINT, &stop, &old_int);
+    ::sigaction(SIGTERM, &stop, &old_term);
     std::map<pid_t, SweepTask> running;
     std::size_t next = 0;
     int rc = 0;
@@ -175,8 +183,15 @@ int run_locally(const SweepOptions& o, const SweepPlan& plan, int workers, bool 
             for (const auto& [pid, t] : running) ::kill(pid, SIGTERM);
             forwarded = true;
         }
+        // Polled, so that a signal landing between the check above and the wait
+        // cannot be missed; the sleep ends early when one arrives.
         int status = 0;
-        const pid_t pid = ::waitpid(-1, &status, 0);
+        const pid_t pid = ::waitpid(-1, &status, WNOHANG);
+        if (pid == 0) {
+            const timespec tick{0, 100'000'000};
+            ::nanosleep(&tick, nullptr);
+            continue;
+        }
         if (pid < 0) {
             if (errno == EINTR) continue;
             break;
@@ -195,8 +210,8 @@ int run_locally(const SweepOptions& o, const SweepPlan& plan, int workers, bool 
         if (code != 0 && code != 130 && code != 143 && rc == 0) rc = 1;
     }
     write_index(plan);
-    std::signal(SIGINT, old_int);
-    std::signal(SIGTERM, old_term);
+    ::sigaction(SIGINT, &old_int, nullptr);
+    ::sigaction(SIGTERM, &old_term, nullptr);
     if (g_stop_signal != 0) {
         std::fprintf(stderr, "cic sweep: interrupted; rerun the same command to resume\n");
         return g_stop_signal == SIGTERM ? 143 : 130;

@@ -287,6 +287,51 @@ TEST(Sweep, InterruptedStudyResumesToTheSameBytes) {
     fs::remove_all(dir);
 }
 
+// `kill PID` of the sweep alone (not its process group): the running tasks are told
+// at once and stop after their generation, instead of running on until one of them
+// ends by itself (the sweep's wait used to restart on the signal). The runs here
+// would take hours to finish, so "stopped" means "was told".
+TEST(Sweep, SignalToTheSweepAloneStopsItsRunningTasks) {
+    const auto dir = temp_dir("sweep-term");
+    write_text(dir / "s.xml", tiny_sweep_text("long", dir / "study", 6, 100000, 2.5, "<variant name=\"long\"/>", 2));
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        setpgid(0, 0);
+        freopen((dir / "sweep.log").c_str(), "w", stderr);
+        const std::string bin = cic_binary(), file = (dir / "s.xml").string();
+        execl(bin.c_str(), bin.c_str(), "sweep", file.c_str(), "--jobs", "2", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    const auto started = [&] {
+        for (const char* seed : {"s1", "s2"}) {
+            const fs::path stats = dir / "study" / "runs" / "long" / seed / "stats.csv";
+            if (!fs::exists(stats) || lines(read_text(stats)) < 2) return false;
+        }
+        return true;
+    };
+    for (int i = 0; i < 2400 && !started(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    kill(pid, SIGTERM);
+    int status = 0;
+    bool ended = false;
+    for (int i = 0; i < 2400 && !ended; ++i) {   // a minute at most; the runs alone would take hours
+        ended = waitpid(pid, &status, WNOHANG) == pid;
+        if (!ended) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    }
+    if (!ended) {
+        kill(-pid, SIGKILL);
+        waitpid(pid, &status, 0);
+    }
+    ASSERT_TRUE(ended) << "the sweep did not stop its tasks\n" << read_text(dir / "sweep.log");
+    ASSERT_TRUE(WIFEXITED(status)) << read_text(dir / "sweep.log");
+    EXPECT_EQ(WEXITSTATUS(status), 143) << read_text(dir / "sweep.log");
+    const std::string index = read_text(dir / "study" / "index.csv");
+    EXPECT_EQ(std::count(index.begin(), index.end(), '\n'), 3) << index;
+    EXPECT_EQ(index.find(",done,"), std::string::npos) << index;
+    EXPECT_NE(index.find(",interrupted,"), std::string::npos) << index;
+    fs::remove_all(dir);
+}
+
 TEST(Sweep, SlurmScriptRunsTheSameResumableCommandPerTask) {
     const auto dir = temp_dir("sweep-slurm");
     write_text(dir / "s.xml", sweep_text(dir / "study"));
