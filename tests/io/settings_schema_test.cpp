@@ -66,3 +66,22 @@ TEST(SettingsSchema, RejectsWhatTheReaderRejects) {
         EXPECT_THROW(read_settings_string(bad), cic::InputError) << bad;
     }
 }
+
+// Each robot's family of settings files (r0_*, r1_*, r2_* with the same suffix)
+// differs only in the robot: the same experiment on another body, nothing else.
+TEST(SettingsSchema, ShippedRobotVariantsDifferOnlyInTheRobot) {
+    int families = 0;
+    for (const auto& f : shipped_settings()) {
+        const std::string name = f.filename().string();
+        if (name.rfind("r1", 0) != 0 || name.find("gait") != std::string::npos) continue;
+        const std::string r1 = write_settings(read_settings(f));
+        for (const char* other : {"r0", "r2"}) {
+            const fs::path g = f.parent_path() / (other + name.substr(2));
+            ASSERT_TRUE(fs::exists(g)) << g << " is missing: every r1 settings file has an r0 and an r2 twin";
+            EXPECT_EQ(write_settings(load_settings(g, {"Simulator.robot_type=1"})), r1) << g << " against " << f;
+        }
+        ++families;
+    }
+    EXPECT_GE(families, 4);
+}
+
