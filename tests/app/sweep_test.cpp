@@ -4,6 +4,7 @@
 // tells where each run stands; --slurm writes a job array.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csignal>
 #include <chrono>
 #include <thread>
@@ -13,6 +14,7 @@
 
 #include "cic/app/plot.hpp"
 #include "cic/app/sweep.hpp"
+#include "cic/io/settings_io.hpp"
 #include "cic/io/xml.hpp"
 #include "support/run_helpers.hpp"
 
@@ -81,6 +83,23 @@ TEST(SweepFile, ShippedStudiesAreValid) {
     }
     EXPECT_GE(checked, 10);
     fs::remove_all(dir);
+}
+
+// settings/r1_best.xml is the configuration that won the search of
+// docs/baselines.md (stage B's "threshold0.05" variant of search-b.xml), nothing
+// more and nothing less: the shipped file and the study that chose it agree.
+TEST(SweepFile, ShippedBestSettingsAreTheSearchWinner) {
+    const fs::path root = CIC_SOURCE_DIR;
+    const app::SweepPlan plan = app::read_sweep_file(root / "experiments" / "baselines" / "search-b.xml");
+    const auto tasks = plan.tasks();
+    const auto winner = std::find_if(tasks.begin(), tasks.end(),
+                                     [&](const app::SweepTask& t) { return plan.configs[t.config].name == "threshold0.05"; });
+    ASSERT_NE(winner, tasks.end());
+    std::vector<std::string> overrides = plan.overrides(*winner);
+    ASSERT_EQ(overrides.back().rfind("Experiment.seed=", 0), 0u);
+    overrides.pop_back();   // the tuning seed; the shipped file keeps the base's
+    EXPECT_EQ(io::write_settings(io::load_settings(root / "settings" / "r1_best.xml", {})),
+              io::write_settings(io::load_settings(plan.base, overrides)));
 }
 
 TEST(SweepFile, MistakesAreRefusedWithFileAndLine) {
