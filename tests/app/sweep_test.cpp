@@ -34,6 +34,18 @@ std::string sweep_text(const fs::path& study, int generations = 3) {
 
 int lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
+// `cic sweep FILE --jobs 2` in a process group of its own (so a test can signal
+// the sweep alone or the whole group), its stderr to LOG; the pid, or -1.
+pid_t start_sweep(const fs::path& file, const fs::path& log) {
+    const pid_t pid = fork();
+    if (pid != 0) return pid;
+    setpgid(0, 0);
+    freopen(log.c_str(), "w", stderr);
+    const std::string bin = cic_binary();
+    execl(bin.c_str(), bin.c_str(), "sweep", file.c_str(), "--jobs", "2", static_cast<char*>(nullptr));
+    _exit(127);
+}
+
 TEST(SweepFile, PlansEveryConfigurationAndSeed) {
     const auto dir = temp_dir("sweep-plan");
     write_text(dir / "s.xml", sweep_text(dir / "study"));
@@ -269,15 +281,8 @@ TEST(Sweep, InterruptedStudyResumesToTheSameBytes) {
     ASSERT_EQ(run_command("sweep " + (dir / "ref.xml").string() + " --jobs 2", dir / "ref.log"), 0)
         << read_text(dir / "ref.log");
     write_text(dir / "s.xml", sweep_text(dir / "study", 6));
-    const pid_t pid = fork();
+    const pid_t pid = start_sweep(dir / "s.xml", dir / "first.log");
     ASSERT_GE(pid, 0);
-    if (pid == 0) {
-        setpgid(0, 0);
-        freopen((dir / "first.log").c_str(), "w", stderr);
-        const std::string bin = cic_binary(), file = (dir / "s.xml").string();
-        execl(bin.c_str(), bin.c_str(), "sweep", file.c_str(), "--jobs", "2", static_cast<char*>(nullptr));
-        _exit(127);
-    }
     // Let some runs finish and others start, then stop the whole study as Slurm would.
     for (int i = 0; i < 400; ++i) {
         std::this_thread::sleep_for(std::chrono::milliseconds(25));
@@ -313,15 +318,8 @@ TEST(Sweep, InterruptedStudyResumesToTheSameBytes) {
 TEST(Sweep, SignalToTheSweepAloneStopsItsRunningTasks) {
     const auto dir = temp_dir("sweep-term");
     write_text(dir / "s.xml", tiny_sweep_text("long", dir / "study", 6, 100000, 2.5, "<variant name=\"long\"/>", 2));
-    const pid_t pid = fork();
+    const pid_t pid = start_sweep(dir / "s.xml", dir / "sweep.log");
     ASSERT_GE(pid, 0);
-    if (pid == 0) {
-        setpgid(0, 0);
-        freopen((dir / "sweep.log").c_str(), "w", stderr);
-        const std::string bin = cic_binary(), file = (dir / "s.xml").string();
-        execl(bin.c_str(), bin.c_str(), "sweep", file.c_str(), "--jobs", "2", static_cast<char*>(nullptr));
-        _exit(127);
-    }
     const auto started = [&] {
         for (const char* seed : {"s1", "s2"}) {
             const fs::path stats = dir / "study" / "runs" / "long" / seed / "stats.csv";
