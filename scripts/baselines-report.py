@@ -36,6 +36,7 @@ METHODS = [
     (2500, "HyperGP, Table B.1", "hypergp-b1-2500", True),
     (2500, "HyperGP, best configuration", "hypergp-best-2500", True),
     (2500, "CMA-ES gait", "gait-2500", False),
+    (2500, "CMA-ES gait, clamped bounds", "gait-clamp-2500", False),
     (15000, "HyperGP, best configuration", "hypergp-best-15000", True),
     (15000, "CMA-ES gait", "gait-15000", False),
 ]

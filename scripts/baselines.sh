@@ -9,7 +9,8 @@
 #             101..105 (search-a.xml, search-clock.xml, then search-b.xml)
 #   compare   the comparison at 2,500 evaluations on R0, R1, R2 (4 legs) and R1
 #             (6 legs): HyperGP at Table B.1 values, HyperGP's best configuration
-#             and CMA-ES gaits, seeds 1..10, and the deterministic sine grid
+#             and CMA-ES gaits (gait-2500.xml; gait-clamp-2500.xml, the earlier
+#             run with clamped bounds), seeds 1..10, and the deterministic sine grid
 #             (scripts/tune-sine.sh, once: results/sine-grid.csv is kept; delete
 #             it to run the grid again); curves of best fitness against evaluations
 #             and a screenshot strip of each robot's best gait from each method
@@ -36,7 +37,7 @@ while [ $# -gt 0 ]; do
     --jobs) jobs="$2"; shift 2 ;;
     --output) output="$2"; shift 2 ;;
     --summary-only) summary_only=1; shift ;;
-    -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     search|compare|long) stages+=("$1"); shift ;;
     *) echo "baselines.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
   esac
@@ -123,8 +124,9 @@ for stage in "${stages[@]}"; do
       study hypergp-b1-2500
       study hypergp-best-2500
       study gait-2500
-      for r in R0 R1 R2 R1-6legs; do curves 2500 "$r" hypergp-b1-2500 hypergp-best-2500 gait-2500; done
-      strips hypergp-b1-2500 hypergp-best-2500 gait-2500
+      study gait-clamp-2500
+      for r in R0 R1 R2 R1-6legs; do curves 2500 "$r" hypergp-b1-2500 hypergp-best-2500 gait-2500 gait-clamp-2500; done
+      strips hypergp-b1-2500 hypergp-best-2500 gait-2500 gait-clamp-2500
       # Deterministic: run once; delete results/sine-grid.csv to run it again.
       if [ "$summary_only" = 0 ] && [ ! -s "$HERE/results/sine-grid.csv" ]; then
         echo "== sine grid" >&2

@@ -9,8 +9,10 @@
 
 namespace cic::gait {
 
-Encoding::Encoding(std::size_t joints_, bool second_harmonic_, double frequency_min_, double frequency_max_)
-    : joints(joints_), second_harmonic(second_harmonic_), frequency_min(frequency_min_), frequency_max(frequency_max_) {
+Encoding::Encoding(std::size_t joints_, bool second_harmonic_, double frequency_min_, double frequency_max_,
+                   Bounds bounds_)
+    : joints(joints_), second_harmonic(second_harmonic_), frequency_min(frequency_min_), frequency_max(frequency_max_),
+      bounds(bounds_) {
     if (joints == 0) throw std::invalid_argument("gait encoding: the robot has no joints");
     if (!(frequency_min > 0) || !(frequency_max >= frequency_min) || !std::isfinite(frequency_max))
         throw std::invalid_argument("gait encoding: need 0 < frequency_min <= frequency_max");
@@ -23,7 +25,12 @@ sim::GaitSpec Encoding::decode(std::span<const double> x) const {
     for (double v : x)
         if (!std::isfinite(v)) throw std::invalid_argument("gait encoding: a parameter is not finite");
     constexpr double pi = std::numbers::pi;
-    auto unit = [](double v) { return std::clamp(v, 0.0, 1.0); };
+    const bool reflect = bounds == Bounds::Reflect;
+    auto unit = [reflect](double v) {
+        if (!reflect) return std::clamp(v, 0.0, 1.0);
+        const double t = v - 2.0 * std::floor(v / 2.0);   // in [0, 2): the triangle wave's period
+        return t <= 1.0 ? t : 2.0 - t;
+    };
     auto angle = [&](double v) { return 2.0 * pi * (v - std::floor(v)); };
     sim::GaitSpec g;
     g.frequency = frequency_min + unit(x[0]) * (frequency_max - frequency_min);

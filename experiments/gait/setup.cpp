@@ -25,7 +25,8 @@ Setup Setup::from_settings(const io::Settings& s) {
     const std::size_t joints = model.robot.actuated().size();
     if (joints == 0) throw InputError("the robot " + model.robot.name + " has no joint to drive");
     Setup out{model.robot, model.sim,
-              Encoding(joints, s.gait.second_harmonic, s.gait.frequency_min, s.gait.frequency_max)};
+              Encoding(joints, s.gait.second_harmonic, s.gait.frequency_min, s.gait.frequency_max,
+                       s.gait.bounds == io::GaitBounds::Reflect ? Bounds::Reflect : Bounds::Clamp)};
     out.optimizer = optimizer_of(s.gait.optimizer);
     out.population = s.gait.population_size > 0
         ? s.gait.population_size

@@ -116,9 +116,11 @@ std::string to_string(TaskStatus s) {
 }
 
 TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
-    // Before its link is made, a stored task is read from the store (dry runs).
+    // A stored task is read from the store folder of its settings, whatever the link
+    // says: before the link is made (dry runs), or while it still names the run of
+    // settings the sweep no longer has.
     fs::path dir = plan.study / task.run_dir;
-    if (!plan.store.empty() && !fs::is_symlink(dir) && !fs::exists(dir)) dir = store_dir(plan, task);
+    if (!plan.store.empty() && (fs::is_symlink(dir) || !fs::exists(dir))) dir = store_dir(plan, task);
     TaskState st;
     if (!fs::exists(dir / "settings.xml")) {
         st.status = fs::exists(dir / "failed.txt") ? TaskStatus::Failed : TaskStatus::Pending;
@@ -208,11 +210,19 @@ void link_to_store(const SweepPlan& plan) {
     if (plan.store.empty()) return;
     for (const SweepTask& task : plan.tasks()) {
         const fs::path link = plan.study / task.run_dir;
-        if (fs::is_symlink(link) || fs::exists(link)) continue;
+        const bool linked = fs::is_symlink(link);
+        if (!linked && fs::exists(link)) continue;   // a run folder of its own (a study made before its store)
         const fs::path target = store_dir(plan, task);
         fs::create_directories(target);
+        if (linked && fs::exists(link) && fs::equivalent(link, target)) continue;
+        // New, or the sweep's settings changed since the link was made (an edited sweep
+        // or base file): point it at the run these settings make, never at the old one.
+        // Replaced by rename, atomically, since other tasks of the study may look at it.
         fs::create_directories(link.parent_path());
-        fs::create_directory_symlink(target.lexically_relative(link.parent_path()), link);
+        const fs::path fresh = link.string() + ".link-" + std::to_string(::getpid());
+        fs::remove(fresh);
+        fs::create_directory_symlink(target.lexically_relative(link.parent_path()), fresh);
+        fs::rename(fresh, link);
     }
 }
 

@@ -411,6 +411,12 @@ void gait_rows(std::vector<SettingKey>& t) {
                            FIELD(gait.sigma0)));
     t.push_back(double_row("Gait", "frequencyMin", kPositive, "Lowest gait frequency, Hz", FIELD(gait.frequency_min)));
     t.push_back(double_row("Gait", "frequencyMax", kPositive, "Highest gait frequency, Hz", FIELD(gait.frequency_max)));
+    t.push_back(enum_row<GaitBounds>("Gait", "bounds", {{GaitBounds::Clamp, {"clamp"}}, {GaitBounds::Reflect, {"reflect"}}},
+                                     "How cmaes and xnes samples outside a parameter's range are read: clamp (the "
+                                     "nearest bound; flat outside, so the search can drift away; the default only "
+                                     "so that runs made before this key replay alike) or reflect (mirrored at the "
+                                     "bounds; recommended, used by settings/r1_gait.xml)",
+                                     FIELD(gait.bounds)));
 }
 
 std::vector<SettingKey> build_table() {

@@ -238,6 +238,34 @@ TEST(Sweep, StudiesSharingAStoreRunACommonConfigurationOnce) {
     fs::remove_all(dir);
 }
 
+// A sweep file edited after its runs (here its base settings' tournament size):
+// the study's links move to the runs of the new settings, which run; the old
+// runs stay in the store, where the old settings find them again.
+TEST(Sweep, EditedSweepUsesTheRunsOfItsNewSettings) {
+    const auto dir = temp_dir("sweep-edited");
+    std::string text = tiny_sweep_text("e", dir / "e", 6, 2, 2.5, "<variant name=\"R0\"/>", 1, 4);
+    text.replace(text.find("</output>") + 9, 0, "\n  <store>../store</store>");
+    write_text(dir / "s.xml", text);
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "first.log"), 0) << read_text(dir / "first.log");
+    const fs::path run = dir / "e/runs/R0/s4", old = fs::canonical(run);
+    std::string edited = text;
+    edited.replace(edited.find("GP.tournament_size=3"), 20, "GP.tournament_size=4");
+    write_text(dir / "s.xml", edited);
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --dry-run", dir / "dry.log"), 0);
+    EXPECT_NE(read_text(dir / "dry.log").find("\n1 pending;"), std::string::npos) << read_text(dir / "dry.log");
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "second.log"), 0) << read_text(dir / "second.log");
+    EXPECT_NE(read_text(dir / "second.log").find("1 of 1 runs to do"), std::string::npos) << read_text(dir / "second.log");
+    ASSERT_TRUE(fs::is_symlink(run));
+    EXPECT_NE(fs::canonical(run), old);
+    EXPECT_NE(read_text(run / "settings.xml").find("<tournament_size>4</tournament_size>"), std::string::npos);
+    EXPECT_TRUE(fs::exists(old / "summary.txt"));
+    write_text(dir / "s.xml", text);   // back to the first settings: their run is found, nothing runs
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "third.log"), 0) << read_text(dir / "third.log");
+    EXPECT_NE(read_text(dir / "third.log").find("0 of 1 runs to do"), std::string::npos) << read_text(dir / "third.log");
+    EXPECT_EQ(fs::canonical(run), old);
+    fs::remove_all(dir);
+}
+
 // cic reinstalled while a study runs: the tasks still to start run the binary
 // that started the study (/proc/self/exe), not a missing or different file.
 TEST(Sweep, ReplacingTheBinaryMidStudyChangesNothing) {

@@ -59,6 +59,27 @@ TEST(GaitEncoding, DecodesTheUnitBoxIntoServoRanges) {
     EXPECT_EQ(default_population(1, 7), 7);
 }
 
+// Reflect mirrors a value at the bounds (continuous, no flat region outside
+// the box); clamp holds it at the bound. Phases wrap under both.
+TEST(GaitEncoding, ReflectMirrorsAtTheBoundsWhereClampHolds) {
+    const Encoding clamp(1, false, 1.0, 3.0, Bounds::Clamp), reflect(1, false, 1.0, 3.0, Bounds::Reflect);
+    constexpr double pi = std::numbers::pi;
+    const std::vector<double> x{1.25, -0.3, 1.25, 2.6};   // frequency, amplitude, phase, offset
+    const sim::GaitSpec c = clamp.decode(x), r = reflect.decode(x);
+    EXPECT_DOUBLE_EQ(c.frequency, 3.0);
+    EXPECT_DOUBLE_EQ(r.frequency, 1.0 + 0.75 * 2.0);
+    EXPECT_DOUBLE_EQ(c.joints[0].amplitude, 0.0);
+    EXPECT_NEAR(r.joints[0].amplitude, 0.3 * pi / 2, 1e-12);
+    EXPECT_NEAR(c.joints[0].phase, r.joints[0].phase, 1e-12);
+    EXPECT_NEAR(r.joints[0].phase, pi / 2, 1e-12);
+    EXPECT_DOUBLE_EQ(c.joints[0].offset, pi / 2);
+    EXPECT_NEAR(r.joints[0].offset, (2.0 * 0.6 - 1.0) * pi / 2, 1e-12);   // 2.6 -> 0.6 (period 2)
+    // Inside the box the two agree; across a bound reflect is continuous.
+    const std::vector<double> inside{0.3, 0.7, 0.2, 0.9};
+    EXPECT_EQ(clamp.decode(inside).joints[0].offset, reflect.decode(inside).joints[0].offset);
+    EXPECT_NEAR(reflect.decode(std::vector<double>{1.0 + 1e-9, 0.5, 0.5, 0.5}).frequency, 3.0, 1e-8);
+}
+
 TEST(GaitEncoding, BadArgumentsThrow) {
     EXPECT_THROW(Encoding(0, false, 0.1, 1), std::invalid_argument);
     EXPECT_THROW(Encoding(1, false, 0, 1), std::invalid_argument);

@@ -53,6 +53,7 @@ struct SymregConfig {
 // (sim::GaitSpec) whose parameters a pagmo2 optimiser tunes, a baseline for
 // HyperGP at the same budget of evaluations (docs/baselines.md).
 enum class GaitOptimizer { Cmaes, Xnes, Sade };
+enum class GaitBounds { Clamp, Reflect };
 
 struct GaitConfig {
     GaitOptimizer optimizer = GaitOptimizer::Cmaes;
@@ -62,6 +63,9 @@ struct GaitConfig {
     double sigma0 = 0.25;             // CMA-ES / xNES initial step, as a fraction of each parameter's range
     double frequency_min = 0.1;       // Hz, bounds of the shared frequency
     double frequency_max = 3.0;
+    // How a sampled value outside its range is read: clamp (cic before this key
+    // existed, so older runs replay alike) or reflect (settings/r1_gait.xml).
+    GaitBounds bounds = GaitBounds::Clamp;
 };
 
 struct Settings {

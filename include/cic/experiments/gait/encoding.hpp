@@ -8,8 +8,13 @@
 //   amplitudes  x * pi/2                 (the servo's half range)
 //   offset      (2x - 1) * pi/2          (the servo's range)
 //   phases      x * 2 pi                 (periodic: any x is meaningful)
-// Values outside [0, 1] (CMA-ES samples are unbounded) are clamped, except
-// the phases, which wrap by periodicity.
+// CMA-ES and xNES sample the whole space, so a value outside [0, 1] must be
+// read somehow (the phases simply wrap by periodicity); the others follow
+// Bounds: Clamp reads the nearest bound, which leaves the fitness flat outside
+// the box, so the optimiser's mean can drift out along it unchecked; Reflect
+// mirrors at the bounds (a triangle wave: 1.2 -> 0.8, -0.3 -> 0.3), keeping
+// the landscape continuous, the usual remedy (pycma's BoundTransform and
+// libcmaes' pwqBoundStrategy are smoothed versions of it).
 #include <cstddef>
 #include <span>
 
@@ -17,14 +22,18 @@
 
 namespace cic::gait {
 
+enum class Bounds { Clamp, Reflect };
+
 struct Encoding {
     std::size_t joints = 0;
     bool second_harmonic = false;
     double frequency_min = 0.1;
     double frequency_max = 3.0;
+    Bounds bounds = Bounds::Clamp;
 
     // Throws std::invalid_argument for no joints or a bad frequency range.
-    Encoding(std::size_t joints, bool second_harmonic, double frequency_min, double frequency_max);
+    Encoding(std::size_t joints, bool second_harmonic, double frequency_min, double frequency_max,
+             Bounds bounds = Bounds::Clamp);
 
     std::size_t per_joint() const { return second_harmonic ? 5 : 3; }
     std::size_t dimension() const { return 1 + joints * per_joint(); }
