@@ -48,6 +48,10 @@ done
 mkdir -p "$HERE/results"
 summarise() {   # STUDY
   "$CIC" --quiet sweep "$HERE/$1.xml" --output "$output/$1" --index-only
+  if ! grep -q ',done,' "$output/$1/index.csv"; then
+    echo "== $1: no finished run yet, nothing to summarise" >&2
+    return 0
+  fi
   # best_ever: CMA-ES keeps its best, HyperGP at Table B.1 values (no elitism) may lose it.
   "$CIC" compare "$output/$1" --metric best_ever --out "$HERE/results/$1" > /dev/null
   "$CIC" plot "$output/$1" --title "$1 (median, Q1..Q3)" --median --out "$HERE/results/$1.svg"
@@ -110,7 +114,7 @@ sine_strips() {   # from results/sine-grid.csv: robot,fitness,controller
 curves() {   # BUDGET ROBOT STUDY...
   local budget="$1" robot="$2" found=()
   shift 2
-  for s in "$@"; do [ -f "$output/$s/index.csv" ] && found+=("$output/$s"); done
+  for s in "$@"; do grep -qs ',done,' "$output/$s/index.csv" && found+=("$output/$s"); done
   [ ${#found[@]} -gt 0 ] || return 0
   "$CIC" --quiet plot --by-evaluations "${found[@]}" --config "$robot" --median \
     --title "$robot, $budget evaluations: best fitness so far" --out "$HERE/results/curves-$budget-$robot.svg" ||
