@@ -86,12 +86,14 @@ int dry_run(const SweepPlan& plan, int workers) {
     if (!plan.store.empty()) fmt::print("run store {} (runs another study has done are reused)\n", plan.store.string());
     std::map<std::string, int> counts;
     for (const SweepTask& t : plan.tasks()) {
-        const TaskStatus st = task_state(plan, t).status;
+        const TaskState state = task_state(plan, t);
+        const TaskStatus st = state.status;
         ++counts[to_string(st)];
         std::string sets;
         for (const auto& s : plan.overrides(t)) sets += " --set " + s;
         fmt::print("{:>5} {:<12} {} {}\n", t.index, to_string(st), t.run_dir.string(),
                    st == TaskStatus::Done ? std::string("(skipped)") : "cic --settings " + plan.base.string() + sets);
+        for (const auto& d : state.mismatch) fmt::print("{:>5} {:<12}   {}\n", "", "", d);
     }
     std::string summary;
     for (const auto& [k, n] : counts) summary += fmt::format("{}{} {}", summary.empty() ? "" : ", ", n, k);
@@ -258,6 +260,7 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
                 write_index(plan);
                 return 0;
             }
+            refuse_mismatched_runs(plan);   // before anything of the study is written
             fs::create_directories(plan.study);
             link_to_store(plan);
             io::xml::write_file_atomically(plan.study / "sweep.xml", io::xml::Document::load_file(plan.file).to_string());

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -111,20 +112,67 @@ std::string to_string(TaskStatus s) {
     case TaskStatus::Done: return "done";
     case TaskStatus::Interrupted: return "interrupted";
     case TaskStatus::Failed: return "failed";
+    case TaskStatus::Mismatched: return "mismatched";
     }
     return "?";
 }
+
+namespace {
+
+bool same_file_contents(const fs::path& a, const fs::path& b) {
+    std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
+    if (!fa || !fb) return false;
+    return std::string(std::istreambuf_iterator<char>(fa), {}) == std::string(std::istreambuf_iterator<char>(fb), {});
+}
+
+// The keys whose values differ between the settings a run folder ran and those
+// the sweep asks of it, as "Section.key: ran A, the sweep asks B". Keys that
+// change no result (name, output folder, workers, resume file) are left out; a
+// path counts as the same when both name files of identical contents (a copy
+// elsewhere). A path whose file is gone is compared as written: refused, loudly.
+std::vector<std::string> settings_differences(const io::Settings& ran, const io::Settings& asked) {
+    std::vector<std::string> out;
+    for (const auto& k : io::settings_table()) {
+        if ((k.section == "Experiment" && (k.key == "name" || k.key == "outputDirectory" || k.key == "workers")) ||
+            (k.section == "Control" && k.key == "populationXmlLoadFrom"))
+            continue;
+        const std::string a = k.get(ran), b = k.get(asked);
+        if (a == b || (k.type == io::ValueType::Path && same_file_contents(a, b))) continue;
+        out.push_back(fmt::format("{}.{}: ran '{}', the sweep asks '{}'", k.section, k.key, a, b));
+    }
+    return out;
+}
+
+} // namespace
 
 TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
     // A stored task is read from the store folder of its settings, whatever the link
     // says: before the link is made (dry runs), or while it still names the run of
     // settings the sweep no longer has.
     fs::path dir = plan.study / task.run_dir;
-    if (!plan.store.empty() && (fs::is_symlink(dir) || !fs::exists(dir))) dir = store_dir(plan, task);
+    const bool stored = !plan.store.empty() && (fs::is_symlink(dir) || !fs::exists(dir));
+    if (stored) dir = store_dir(plan, task);
     TaskState st;
     if (!fs::exists(dir / "settings.xml")) {
         st.status = fs::exists(dir / "failed.txt") ? TaskStatus::Failed : TaskStatus::Pending;
         return st;
+    }
+    if (!stored) {
+        // A run folder of the study's own holds whatever ran there: if the sweep file or
+        // its base settings were edited since, it is not this task's run, done or not.
+        io::Settings ran;
+        try {
+            ran = io::read_settings(dir / "settings.xml");
+        } catch (const std::exception& e) {
+            st.status = TaskStatus::Mismatched;
+            st.mismatch = {std::string("its settings.xml cannot be read: ") + e.what()};
+            return st;
+        }
+        st.mismatch = settings_differences(ran, io::load_settings(plan.base, plan.overrides(task)));
+        if (!st.mismatch.empty()) {
+            st.status = TaskStatus::Mismatched;
+            return st;
+        }
     }
     read_progress(dir / "stats.csv", st);
     if (fs::exists(dir / "failed.txt")) {
@@ -138,6 +186,35 @@ TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
         st.status = probe.held() ? TaskStatus::Interrupted : TaskStatus::Running;
     }
     return st;
+}
+
+namespace {
+
+std::string mismatch_text(const SweepPlan& plan, const SweepTask& task, const TaskState& st) {
+    std::string text = "  " + (plan.study / task.run_dir).string();
+    for (const auto& d : st.mismatch) text += "\n    " + d;
+    return text;
+}
+
+constexpr const char* kMismatchAdvice =
+    "the sweep file or its base settings changed since these runs were made. Move the folders away (or delete "
+    "them) to run the tasks with the new settings, or undo the edit; with a <store>, new studies keep every "
+    "version of a run apart";
+
+} // namespace
+
+void refuse_mismatched_runs(const SweepPlan& plan) {
+    std::string found;
+    std::size_t n = 0;
+    for (const SweepTask& t : plan.tasks())
+        if (const TaskState st = task_state(plan, t); st.status == TaskStatus::Mismatched) {
+            if (++n <= 5) found += "\n" + mismatch_text(plan, t, st);
+        }
+    if (n == 0) return;
+    if (n > 5) found += fmt::format("\n  ... and {} more (cic sweep {} --dry-run lists them)", n - 5, plan.file.string());
+    throw InputError(fmt::format("{} run folder{} of the study hold{} runs of other settings than the sweep asks:{}\n{}",
+                                 n, n == 1 ? "" : "s", n == 1 ? "s" : "", found, kMismatchAdvice),
+                     plan.file.string());
 }
 
 void write_index(const SweepPlan& plan) {
@@ -235,8 +312,12 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
         if (!quiet) std::fprintf(stderr, "cic sweep: task %zu (%s) is running elsewhere; skipped\n", task.index, dir.c_str());
         return 0;
     }
-    const TaskStatus before = task_state(plan, task).status;
-    if (before == TaskStatus::Done) return 0;
+    const TaskState state = task_state(plan, task);
+    if (state.status == TaskStatus::Done) return 0;
+    if (state.status == TaskStatus::Mismatched)
+        throw InputError(fmt::format("task {} holds a run of other settings than the sweep asks:\n{}\n{}", task.index,
+                                     mismatch_text(plan, task, state), kMismatchAdvice),
+                         plan.file.string());
 
     std::vector<std::string> overrides = plan.overrides(task);
     if (workers > 0) overrides.push_back("Experiment.workers=" + std::to_string(workers));

@@ -266,6 +266,51 @@ TEST(Sweep, EditedSweepUsesTheRunsOfItsNewSettings) {
     fs::remove_all(dir);
 }
 
+// Without a store, a study's run folders are its own: after an edit they hold runs
+// of other settings. They are refused (exit 2, nothing written), never counted as
+// done nor run over; a robot file named by another path but of the same bytes
+// is not a difference.
+TEST(Sweep, EditedSweepWithoutAStoreRefusesItsOldRuns) {
+    const auto dir = temp_dir("sweep-edited-nostore");
+    fs::copy_file(fs::path(CIC_SOURCE_DIR) / "settings/robots/r0.xml", dir / "robot.xml");
+    const std::string variant = "<variant name=\"R0\"><set>Simulator.robotFile=" + (dir / "robot.xml").string() +
+                                "</set></variant>";
+    const std::string text = tiny_sweep_text("n", dir / "n", 6, 2, 2.5, variant, 1, 4);
+    write_text(dir / "s.xml", text);
+    const std::string sweep = "sweep " + (dir / "s.xml").string();
+    ASSERT_EQ(run_command(sweep, dir / "first.log"), 0) << read_text(dir / "first.log");
+    const fs::path run = dir / "n/runs/R0/s4";
+    ASSERT_TRUE(fs::exists(run / "summary.txt"));
+    fs::copy_file(dir / "robot.xml", dir / "moved.xml");   // same bytes, another path: the same run
+    std::string moved = text;
+    moved.replace(moved.find("robot.xml"), 9, "moved.xml");
+    write_text(dir / "s.xml", moved);
+    ASSERT_EQ(run_command(sweep + " --dry-run", dir / "dry1.log"), 0);
+    EXPECT_NE(read_text(dir / "dry1.log").find("\n1 done;"), std::string::npos) << read_text(dir / "dry1.log");
+
+    std::string edited = moved;
+    edited.replace(edited.find("GP.tournament_size=3"), 20, "GP.tournament_size=4");
+    write_text(dir / "s.xml", edited);
+    const std::string index = read_text(dir / "n/index.csv"), summary = read_text(run / "summary.txt");
+    EXPECT_EQ(run_command(sweep, dir / "refused.log"), 2) << read_text(dir / "refused.log");
+    const std::string why = read_text(dir / "refused.log");
+    EXPECT_NE(why.find(run.string()), std::string::npos) << why;
+    EXPECT_NE(why.find("GP.tournament_size: ran '3', the sweep asks '4'"), std::string::npos) << why;
+    EXPECT_EQ(run_command(sweep + " --task 0", dir / "task.log"), 2) << read_text(dir / "task.log");
+    EXPECT_EQ(read_text(dir / "n/index.csv"), index);
+    EXPECT_EQ(read_text(run / "summary.txt"), summary);
+    EXPECT_NE(read_text(dir / "n/sweep.xml").find("GP.tournament_size=3"), std::string::npos);
+    ASSERT_EQ(run_command(sweep + " --dry-run", dir / "dry2.log"), 0);
+    EXPECT_NE(read_text(dir / "dry2.log").find("\n1 mismatched;"), std::string::npos) << read_text(dir / "dry2.log");
+    ASSERT_EQ(run_command(sweep + " --index-only", dir / "index.log"), 0);
+    EXPECT_NE(read_text(dir / "n/index.csv").find(",mismatched,"), std::string::npos) << read_text(dir / "n/index.csv");
+
+    fs::rename(dir / "n/runs/R0/s4", dir / "old-s4");   // moved away: the task runs with the new settings
+    ASSERT_EQ(run_command(sweep, dir / "second.log"), 0) << read_text(dir / "second.log");
+    EXPECT_NE(read_text(run / "settings.xml").find("<tournament_size>4</tournament_size>"), std::string::npos);
+    fs::remove_all(dir);
+}
+
 // cic reinstalled while a study runs: the tasks still to start run the binary
 // that started the study (/proc/self/exe), not a missing or different file.
 TEST(Sweep, ReplacingTheBinaryMidStudyChangesNothing) {

@@ -58,8 +58,11 @@ struct SweepPlan {
 // Throws cic::InputError with file and line.
 SweepPlan read_sweep_file(const std::filesystem::path& file, const std::filesystem::path& output = {});
 
-// Where a task stands, from its run folder alone.
-enum class TaskStatus { Pending, Running, Done, Interrupted, Failed };
+// Where a task stands, from its run folder alone. Mismatched: the study's own
+// run folder (not a store link) holds a run of other settings than the sweep
+// now asks of the task (an edited sweep or base file); never run over, never
+// counted as done.
+enum class TaskStatus { Pending, Running, Done, Interrupted, Failed, Mismatched };
 std::string to_string(TaskStatus s);
 
 struct TaskState {
@@ -69,7 +72,11 @@ struct TaskState {
     int generations = 0;
     long evaluations = 0;
     double wall_seconds = 0;      // summed over the sessions that ran it
+    std::vector<std::string> mismatch;   // Mismatched: each key that differs, ran vs asked
 };
+// Throws cic::InputError naming every mismatched task of the study, the keys that
+// differ and what to do, before anything of the study is written or run.
+void refuse_mismatched_runs(const SweepPlan& plan);
 TaskState task_state(const SweepPlan& plan, const SweepTask& task);
 
 // Rewrites STUDY/index.csv (atomically, under a lock shared by every task):
