@@ -14,8 +14,10 @@ centre height, flipped, shaking; `cic assess` replays, of the run with the
 highest best_ever, the individual that reached it: baselines.sh assesses the
 saved population of the first generation at that fitness, since a HyperGP run
 without elitism may have lost it by its last generation). A shaking gait does
-not win its cell (thesis 7.3.2.1). Statistics follow docs/statistics.md: exact U when scipy is present,
-A12 as the probability that a HyperGP run beats a CMA-ES run (ties half).
+not win its cell (thesis 7.3.2.1). Statistics follow docs/statistics.md and `cic compare`: scipy's
+two-sided Mann-Whitney U with method="auto" (at ten runs a side: the normal approximation with
+continuity correction; no p without scipy), A12 as the probability that a HyperGP run beats a
+CMA-ES run (ties half).
 Methods whose study has not run are listed as "not run".
 """
 import argparse

@@ -16,6 +16,8 @@
 #             and a screenshot strip of each robot's best gait from each method
 #   long      15,000 evaluations on R1: HyperGP's best configuration and CMA-ES
 #             gaits, seeds 1..10 (hypergp-best-15000.xml, gait-15000.xml)
+#   gap       what would close the gap to CMA-ES: HyperGP's best with a bias
+#             input, or with a faster clock, on R1 and R2, tuning seeds (gap.xml)
 # Tables and plots go to experiments/baselines/results/.
 #   --jobs N        runs at a time (default 2)
 #   --output DIR    study folders (default runs/baselines); the run store is shared
@@ -37,12 +39,12 @@ while [ $# -gt 0 ]; do
     --jobs) jobs="$2"; shift 2 ;;
     --output) output="$2"; shift 2 ;;
     --summary-only) summary_only=1; shift ;;
-    -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    search|compare|long) stages+=("$1"); shift ;;
+    -h|--help) sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    search|compare|long|gap) stages+=("$1"); shift ;;
     *) echo "baselines.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-[ ${#stages[@]} -gt 0 ] || { echo "baselines.sh: name a stage: search, compare, long (see --help)" >&2; exit 2; }
+[ ${#stages[@]} -gt 0 ] || { echo "baselines.sh: name a stage: search, compare, long, gap (see --help)" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "baselines.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
 
 mkdir -p "$HERE/results"
@@ -150,6 +152,7 @@ for stage in "${stages[@]}"; do
       curves 15000 R1 hypergp-best-15000 gait-15000
       strips hypergp-best-15000 gait-15000
       ;;
+    gap) study gap ;;
   esac
 done
 "${PYTHON:-python3}" "$ROOT/scripts/baselines-report.py" --studies "$output" > "$HERE/results/report.md"
