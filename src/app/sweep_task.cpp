@@ -119,6 +119,17 @@ std::string to_string(TaskStatus s) {
 
 namespace {
 
+// The settings less the keys that change no result: the run's name, output
+// folder, worker count and resume file. What a run store fingerprints and what
+// a run folder is checked against.
+io::Settings result_settings(io::Settings s) {
+    s.experiment.name.clear();
+    s.experiment.output_directory.clear();
+    s.experiment.workers = 0;
+    s.control.population_load_from.clear();
+    return s;
+}
+
 bool same_file_contents(const fs::path& a, const fs::path& b) {
     std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
     if (!fa || !fb) return false;
@@ -130,12 +141,10 @@ bool same_file_contents(const fs::path& a, const fs::path& b) {
 // change no result (name, output folder, workers, resume file) are left out; a
 // path counts as the same when both name files of identical contents (a copy
 // elsewhere). A path whose file is gone is compared as written: refused, loudly.
-std::vector<std::string> settings_differences(const io::Settings& ran, const io::Settings& asked) {
+std::vector<std::string> settings_differences(const io::Settings& ran_settings, const io::Settings& asked_settings) {
+    const io::Settings ran = result_settings(ran_settings), asked = result_settings(asked_settings);
     std::vector<std::string> out;
     for (const auto& k : io::settings_table()) {
-        if ((k.section == "Experiment" && (k.key == "name" || k.key == "outputDirectory" || k.key == "workers")) ||
-            (k.section == "Control" && k.key == "populationXmlLoadFrom"))
-            continue;
         const std::string a = k.get(ran), b = k.get(asked);
         if (a == b || (k.type == io::ValueType::Path && same_file_contents(a, b))) continue;
         out.push_back(fmt::format("{}.{}: ran '{}', the sweep asks '{}'", k.section, k.key, a, b));
@@ -242,11 +251,8 @@ namespace {
 // output folder, worker count, resume file). Keys at their defaults are left
 // out, so that a key added to cic later (whose default keeps the old
 // behaviour) does not change the fingerprint of the runs already stored.
-std::string run_fingerprint(io::Settings s) {
-    s.experiment.name.clear();
-    s.experiment.output_directory.clear();
-    s.experiment.workers = 0;
-    s.control.population_load_from.clear();
+std::string run_fingerprint(const io::Settings& settings) {
+    const io::Settings s = result_settings(settings);
     const io::Settings defaults;
     std::string text = std::string("cic ") + CIC_VERSION + "\n";
     for (const auto& k : io::settings_table())
