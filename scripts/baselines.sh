@@ -18,6 +18,13 @@
 #             gaits, seeds 1..10 (hypergp-best-15000.xml, gait-15000.xml)
 #   gap       what would close the gap to CMA-ES: HyperGP's best with a bias
 #             input, or with a faster clock, on R1 and R2, tuning seeds (gap.xml)
+#   walk-tune issue 21's tuning stage, R1, 2,500 evaluations, tuning seeds
+#             101..105: the evolved clock, HyperGP-CPG, HyperGP-gait
+#             (walk-tune-hypergp.xml) and CMA-ES with IPOP restarts on the gait
+#             and on the CPG (walk-tune-cmaes.xml); results/walk-tune.md
+#   walk      issue 21's comparison at 2,500 evaluations, seeds 1..10, on R0,
+#             R1, R2, R1 6 legs and the cross (walk-2500-*.xml); results/walk.md
+#   walk-long the same at 15,000 evaluations, R1 and R2 (walk-15000-*.xml)
 # Tables and plots go to experiments/baselines/results/.
 #   --jobs N        runs at a time (default 2)
 #   --output DIR    study folders (default runs/baselines); the run store is shared
@@ -39,12 +46,12 @@ while [ $# -gt 0 ]; do
     --jobs) jobs="$2"; shift 2 ;;
     --output) output="$2"; shift 2 ;;
     --summary-only) summary_only=1; shift ;;
-    -h|--help) sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    search|compare|long|gap) stages+=("$1"); shift ;;
+    -h|--help) sed -n '2,34p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    search|compare|long|gap|walk-tune|walk|walk-long) stages+=("$1"); shift ;;
     *) echo "baselines.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-[ ${#stages[@]} -gt 0 ] || { echo "baselines.sh: name a stage: search, compare, long, gap (see --help)" >&2; exit 2; }
+[ ${#stages[@]} -gt 0 ] || { echo "baselines.sh: name a stage: search, compare, long, gap, walk-tune, walk, walk-long (see --help)" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "baselines.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
 
 mkdir -p "$HERE/results"
@@ -91,7 +98,7 @@ strips() {   # STUDY...
   local s r run
   for s in "$@"; do
     [ -f "$output/$s/index.csv" ] || continue
-    for r in R0 R1 R2 R1-6legs; do
+    for r in R0 R1 R2 R1-6legs cross; do
       run=$(awk -F, -v r="$r" 'NR == 1 {for (i = 1; i <= NF; i++) h[$i] = i; next}
         $h["config"] == r && $h["status"] == "done" && $h["best_ever"] != "" &&
         (best == "" || $h["best_ever"] + 0 > best + 0) {best = $h["best_ever"]; dir = $h["run_dir"]}
@@ -131,7 +138,7 @@ for stage in "${stages[@]}"; do
       study hypergp-best-2500
       study gait-2500
       study gait-clamp-2500
-      for r in R0 R1 R2 R1-6legs; do curves 2500 "$r" hypergp-b1-2500 hypergp-best-2500 gait-2500 gait-clamp-2500; done
+      for r in R0 R1 R2 R1-6legs cross; do curves 2500 "$r" hypergp-b1-2500 hypergp-best-2500 gait-2500 gait-clamp-2500; done
       strips hypergp-b1-2500 hypergp-best-2500 gait-2500 gait-clamp-2500
       # Deterministic: run once; delete results/sine-grid.csv to run it again.
       if [ "$summary_only" = 0 ] && [ ! -s "$HERE/results/sine-grid.csv" ]; then
@@ -153,6 +160,23 @@ for stage in "${stages[@]}"; do
       strips hypergp-best-15000 gait-15000
       ;;
     gap) study gap ;;
+    walk-tune)
+      study walk-tune-hypergp
+      study walk-tune-cmaes
+      "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" tune > "$HERE/results/walk-tune.md"
+      ;;
+    walk|walk-long)
+      budget=2500 robots="R0 R1 R2 R1-6legs cross"
+      [ "$stage" = walk-long ] && budget=15000 robots="R1 R2"
+      walk_studies=()
+      for m in hgp-best hgp-clock hgp-cpg hgp-gait cmaes-gait cmaes-cpg; do
+        study "walk-$budget-$m"
+        walk_studies+=("walk-$budget-$m")
+      done
+      for r in $robots; do curves "$budget" "$r" "${walk_studies[@]}"; done
+      strips "${walk_studies[@]}"
+      "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" compare > "$HERE/results/walk.md"
+      ;;
   esac
 done
 "${PYTHON:-python3}" "$ROOT/scripts/baselines-report.py" --studies "$output" > "$HERE/results/report.md"

@@ -25,12 +25,7 @@ sim::GaitSpec Encoding::decode(std::span<const double> x) const {
     for (double v : x)
         if (!std::isfinite(v)) throw std::invalid_argument("gait encoding: a parameter is not finite");
     constexpr double pi = std::numbers::pi;
-    const bool reflect = bounds == Bounds::Reflect;
-    auto unit = [reflect](double v) {
-        if (!reflect) return std::clamp(v, 0.0, 1.0);
-        const double t = v - 2.0 * std::floor(v / 2.0);   // in [0, 2): the triangle wave's period
-        return t <= 1.0 ? t : 2.0 - t;
-    };
+    auto unit = [this](double v) { return to_unit(v, bounds); };
     auto angle = [&](double v) { return 2.0 * pi * (v - std::floor(v)); };
     sim::GaitSpec g;
     g.frequency = frequency_min + unit(x[0]) * (frequency_max - frequency_min);
@@ -47,6 +42,12 @@ sim::GaitSpec Encoding::decode(std::span<const double> x) const {
         }
     }
     return g;
+}
+
+double to_unit(double v, Bounds bounds) {
+    if (bounds == Bounds::Clamp) return std::clamp(v, 0.0, 1.0);
+    const double t = v - 2.0 * std::floor(v / 2.0);   // in [0, 2): the triangle wave's period
+    return t <= 1.0 ? t : 2.0 - t;
 }
 
 int default_population(std::size_t dimension, int at_least) {

@@ -2,6 +2,7 @@
 #include "cic/experiments/gait/search.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <cstring>
 #include <map>
 #include <sstream>
@@ -79,6 +80,13 @@ pagmo::algorithm make_algorithm(Optimizer o, double sigma0, unsigned seed) {
 
 } // namespace
 
+std::string to_string(Restarts r) { return r == Restarts::Ipop ? "ipop" : "none"; }
+
+std::uint64_t restart_seed(std::uint64_t seed, int r) {
+    if (r == 0) return seed;
+    return mix64(seed + 0x9e3779b97f4a7c15ULL * static_cast<std::uint64_t>(r));
+}
+
 std::string to_string(Optimizer o) {
     switch (o) {
     case Optimizer::Cmaes: return "cmaes";
@@ -91,8 +99,11 @@ std::string to_string(Optimizer o) {
 struct Search::Impl {
     Optimizer optimizer;
     std::size_t n;
-    int lambda;
+    int lambda0;                  // the first start's population
+    int lambda;                   // the current start's: lambda0 2^restart
+    double sigma0;
     std::uint64_t seed;
+    RestartRule rule;
     BoxProblem problem;
     pagmo::algorithm algorithm;
     pagmo::population pop;
@@ -101,14 +112,24 @@ struct Search::Impl {
     int generation = -1;
     long evaluations = 0;
     std::vector<double> history;
+    // The current start: its number, and B_0, B_1, ...: the best fitness it
+    // has evaluated after each of its generations.
+    int restart = 0;
+    std::vector<double> start_best;
+    std::vector<int> restart_generations;
+    bool pending = false;         // the next step begins start restart + 1
+    int stalled = 0;
+    bool collapsed = false;
 
-    Impl(Optimizer o, std::size_t dim, int pop_size, double sigma0, std::uint64_t s)
-        : optimizer(o), n(dim), lambda(pop_size), seed(s), problem{dim},
-          algorithm(make_algorithm(o, sigma0, seed32(s, 1))), pop(pagmo::problem{problem}, 0u, seed32(s, 2)) {}
+    Impl(Optimizer o, std::size_t dim, int pop_size, double sigma, std::uint64_t s, RestartRule r)
+        : optimizer(o), n(dim), lambda0(pop_size), lambda(pop_size), sigma0(sigma), seed(s), rule(r), problem{dim},
+          algorithm(make_algorithm(o, sigma, seed32(s, 1))), pop(pagmo::problem{problem}, 0u, seed32(s, 2)) {}
+
+    std::uint64_t start_seed() const { return restart_seed(seed, restart); }
 
     // The population pagmo evolves, rebuilt from `current` (no evaluations).
     void rebuild_population() {
-        pop = pagmo::population(pagmo::problem{problem}, 0u, seed32(seed, 2));
+        pop = pagmo::population(pagmo::problem{problem}, 0u, seed32(start_seed(), 2));
         for (const Candidate& c : current) pop.push_back(c.x, {-c.fitness});
     }
 
@@ -125,16 +146,87 @@ struct Search::Impl {
     void note(const std::vector<double>& x, double f) {
         if (champion.x.empty() || f > champion.fitness) champion = {x, f};
     }
+
+    // The first batch of the current start: lambda uniform points of the unit
+    // box from the start's seed, and a fresh optimiser.
+    void begin_start(const BatchEvaluator& evaluate) {
+        const std::uint64_t s = start_seed();
+        Rng rng(s);
+        std::vector<std::vector<double>> xs(static_cast<std::size_t>(lambda), std::vector<double>(n));
+        for (auto& x : xs)
+            for (double& v : x) v = rng.uniform(0.0, 1.0);
+        const std::vector<double> f = evaluate(xs);
+        if (f.size() != xs.size()) throw std::logic_error("gait search: the evaluator returned the wrong count");
+        current.clear();
+        double best = f.empty() ? 0.0 : f.front();
+        for (std::size_t i = 0; i < xs.size(); ++i) {
+            current.push_back({xs[i], f[i]});
+            note(xs[i], f[i]);
+            best = std::max(best, f[i]);
+        }
+        evaluations += static_cast<long>(xs.size());
+        algorithm = make_algorithm(optimizer, sigma0, seed32(s, 1));
+        rebuild_population();
+        start_best.assign(1, best);
+    }
+
+    int patience() const {
+        if (rule.patience > 0) return rule.patience;
+        return 10 + static_cast<int>((30 * n + static_cast<std::size_t>(lambda) - 1) / static_cast<std::size_t>(lambda));
+    }
+
+    // After each generation: is the current start over?
+    void decide() {
+        pending = false;
+        stalled = 0;
+        collapsed = false;
+        if (rule.mode == Restarts::None) return;
+        const int k = static_cast<int>(start_best.size()) - 1;
+        const int p = patience();
+        const double now = start_best.back();
+        // !(a > b), so that a start whose every fitness is -inf stagnates too.
+        if (k >= p && !(now - start_best[static_cast<std::size_t>(k - p)] > rule.tolerance)) {
+            int j = k;
+            while (j > 0 && !(now - start_best[static_cast<std::size_t>(j - 1)] > rule.tolerance)) --j;
+            pending = true;
+            stalled = k - j;
+            return;
+        }
+        if (k >= 1 && rule.tol_x > 0 && current.size() >= 2) {
+            const double m = static_cast<double>(current.size());
+            for (std::size_t d = 0; d < n; ++d) {
+                double mean = 0;
+                for (const Candidate& c : current) mean += c.x[d];
+                mean /= m;
+                double ss = 0;
+                for (const Candidate& c : current) ss += (c.x[d] - mean) * (c.x[d] - mean);
+                if (!(std::sqrt(ss / (m - 1)) < rule.tol_x)) return;
+            }
+            pending = true;
+            collapsed = true;
+            int j = k;
+            while (j > 0 && !(now - start_best[static_cast<std::size_t>(j - 1)] > rule.tolerance)) --j;
+            stalled = k - j;
+        }
+    }
 };
 
-Search::Search(Optimizer optimizer, std::size_t dimension, int population, double sigma0, std::uint64_t seed) {
+Search::Search(Optimizer optimizer, std::size_t dimension, int population, double sigma0, std::uint64_t seed,
+               RestartRule restarts) {
     const int minimum = optimizer == Optimizer::Sade ? 7 : 5;
     if (dimension == 0) throw std::invalid_argument("gait search: no parameters");
     if (population < minimum)
         throw std::invalid_argument("gait search: " + to_string(optimizer) + " needs a population of at least " +
                                     std::to_string(minimum));
     if (!(sigma0 > 0 && sigma0 <= 1)) throw std::invalid_argument("gait search: sigma0 must be in (0, 1]");
-    impl_ = std::make_unique<Impl>(optimizer, dimension, population, sigma0, seed);
+    if (restarts.mode == Restarts::Ipop && optimizer == Optimizer::Sade)
+        throw std::invalid_argument("gait search: ipop restarts need cmaes or xnes, not sade");
+    if (restarts.patience < 0) throw std::invalid_argument("gait search: a negative restart patience");
+    if (!(restarts.tolerance >= 0) || !std::isfinite(restarts.tolerance))
+        throw std::invalid_argument("gait search: the restart tolerance must be finite and >= 0");
+    if (!(restarts.tol_x >= 0) || !std::isfinite(restarts.tol_x))
+        throw std::invalid_argument("gait search: the restart tol_x must be finite and >= 0");
+    impl_ = std::make_unique<Impl>(optimizer, dimension, population, sigma0, seed, restarts);
 }
 
 Search::~Search() = default;
@@ -145,27 +237,30 @@ void Search::initialise(const BatchEvaluator& evaluate_) {
     Impl& m = *impl_;
     m.history.clear();
     const BatchEvaluator evaluate = m.recording(evaluate_);
-    Rng rng(m.seed);
-    std::vector<std::vector<double>> xs(static_cast<std::size_t>(m.lambda), std::vector<double>(m.n));
-    for (auto& x : xs)
-        for (double& v : x) v = rng.uniform(0.0, 1.0);
-    const std::vector<double> f = evaluate(xs);
-    if (f.size() != xs.size()) throw std::logic_error("gait search: the evaluator returned the wrong count");
-    m.current.clear();
     m.champion = {};
-    for (std::size_t i = 0; i < xs.size(); ++i) {
-        m.current.push_back({xs[i], f[i]});
-        m.note(xs[i], f[i]);
-    }
-    m.evaluations = static_cast<long>(xs.size());
+    m.evaluations = 0;
+    m.restart = 0;
+    m.lambda = m.lambda0;
+    m.restart_generations.clear();
+    m.begin_start(evaluate);
     m.generation = 0;
-    m.rebuild_population();
+    m.decide();
 }
 
 void Search::step(const BatchEvaluator& evaluate_) {
     Impl& m = *impl_;
     if (m.generation < 0) throw std::logic_error("gait search: step() before initialise()");
     const BatchEvaluator evaluate = m.recording(evaluate_);
+    if (m.pending) {
+        if (m.lambda > 50000000) throw std::overflow_error("gait search: a restart's population would pass 10^8");
+        ++m.restart;
+        m.lambda *= 2;
+        m.begin_start(evaluate);
+        ++m.generation;
+        m.restart_generations.push_back(m.generation);
+        m.decide();
+        return;
+    }
     Ledger& ledger = *m.problem.ledger;
     ledger = Ledger{};
     // Pass 1, on copies: which points will this generation ask for?
@@ -188,17 +283,25 @@ void Search::step(const BatchEvaluator& evaluate_) {
     m.pop = m.algorithm.evolve(m.pop);
     ledger.late = nullptr;
     // Every point evaluated this generation may be the champion, in the order asked.
-    for (const auto& x : ledger.asked) m.note(x, ledger.known.at(key_of(x)));
+    double best = m.start_best.back();
+    for (const auto& x : ledger.asked) {
+        const double f = ledger.known.at(key_of(x));
+        m.note(x, f);
+        best = std::max(best, f);
+    }
     m.current.clear();
     for (std::size_t i = 0; i < m.pop.size(); ++i) {
         const auto& x = m.pop.get_x()[i];
         const double f = -m.pop.get_f()[i][0];
         m.current.push_back({x, f});
         m.note(x, f);
+        best = std::max(best, f);
     }
     m.evaluations += ledger.evaluated;
     ++m.generation;
     ledger = Ledger{};
+    m.start_best.push_back(best);
+    m.decide();
 }
 
 int Search::generation() const { return impl_->generation; }
@@ -206,6 +309,14 @@ long Search::evaluations() const { return impl_->evaluations; }
 const std::vector<Candidate>& Search::population() const { return impl_->current; }
 const Candidate& Search::champion() const { return impl_->champion; }
 int Search::population_size() const { return impl_->lambda; }
+int Search::next_batch_size() const { return impl_->pending ? 2 * impl_->lambda : impl_->lambda; }
+int Search::restarts() const { return impl_->restart; }
+bool Search::restart_pending() const { return impl_->pending; }
+int Search::stalled_generations() const { return impl_->stalled; }
+bool Search::collapsed() const { return impl_->collapsed; }
+int Search::patience() const { return impl_->patience(); }
+const RestartRule& Search::restart_rule() const { return impl_->rule; }
+const std::vector<int>& Search::restart_generations() const { return impl_->restart_generations; }
 std::size_t Search::dimension() const { return impl_->n; }
 Optimizer Search::optimizer() const { return impl_->optimizer; }
 std::uint64_t Search::seed() const { return impl_->seed; }

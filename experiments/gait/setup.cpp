@@ -26,11 +26,14 @@ Setup Setup::from_settings(const io::Settings& s) {
     if (joints == 0) throw InputError("the robot " + model.robot.name + " has no joint to drive");
     Setup out{model.robot, model.sim,
               Encoding(joints, s.gait.second_harmonic, s.gait.frequency_min, s.gait.frequency_max,
-                       s.gait.bounds == io::GaitBounds::Reflect ? Bounds::Reflect : Bounds::Clamp)};
+                       s.gait.bounds == io::GaitBounds::Reflect ? Bounds::Reflect : Bounds::Clamp),
+              std::nullopt};
+    if (s.gait.controller == io::GaitController::Cpg)
+        out.cpg.emplace(model.robot, s.neural, model.sim.sample_step, out.encoding.bounds);
     out.optimizer = optimizer_of(s.gait.optimizer);
     out.population = s.gait.population_size > 0
         ? s.gait.population_size
-        : default_population(out.encoding.dimension(), out.optimizer == Optimizer::Sade ? 7 : 5);
+        : default_population(out.dimension(), out.optimizer == Optimizer::Sade ? 7 : 5);
     out.sigma0 = s.gait.sigma0;
     if (out.population > s.gait.evaluations)
         throw InputError(fmt::format("<Gait> evaluations: a budget of {} does not cover one generation of {} candidates",
@@ -43,26 +46,38 @@ void check_inputs(const io::Settings& s) {
     (void)Setup::from_settings(s);
 }
 
-std::string make_job(const Setup& setup, std::span<const double> x) {
-    return sim::make_gait_job(setup.robot, setup.sim, setup.encoding.decode(x));
+std::unique_ptr<sim::Controller> Setup::controller(std::span<const double> x) const {
+    if (cpg) return std::make_unique<sim::CpgController>(cpg->decode(x));
+    return std::make_unique<sim::GaitController>(encoding.decode(x));
 }
 
-Search resume_search(const Setup& setup, const io::GaitFile& g, const std::string& file) {
-    Search search(setup.optimizer, setup.encoding.dimension(), setup.population, setup.sigma0, g.seed);
-    try {
-        search.replay(g.history, g.generation);
-    } catch (const std::invalid_argument& e) {
-        throw InputError(std::string("the checkpoint does not replay: ") + e.what(), file);
+std::string Setup::describe(std::span<const double> x) const {
+    if (cpg) {
+        const sim::CpgSpec c = cpg->decode(x);
+        std::string out = "CPG weights w_i";
+        for (double w : c.self) out += fmt::format(" {:.3f}", w);
+        out += "; couplings";
+        for (std::size_t k = 0; k < c.edges.size(); ++k)
+            out += fmt::format(" {}-{}:{:.3f}", c.edges[k].a, c.edges[k].b, c.coupling[k]);
+        if (!c.feedback.empty()) {
+            out += "; feedback";
+            for (double g : c.feedback) out += fmt::format(" {:.3f}", g);
+        }
+        return out;
     }
-    bool same = search.population().size() == g.population.size() && search.champion().x == g.champion.x &&
-                search.champion().fitness == g.champion.fitness;
-    for (std::size_t i = 0; same && i < g.population.size(); ++i)
-        same = search.population()[i].x == g.population[i].x && search.population()[i].fitness == g.population[i].fitness;
-    if (!same)
-        throw InputError("replaying the checkpoint's history does not give its candidates (edited by hand, or made by "
-                         "another version of cic or pagmo?)",
-                         file);
-    return search;
+    const sim::GaitSpec g = encoding.decode(x);
+    std::string out = fmt::format("frequency {:.4f} Hz; per joint amplitude/phase/offset", g.frequency);
+    for (const auto& j : g.joints) {
+        out += fmt::format(" [{:.3f} {:.3f} {:.3f}", j.amplitude, j.phase, j.offset);
+        if (j.amplitude2 != 0 || j.phase2 != 0) out += fmt::format(" {:.3f} {:.3f}", j.amplitude2, j.phase2);
+        out += "]";
+    }
+    return out;
+}
+
+std::string make_job(const Setup& setup, std::span<const double> x) {
+    if (setup.cpg) return sim::make_cpg_job(setup.robot, setup.sim, setup.cpg->decode(x));
+    return sim::make_gait_job(setup.robot, setup.sim, setup.encoding.decode(x));
 }
 
 Evaluator::Evaluator(const experiments::Context& ctx, const Setup& setup)

@@ -40,6 +40,7 @@ void check_inputs(const io::Settings& s) {
     if (m.robot.actuated().empty())
         throw InputError("robot '" + m.robot.name + "' has no joint (every module is fixed): HyperGP needs at "
                          "least one module with axis x, y or z", where);
+    if (m.neural.substrate != nn::Substrate::Network) return;   // the limits below are the network's
     const nn::NeuronLayout layout = nn::make_neuron_layout(substrate_geometry(m.robot), m.neural);
     const std::size_t in = layout.input.size(), hidden = layout.hidden.size(), out = layout.output.size();
     if (in + hidden + out > limits::kMaxNeurons)
@@ -57,8 +58,9 @@ void check_inputs(const io::Settings& s) {
 
 Outcome run(const Model& m, const tree::Forest& genotype, const sim::EvalOptions& options, bool record_control) {
     Outcome o;
-    NeuralController controller = make_neural_controller(m.robot, genotype, m.neural);
-    o.synapses = controller.network().synapse_count();
+    const std::unique_ptr<Controller> made = make_controller(m.robot, genotype, m.neural, m.sim.sample_step);
+    Controller& controller = *made;
+    o.synapses = controller.connections();
     const bool penalised = m.neural.penalty != nn::OscillationPenalty::None;
     controller.set_recording(record_control || penalised);
     o.result = sim::evaluate(m.robot, controller, m.sim, options);

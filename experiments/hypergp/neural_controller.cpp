@@ -7,6 +7,7 @@
 
 #include "cic/core/error.hpp"
 #include "cic/nn/substrate.hpp"
+#include "cic/experiments/hypergp/queries.hpp"
 #include "cic/experiments/hypergp/substrate_geometry.hpp"
 
 namespace cic::hypergp {
@@ -70,9 +71,11 @@ void NeuralController::step(double t, std::span<const double> angles, std::span<
 
 NeuralController make_neural_controller(const sim::RobotSpec& robot, const tree::Forest& genotype,
                                         const nn::NeuralConfig& cfg) {
-    auto layout = nn::make_neuron_layout(substrate_geometry(robot), cfg);
-    auto network = nn::build_network(layout, genotype, cfg);
-    return NeuralController(std::move(network), std::move(layout), cfg);
+    nn::NeuralConfig c = cfg;
+    if (c.evolve_clock) c.clock_period = 1.0 / evolved_frequency(genotype, c);
+    auto layout = nn::make_neuron_layout(substrate_geometry(robot), c);
+    auto network = nn::build_network(layout, genotype, c);
+    return NeuralController(std::move(network), std::move(layout), c);
 }
 
 } // namespace cic::hypergp

@@ -22,7 +22,8 @@ void add_assess_command(Command& app, CommandContext& ctx) {
     auto opts = std::make_shared<Options>();
     Command cmd = app.subcommand(
         "assess", "Replay the best individual of each run folder (or population file) and say whether it walks: "
-                  "dominant command frequency, centre height, flipped, shaking (thesis 7.3.2.1). CSV, one row per input");
+                  "dominant command frequency, centre height, flipped, shaking (thesis 7.3.2.1), and the raw eq. 7.1 "
+                  "fitness without any penalty. CSV, one row per input");
     cmd.option("inputs", opts->inputs, "run folders or population XML files").required();
     cmd.option("--out", opts->out, "write the CSV here (atomically) instead of stdout");
     cmd.option("--shaking-above", opts->shaking_above, "dominant command frequency, Hz, above which a gait is "
@@ -32,12 +33,13 @@ void add_assess_command(Command& app, CommandContext& ctx) {
     cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "assess", [&] {
             std::ostringstream csv;
-            csv << "input,fitness,dominant_hz,mean_height,min_height,final_up,flipped,shaking\n";
+            csv << "input,fitness,dominant_hz,mean_height,min_height,final_up,flipped,shaking,raw_fitness\n";
             for (const std::string& input : opts->inputs) {
                 const auto items = replay(input, "best", 1, 10.0, true);
                 const GaitAssessment a = assess_gait(items.at(0), opts->shaking_above);
-                csv << fmt::format("{},{:.17g},{:.4f},{:.4f},{:.4f},{:.4f},{},{}\n", input, a.fitness, a.dominant_hz,
-                                   a.mean_height, a.min_height, a.final_up, a.flipped ? 1 : 0, a.shaking ? 1 : 0);
+                csv << fmt::format("{},{:.17g},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{:.17g}\n", input, a.fitness,
+                                   a.dominant_hz, a.mean_height, a.min_height, a.final_up, a.flipped ? 1 : 0,
+                                   a.shaking ? 1 : 0, a.raw_fitness);
             }
             if (opts->out.empty()) {
                 std::cout << csv.str();

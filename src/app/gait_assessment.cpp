@@ -19,6 +19,7 @@ GaitAssessment assess_gait(const ReplayItem& item, double shaking_above_hz) {
 
     GaitAssessment a;
     a.fitness = item.replayed_fitness;
+    a.raw_fitness = item.raw_fitness;
     const std::size_t joints = item.trace.front().desired.size();
     std::vector<double> commands;
     commands.reserve(item.trace.size() * joints);

@@ -70,12 +70,12 @@ std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& setti
         throw InputError("a gait run keeps one gait to replay: use --individual best", src.population.string());
     const gait::Setup setup = gait::Setup::from_settings(settings);
     const io::GaitFile g = io::load_gait(src.population);
-    io::check_compatible(g, settings, setup.encoding.dimension(), src.population.string());
-    sim::GaitController controller(setup.encoding.decode(g.champion.x));
+    io::check_compatible(g, settings, setup.dimension(), src.population.string());
+    const std::unique_ptr<sim::Controller> controller = setup.controller(g.champion.x);
     sim::EvalOptions opt;
     opt.record_fps = fps;
     opt.record_trace = trace;
-    sim::EvalResult r = sim::evaluate(setup.robot, controller, setup.sim, opt);
+    sim::EvalResult r = sim::evaluate(setup.robot, *controller, setup.sim, opt);
     ReplayItem item;
     item.label = fmt::format("generation {}, best {} gait", g.generation, g.optimizer);
     item.stored_fitness = g.champion.fitness;
@@ -85,6 +85,7 @@ std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& setti
     if (trace)
         for (const auto& row : item.trace) item.raw_outputs.push_back(row.desired);   // open loop: the commands
     item.replayed_fitness = r.fitness;
+    item.raw_fitness = r.fitness;   // no penalty in the gait experiment
     item.centre_body = centre_body_of(setup.robot);
     item.joint_names = joint_names_of(setup.robot);
     return {std::move(item)};
@@ -146,6 +147,7 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
                                               o.control.outputs.begin() + static_cast<std::ptrdiff_t>((step + 1) * j));
         }
         item.replayed_fitness = o.fitness;
+        item.raw_fitness = o.distance_fitness;
         item.centre_body = centre_body;
         item.joint_names = joint_names;
         items.push_back(std::move(item));

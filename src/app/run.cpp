@@ -12,6 +12,7 @@
 #include "cic/io/xml.hpp"
 #include "cic/io/gait_xml.hpp"
 #include "cic/experiments/experiment.hpp"
+#include "cic/experiments/gait/restarts.hpp"
 #include "cic/experiments/gait/setup.hpp"
 #include "run_support.hpp"
 
@@ -32,8 +33,8 @@ PreparedRun prepare_run(io::Settings s) {
         try {
             io::GaitFile loaded = io::load_gait(from);
             const gait::Setup setup = gait::Setup::from_settings(s);
-            io::check_compatible(loaded, s, setup.encoding.dimension(), from);
-            (void)gait::resume_search(setup, loaded, from);   // replays: a checkpoint that does not is refused now
+            io::check_compatible(loaded, s, setup.dimension(), from);
+            (void)gait::resume_search(setup, gait::restart_rule_of(s), loaded, from);   // replays: a checkpoint that does not is refused now
             p.gait_resume = std::move(loaded);
         } catch (const InputError& e) {
             throw InputError("<Control> populationXmlLoadFrom: " + e.message(), e.file(), e.line());

@@ -9,6 +9,7 @@
 #include "cic/io/population_xml.hpp"
 #include "cic/io/stats_csv.hpp"
 #include "cic/io/xml.hpp"
+#include "cic/experiments/gait/restarts.hpp"
 #include "cic/experiments/gait/setup.hpp"
 #include "run_support.hpp"
 
@@ -47,17 +48,8 @@ io::GaitFile checkpoint_of(const gait::Search& search, const io::Settings& s) {
     for (const auto& c : search.population()) g.population.push_back({c.x, c.fitness});
     g.champion = {search.champion().x, search.champion().fitness};
     g.history = search.history();
+    if (search.restart_rule().mode != gait::Restarts::None) g.restarts = gait::restart_record_of(search);
     return g;
-}
-
-std::string describe_gait(const sim::GaitSpec& g) {
-    std::string out = fmt::format("frequency {:.4f} Hz; per joint amplitude/phase/offset", g.frequency);
-    for (const auto& j : g.joints) {
-        out += fmt::format(" [{:.3f} {:.3f} {:.3f}", j.amplitude, j.phase, j.offset);
-        if (j.amplitude2 != 0 || j.phase2 != 0) out += fmt::format(" {:.3f} {:.3f}", j.amplitude2, j.phase2);
-        out += "]";
-    }
-    return out;
 }
 
 } // namespace
@@ -70,13 +62,23 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
     auto say = [&](const std::string& line) { console.say(line); };
     const int workers = resolved_workers(s);
     const gait::Setup setup = gait::Setup::from_settings(s);
+    const gait::RestartRule restart_rule = gait::restart_rule_of(s);
+    const bool ipop = restart_rule.mode == gait::Restarts::Ipop;
     gait::Search search = prepared.gait_resume
-        ? gait::resume_search(setup, *prepared.gait_resume, s.control.population_load_from)
-        : gait::Search(setup.optimizer, setup.encoding.dimension(), setup.population, setup.sigma0, s.experiment.seed);
+        ? gait::resume_search(setup, restart_rule, *prepared.gait_resume, s.control.population_load_from)
+        : gait::make_search(setup, restart_rule, s.experiment.seed);
     say(fmt::format("cic {}: gait experiment ({} over {} parameters, {} candidates per generation, budget {} "
                     "evaluations), seed {}, {} worker{}, output {}",
-                    CIC_VERSION, gait::to_string(setup.optimizer), setup.encoding.dimension(), setup.population,
+                    CIC_VERSION, gait::to_string(setup.optimizer), setup.dimension(), setup.population,
                     s.gait.evaluations, s.experiment.seed, workers, workers == 1 ? "" : "s", opt.run_dir.string()));
+    if (ipop)
+        say(fmt::format("ipop restarts: a start stagnates when its best rises by <= {:g} over {} generations{}; "
+                        "each restart doubles the population",
+                        restart_rule.tolerance,
+                        restart_rule.patience > 0 ? std::to_string(restart_rule.patience)
+                                                  : "10 + ceil(30 n / lambda)",
+                        restart_rule.tol_x > 0 ? fmt::format(", or collapses below a spread of {:g}", restart_rule.tol_x)
+                                               : ""));
     const experiments::Context ctx = make_context(s, opt, console);
     gait::Evaluator evaluator(ctx, setup);
     long failed_before = 0;
@@ -86,7 +88,17 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
     auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
     std::optional<io::StatsWriter> stats;
     fs::create_directories(opt.run_dir / "populations");
+    int restarts_said = search.restarts();
+    int last_stalled = 0;          // why the restart a step begins was decided
+    bool last_collapsed = false;
     auto after_generation = [&](double generation_seconds) {
+        if (search.restarts() > restarts_said) {
+            restarts_said = search.restarts();
+            say(fmt::format("restart {}: population {} from generation {}, after {} generations without improvement "
+                            "of more than {:g}{}",
+                            search.restarts(), search.population_size(), search.generation(), last_stalled,
+                            restart_rule.tolerance, last_collapsed ? " (the candidates had collapsed)" : ""));
+        }
         const gp::GenerationRecord r = record_of(search, evaluator.failed() - failed_before, seconds_since(started),
                                                  generation_seconds);
         failed_before = evaluator.failed();
@@ -95,10 +107,14 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
                                 r.generation, r.best, r.mean, r.median, search.champion().fitness, r.evaluations,
                                 r.wall_seconds));
         const int interval = std::max(1, s.experiment.checkpoint_interval);
-        if ((r.generation + 1) % interval == 0 || s.gait.evaluations - search.evaluations() < setup.population)
+        if ((r.generation + 1) % interval == 0 || s.gait.evaluations - search.evaluations() < search.next_batch_size())
             write_checkpoint(opt.run_dir, r.generation, io::to_xml(checkpoint_of(search, s)));
-        const long per_generation = setup.population;
-        const int max_generations = static_cast<int>(s.gait.evaluations / per_generation);
+        const long per_generation = search.population_size();
+        // The generations the budget allows at the next batch's size (without
+        // restarts: floor(budget / lambda)).
+        const int max_generations =
+            r.generation + 1 +
+            static_cast<int>(std::max(0L, s.gait.evaluations - search.evaluations()) / search.next_batch_size());
         ProgressLine p;
         p.generation = r.generation;
         p.max_generations = max_generations;
@@ -136,11 +152,13 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
             reason = "interrupted";
             break;
         }
-        if (search.evaluations() + setup.population > s.gait.evaluations) {
+        if (search.evaluations() + search.next_batch_size() > s.gait.evaluations) {
             reason = "evaluation budget";
             break;
         }
         const auto t0 = Clock::now();
+        last_stalled = search.stalled_generations();
+        last_collapsed = search.collapsed();
         search.step(batch);
         after_generation(seconds_since(t0));
     }
@@ -149,8 +167,10 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
     const std::string summary =
         fmt::format("stopped: {} at generation {}\nbest: fitness {:.17g} ({}; robot {})\nevaluations: {}\nbest gait: {}\n",
                     reason, search.generation(), best.fitness, gait::to_string(setup.optimizer), setup.robot.name,
-                    search.evaluations(), describe_gait(setup.encoding.decode(best.x)));
-    console.summary(summary);
+                    search.evaluations(), setup.describe(best.x));
+    console.summary(ipop ? summary + fmt::format("restarts: {} (population {})\n", search.restarts(),
+                                                 search.population_size())
+                         : summary);
     if (reason == "interrupted") {
         // The checkpoint of the last finished generation is on disk unless the interval skipped it.
         write_checkpoint(opt.run_dir, search.generation(), io::to_xml(checkpoint_of(search, s)));

@@ -17,12 +17,21 @@ namespace fs = std::filesystem;
 
 // "Section.key=value" naming a real key (the value is checked later, with the
 // settings, when every task's settings are loaded).
-std::string checked_override(const io::xml::Node& n, const std::string& text) {
+// A path value in a sweep file, like one in a settings file, is read against
+// the file's folder (not the folder cic runs in), and stored absolute.
+std::string resolved_path(const std::string& value, const fs::path& folder) {
+    if (value.empty() || fs::path(value).is_absolute()) return value;
+    return (folder / value).lexically_normal().string();
+}
+
+std::string checked_override(const io::xml::Node& n, const std::string& text, const fs::path& folder) {
     const auto eq = text.find('='), dot = text.find('.');
     if (eq == std::string::npos || dot == std::string::npos || dot > eq)
         throw n.error("<set> expects Section.key=value, got \"" + text + "\"");
     const std::string section = text.substr(0, dot), key = text.substr(dot + 1, eq - dot - 1);
-    if (!io::find_setting(section, key)) throw n.error("<set> names no settings key: <" + section + "> " + key);
+    const io::SettingKey* k = io::find_setting(section, key);
+    if (!k) throw n.error("<set> names no settings key: <" + section + "> " + key);
+    if (k->type == io::ValueType::Path) return text.substr(0, eq + 1) + resolved_path(text.substr(eq + 1), folder);
     return text;
 }
 
@@ -96,12 +105,17 @@ SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
             store_text = c.text();
             if (store_text.empty()) throw c.error("<store> is empty: give a folder (relative to the study folder)");
         } else if (nm == "set") {
-            plan.common.push_back(checked_override(c, c.text()));
+            plan.common.push_back(checked_override(c, c.text(), plan.file.parent_path()));
         } else if (nm == "grid") {
             for (const auto& v : c.children()) {
                 if (v.name() != "vary") throw v.error("unknown element <" + std::string(v.name()) + "> in <grid>; allowed: vary");
                 Vary vary{v.attribute("key").value_or(""), words(v.text())};
-                checked_override(v, vary.key + "=x");
+                checked_override(v, vary.key + "=x", plan.file.parent_path());
+                const std::string dot_key = vary.key;
+                const io::SettingKey* k = io::find_setting(dot_key.substr(0, dot_key.find('.')),
+                                                           dot_key.substr(dot_key.find('.') + 1));
+                if (k->type == io::ValueType::Path)
+                    for (auto& value : vary.values) value = resolved_path(value, plan.file.parent_path());
                 if (vary.values.empty()) throw v.error("<vary key=\"" + vary.key + "\"> has no values");
                 if (std::set<std::string>(vary.values.begin(), vary.values.end()).size() != vary.values.size())
                     throw v.error("<vary key=\"" + vary.key + "\"> lists a value twice");
@@ -117,7 +131,7 @@ SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
                 if (o.name == v.name) throw c.error("variant " + v.name + " is given twice");
             for (const auto& s : c.children()) {
                 if (s.name() != "set") throw s.error("unknown element <" + std::string(s.name()) + "> in <variant>; allowed: set");
-                v.overrides.push_back(checked_override(s, s.text()));
+                v.overrides.push_back(checked_override(s, s.text(), plan.file.parent_path()));
             }
             variants.push_back(std::move(v));
         } else if (nm == "repeats") {

@@ -20,6 +20,7 @@ std::map<std::string, JobHandler> make_worker_job_kinds(const WorkerContext& con
     });
     kinds["sine"] = &sim::run_sine_job;   // robot + SimConfig + sine joints -> fitness reply
     kinds["gait"] = &sim::run_gait_job;   // robot + SimConfig + gait spec -> fitness reply
+    kinds["cpg"] = &sim::run_cpg_job;     // robot + SimConfig + CPG weights -> fitness reply
     return kinds;
 }
 

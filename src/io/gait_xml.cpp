@@ -79,6 +79,14 @@ std::string to_xml(const GaitFile& g) {
     std::string history;
     for (double f : g.history) history += (history.empty() ? "" : " ") + exact(f);
     root.add_child("history", history).set_attribute("count", std::to_string(g.history.size()));
+    if (g.restarts) {
+        auto r = root.add_element("restarts");
+        r.set_attribute("count", std::to_string(g.restarts->count));
+        r.set_attribute("populationSize", std::to_string(g.restarts->population_size));
+        std::string gens;
+        for (int v : g.restarts->generations) gens += (gens.empty() ? "" : " ") + std::to_string(v);
+        r.set_attribute("generations", gens);
+    }
     return doc.to_string();
 }
 
@@ -126,12 +134,35 @@ GaitFile parse_gait(std::string_view text, const std::string& name) {
                 throw c.error("the history holds " + std::to_string(count) + " fitness values for " +
                               std::to_string(g.evaluations) + " evaluations");
             state = true;
+        } else if (n == "restarts") {
+            if (g.restarts) throw c.error("<restarts> appears twice");
+            GaitRestartRecord r;
+            r.count = attribute<int>(c, "count");
+            r.population_size = attribute<int>(c, "populationSize");
+            if (r.count < 0 || r.population_size < 1)
+                throw c.error("<restarts> count must be >= 0 and populationSize >= 1");
+            std::istringstream in(std::string(c.attribute("generations").value_or("")));
+            for (std::string tok; in >> tok;) {
+                const int v = parse_number<int>(c, "generation", tok);
+                if (v < 1 || v > g.generation || (!r.generations.empty() && v <= r.generations.back()))
+                    throw c.error("<restarts> generations must rise, each in [1, " + std::to_string(g.generation) +
+                                  "]; found " + tok);
+                r.generations.push_back(v);
+            }
+            if (static_cast<int>(r.generations.size()) != r.count)
+                throw c.error("<restarts count=\"" + std::to_string(r.count) + "\"> lists " +
+                              std::to_string(r.generations.size()) + " generations (truncated or edited?)");
+            g.restarts = std::move(r);
         } else {
-            throw c.error("unknown element <" + std::string(n) + "> in <gaitRun>; allowed: champion, candidates, history");
+            throw c.error("unknown element <" + std::string(n) +
+                          "> in <gaitRun>; allowed: champion, candidates, history, restarts");
         }
     }
     if (!champion || !candidates || !state)
         throw root.error("a gait checkpoint needs <champion>, <candidates> and <history> (truncated?)");
+    if (g.restarts && static_cast<std::size_t>(g.restarts->population_size) != g.population.size())
+        throw root.error("<restarts populationSize=\"" + std::to_string(g.restarts->population_size) + "\"> but " +
+                         std::to_string(g.population.size()) + " candidates");
     return g;
 }
 

@@ -21,7 +21,11 @@ std::string settings_digest(const Settings& s) {
         if (k.section == "Control" || ignored.count(full)) continue;
         // The gait baseline's keys shape only gait runs.
         if (k.section == "Gait" && s.experiment.type != ExperimentType::Gait) continue;
-        lines += full + "=" + k.get(s) + "\n";
+        // The restart keys shape only runs with restarts (so other gait runs keep the digest they had before them).
+        if (k.section == "Gait" && k.key.rfind("restart", 0) == 0 && s.gait.restarts == GaitRestarts::None) continue;
+        const std::string value = k.get(s);
+        if (!k.digest_at_default && value == default_text(k)) continue;
+        lines += full + "=" + value + "\n";
     }
     return hex16(mix64(fnv1a_64(lines)));
 }

@@ -328,6 +328,39 @@ void bloat_rows(std::vector<SettingKey>& t) {
                                        "Dynamic Limits variant: 0 simple, 1 heavy, 2 very heavy", FIELD(bloat.variant)));
 }
 
+// Neural keys beyond the thesis (docs/hypergp.md). Their defaults keep the
+// thesis's network, and they stay out of the digest at their defaults.
+void beyond_thesis_neural_rows(std::vector<SettingKey>& t) {
+    const std::size_t first = t.size();
+    t.push_back(enum_row<nn::Substrate>("Neural", "substrate",
+                                        {{nn::Substrate::Network, {"network"}},
+                                         {nn::Substrate::Cpg, {"cpg"}},
+                                         {nn::Substrate::Gait, {"gait"}}},
+                                        "What the genotype is queried to build: network (the thesis's recurrent "
+                                        "network), cpg (coupled oscillators, one per joint) or gait (each joint's "
+                                        "amplitude, phase and offset, one evolved frequency)",
+                                        FIELD(neural.substrate)));
+    t.push_back(bool_row("Neural", "evolveClock",
+                         "network: the clock inputs' frequency is read from the genotype, in "
+                         "[frequencyMin, frequencyMax], instead of clockPeriod",
+                         FIELD(neural.evolve_clock)));
+    t.push_back(double_row("Neural", "frequencyMin", kPositive,
+                           "Lowest evolved frequency (evolveClock, substrate gait), Hz", FIELD(neural.frequency_min)));
+    t.push_back(double_row("Neural", "frequencyMax", kPositive,
+                           "Highest evolved frequency (evolveClock, substrate gait), Hz", FIELD(neural.frequency_max)));
+    t.push_back(double_row("Neural", "cpgWeightScale", kPositive,
+                           "cpg: largest |weight|, rad/s (w = scale tanh(tree)); a lone oscillator of weight w "
+                           "runs at |w| / 2 pi Hz",
+                           FIELD(neural.cpg_weight_scale)));
+    t.push_back(int_row("Neural", "cpgHops", 1, 100,
+                        "cpg: joints whose modules are at most this many links apart in the body tree are coupled",
+                        FIELD(neural.cpg_hops)));
+    t.push_back(double_row("Neural", "cpgFeedback", kNonNegative,
+                           "cpg: largest feedback gain of the joint angles into the oscillators, 1/s; 0 = open loop",
+                           FIELD(neural.cpg_feedback)));
+    for (std::size_t i = first; i < t.size(); ++i) t[i].digest_at_default = false;
+}
+
 // Neural
 void neural_rows(std::vector<SettingKey>& t) {
     t.push_back(double_row("Neural", "synopsisThreshold", kNonNegative,
@@ -362,6 +395,7 @@ void neural_rows(std::vector<SettingKey>& t) {
                            FIELD(neural.penalty_max_frequency)));
     t.push_back(double_row("Neural", "penaltyWeight", kNonNegative, "Weight of the command-change penalty",
                            FIELD(neural.penalty_weight)));
+    beyond_thesis_neural_rows(t);
 }
 
 // SymbolicRegression
@@ -417,6 +451,33 @@ void gait_rows(std::vector<SettingKey>& t) {
                                      "so that runs made before this key replay alike) or reflect (mirrored at the "
                                      "bounds; recommended, used by settings/r1_gait.xml)",
                                      FIELD(gait.bounds)));
+    t.push_back(enum_row<GaitController>("Gait", "controller",
+                                         {{GaitController::Sine, {"sine"}}, {GaitController::Cpg, {"cpg"}}},
+                                         "What the parameters drive: sine (per joint amplitude, phase, offset and "
+                                         "one frequency) or cpg (the weights w_i, w_ij and feedback gains of "
+                                         "HyperGP's cpg substrate, Neural.cpg* keys; docs/hypergp.md)",
+                                         FIELD(gait.controller)));
+    t.back().digest_at_default = false;
+    t.push_back(enum_row<GaitRestarts>("Gait", "restarts", {{GaitRestarts::None, {"none"}}, {GaitRestarts::Ipop, {"ipop"}}},
+                                       "Restarts of cmaes and xnes: none (one start) or ipop (Auger & Hansen 2005: when "
+                                       "a start stagnates, start again from fresh uniform points with twice the "
+                                       "population, lambda_r = lambda_0 2^r, keeping the best gait; within the "
+                                       "budget). sade allows none only. See docs/baselines.md, \"IPOP restarts\"",
+                                       FIELD(gait.restarts)));
+    t.push_back(int_row("Gait", "restartPatience", 0, 1000000,
+                        "ipop: a start stagnates when its best fitness has risen by no more than restartTolerance "
+                        "over this many generations; 0 = 10 + ceil(30 n / lambda_r) (Hansen's TolHistFun window; "
+                        "n parameters, lambda_r the start's population)",
+                        FIELD(gait.restart_patience)));
+    t.push_back(double_row("Gait", "restartTolerance", kNonNegative,
+                           "ipop: the rise of a start's best fitness (metres) over restartPatience generations at or "
+                           "below which the start stagnates (0 = only no rise at all)",
+                           FIELD(gait.restart_tolerance)));
+    t.push_back(double_row("Gait", "restartTolX", kUnit,
+                           "ipop: a start has collapsed, and restarts, when every parameter's standard deviation "
+                           "across its current candidates is below this (in the unit box, where each range is 1); "
+                           "0 = no collapse test",
+                           FIELD(gait.restart_tol_x)));
 }
 
 std::vector<SettingKey> build_table() {

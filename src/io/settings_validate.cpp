@@ -96,14 +96,38 @@ void validate(const Settings& s, const Locations& locs) {
         c.require(t < gp.trees_per_genotype, {"Neural.forestMap", "GP.numberOfTreesInForestGenotype"},
                   "a tree index is past the last tree of the genotype");
 
+    c.require(nn.frequency_min <= nn.frequency_max, {"Neural.frequencyMin", "Neural.frequencyMax"},
+              "the frequency range is empty");
+    if (s.experiment.type == ExperimentType::HyperGP) {
+        c.require(!nn.evolve_clock || (nn.substrate == nn::Substrate::Network && nn.clock_inputs),
+                  {"Neural.evolveClock", "Neural.clockInputs", "Neural.substrate"},
+                  "an evolved clock needs the network substrate with clock inputs (clockInputs = 1)");
+        // The network's inputs and averaging do not exist in the other substrates: refuse
+        // them rather than ignore them.
+        const bool network = nn.substrate == nn::Substrate::Network;
+        c.require(network || (!nn.clock_inputs && !nn.bias_input),
+                  {"Neural.clockInputs", "Neural.biasInput", "Neural.substrate"},
+                  "clock and bias inputs belong to the network substrate; cpg and gait keep their own rhythm");
+        c.require(network || nn.sample_average_count == 1, {"Neural.sampleAverageCount", "Neural.substrate"},
+                  "sample averaging belongs to the network substrate");
+        c.require(nn.substrate == nn::Substrate::Cpg || nn.cpg_feedback == 0.0, {"Neural.cpgFeedback", "Neural.substrate"},
+                  "feedback gains belong to the cpg substrate");
+    }
+
     c.require(s.symreg.range_min < s.symreg.range_max,
               {"SymbolicRegression.rangeMin", "SymbolicRegression.rangeMax"}, "the sampled range is empty");
 
+    c.require(s.gait.controller != GaitController::Cpg || !s.gait.second_harmonic,
+              {"Gait.secondHarmonic", "Gait.controller"}, "a second harmonic belongs to the sine controller");
     c.require(s.gait.frequency_min <= s.gait.frequency_max, {"Gait.frequencyMin", "Gait.frequencyMax"},
               "the frequency range is empty");
     c.require(s.experiment.type != ExperimentType::Gait || s.gait.population_size == 0 ||
                   s.gait.population_size >= (s.gait.optimizer == GaitOptimizer::Sade ? 7 : 5),
               {"Gait.populationSize", "Gait.optimizer"}, "pagmo's cmaes and xnes need at least 5 candidates, sade 7");
+    c.require(s.gait.restarts == GaitRestarts::None || s.gait.optimizer != GaitOptimizer::Sade,
+              {"Gait.restarts", "Gait.optimizer"},
+              "ipop restarts are built for cmaes and xnes only (allowed: Gait.restarts = none | ipop with "
+              "Gait.optimizer = cmaes | xnes; none with sade)");
     c.require(s.experiment.type != ExperimentType::Gait || s.gait.population_size <= s.gait.evaluations,
               {"Gait.populationSize", "Gait.evaluations"}, "the budget does not cover one generation");
 

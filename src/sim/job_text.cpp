@@ -1,5 +1,6 @@
 // Text forms for worker jobs (see job_text.hpp).
 #include "cic/sim/job_text.hpp"
+#include "cic/sim/cpg.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -205,6 +206,65 @@ std::string run_gait_job(const std::string& body) {
         j.phase2 = read_double(in);
     }
     GaitController controller(std::move(gait));
+    return format_eval_reply(evaluate(robot, controller, cfg));
+}
+
+std::string make_cpg_job(const RobotSpec& robot, const SimConfig& cfg, const CpgSpec& cpg) {
+    validate(cpg);
+    std::ostringstream out;
+    out << "cpg\n";
+    write_robot_text(out, robot);
+    write_config_text(out, cfg);
+    out << "range " << hexfloat(cpg.range) << "\ninitial " << hexfloat(cpg.initial) << "\nstep "
+        << hexfloat(cpg.control_step) << "\njoints " << cpg.self.size() << '\n';
+    for (std::size_t i = 0; i < cpg.self.size(); ++i)
+        out << hexfloat(cpg.self[i]) << ' ' << (cpg.feedback.empty() ? hexfloat(0.0) : hexfloat(cpg.feedback[i])) << '\n';
+    out << "feedback " << (cpg.feedback.empty() ? 0 : 1) << "\nedges " << cpg.edges.size() << '\n';
+    for (std::size_t k = 0; k < cpg.edges.size(); ++k)
+        out << cpg.edges[k].a << ' ' << cpg.edges[k].b << ' ' << hexfloat(cpg.coupling[k]) << '\n';
+    return out.str();
+}
+
+CpgSpec read_cpg_spec(std::istream& in) {
+    CpgSpec cpg;
+    expect_word(in, "range");
+    cpg.range = read_double(in);
+    expect_word(in, "initial");
+    cpg.initial = read_double(in);
+    expect_word(in, "step");
+    cpg.control_step = read_double(in);
+    expect_word(in, "joints");
+    const long n = read_int(in);
+    if (n < 1 || n > 100000) bad("bad joint count");
+    std::vector<double> feedback;
+    for (long i = 0; i < n; ++i) {
+        cpg.self.push_back(read_double(in));
+        feedback.push_back(read_double(in));
+    }
+    expect_word(in, "feedback");
+    if (read_int(in) != 0) cpg.feedback = std::move(feedback);
+    expect_word(in, "edges");
+    const long e = read_int(in);
+    if (e < 0 || e > n * n) bad("bad edge count");
+    for (long k = 0; k < e; ++k) {
+        const long a = read_int(in), b = read_int(in);
+        if (a < 0 || b < 0 || a >= n || b >= n) bad("edge out of range");
+        cpg.edges.push_back({static_cast<int>(a), static_cast<int>(b)});
+        cpg.coupling.push_back(read_double(in));
+    }
+    try {
+        validate(cpg);
+    } catch (const std::invalid_argument& err) {
+        bad(err.what());
+    }
+    return cpg;
+}
+
+std::string run_cpg_job(const std::string& body) {
+    std::istringstream in(body);
+    const RobotSpec robot = read_robot_text(in);
+    const SimConfig cfg = read_config_text(in);
+    CpgController controller(read_cpg_spec(in));
     return format_eval_reply(evaluate(robot, controller, cfg));
 }
 

@@ -71,6 +71,31 @@ TEST(SweepFile, PlansEveryConfigurationAndSeed) {
     fs::remove_all(dir);
 }
 
+// A path in a sweep file is read against the sweep file's folder, as one in a
+// settings file is, whatever folder cic runs in: in <set>, in a variant and in a <vary>.
+TEST(SweepFile, RelativePathsAreReadAgainstTheSweepFilesFolder) {
+    const auto dir = temp_dir("sweep-paths");
+    fs::create_directories(dir / "studies");
+    write_text(dir / "base.xml", "<settings><Control><maximumIterations>2</maximumIterations></Control></settings>\n");
+    write_text(dir / "studies" / "s.xml", R"(<sweep name="p">
+  <base>../base.xml</base>
+  <set>SymbolicRegression.dataFile=data/a.csv</set>
+  <grid><vary key="Control.populationXmlLoadFrom">pop/a.xml /abs/b.xml</vary></grid>
+  <variant name="v"><set>Simulator.robotFile=../robots/r.xml</set></variant>
+  <repeats count="1" firstSeed="1"/>
+</sweep>
+)");
+    const app::SweepPlan plan = app::read_sweep_file(dir / "studies" / "s.xml");
+    const auto folder = fs::absolute(dir / "studies").lexically_normal();
+    EXPECT_EQ(plan.common.at(0), "SymbolicRegression.dataFile=" + (folder / "data/a.csv").string());
+    ASSERT_EQ(plan.configs.size(), 2u);
+    EXPECT_EQ(plan.configs[0].overrides.at(0), "Control.populationXmlLoadFrom=" + (folder / "pop/a.xml").string());
+    EXPECT_EQ(plan.configs[1].overrides.at(0), "Control.populationXmlLoadFrom=/abs/b.xml");
+    EXPECT_EQ(plan.configs[0].overrides.at(1),
+              "Simulator.robotFile=" + (folder / "../robots/r.xml").lexically_normal().string());
+    fs::remove_all(dir);
+}
+
 // Every study the repository ships (experiments/**/*.xml with a <sweep> root)
 // passes the schema and plans with every configuration's settings accepted, so a
 // reader can rerun any of them as the docs say.

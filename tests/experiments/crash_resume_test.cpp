@@ -20,25 +20,6 @@ namespace {
 using namespace cic::testing;
 namespace fs = std::filesystem;
 
-// Starts cic on `settings` writing below `output`; returns its pid.
-pid_t start(const fs::path& settings, const fs::path& output, const fs::path& log, const std::string& extra) {
-    const pid_t pid = fork();
-    if (pid == 0) {
-        setpgid(0, 0);   // its own process group, as a batch job: signals can reach cic and its workers
-        freopen(log.c_str(), "w", stdout);
-        freopen(log.c_str(), "a", stderr);
-        const std::string bin = cic_binary(), cfg = settings.string(), out = output.string();
-        if (extra.empty())
-            execl(bin.c_str(), bin.c_str(), "--quiet", "--settings", cfg.c_str(), "--output", out.c_str(),
-                  static_cast<char*>(nullptr));
-        else
-            execl(bin.c_str(), bin.c_str(), "--quiet", "--settings", cfg.c_str(), "--output", out.c_str(), "--set",
-                  extra.c_str(), static_cast<char*>(nullptr));
-        _exit(127);
-    }
-    return pid;
-}
-
 TEST(CrashResume, KilledAtRandomMomentsAndResumedGivesTheSameBytes) {
     const auto dir = temp_dir("crash");
     write_text(dir / "run.xml", tiny_hypergp_settings(8, 2));
@@ -55,7 +36,7 @@ TEST(CrashResume, KilledAtRandomMomentsAndResumedGivesTheSameBytes) {
         const double at = moment(rng) * seconds;
         SCOPED_TRACE("killed after " + std::to_string(at) + " s of a " + std::to_string(seconds) + " s run");
         const fs::path out = dir / ("killed-" + std::to_string(k));
-        const pid_t pid = start(dir / "run.xml", out, dir / "killed.log", "");
+        const pid_t pid = start_cic(dir / "run.xml", out, dir / "killed.log", "");
         ASSERT_GT(pid, 0);
         std::this_thread::sleep_for(std::chrono::duration<double>(at));
         kill(pid, SIGKILL);
@@ -67,7 +48,7 @@ TEST(CrashResume, KilledAtRandomMomentsAndResumedGivesTheSameBytes) {
         if (fs::exists(out) && !only_run(out).empty() && fs::exists(only_run(out) / "population.xml"))
             checkpoint = only_run(out) / "population.xml";
         const fs::path resumed = dir / ("resumed-" + std::to_string(k));
-        const pid_t again = start(dir / "run.xml", resumed, dir / "resumed.log",
+        const pid_t again = start_cic(dir / "run.xml", resumed, dir / "resumed.log",
                                   checkpoint.empty() ? "" : "Control.populationXmlLoadFrom=" + checkpoint.string());
         waitpid(again, &status, 0);
         ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(dir / "resumed.log");
@@ -86,7 +67,7 @@ TEST(CrashResume, SigtermToTheWholeJobResumesExactly) {
     const auto reference = run_settings(dir, "reference", read_text(dir / "run.xml"));
     ASSERT_EQ(reference.rc, 0) << reference.log;
 
-    const pid_t pid = start(dir / "run.xml", dir / "term", dir / "term.log", "");
+    const pid_t pid = start_cic(dir / "run.xml", dir / "term", dir / "term.log", "");
     ASSERT_GT(pid, 0);
     fs::path checkpoint;   // wait for the first checkpoint, then signal the group
     for (int i = 0; i < 600 && checkpoint.empty(); ++i) {
@@ -104,7 +85,7 @@ TEST(CrashResume, SigtermToTheWholeJobResumesExactly) {
     ASSERT_EQ(WEXITSTATUS(status), 143) << read_text(dir / "term.log");
     EXPECT_EQ(read_text(only_run(dir / "term") / "run.log").find("worker replaced"), std::string::npos)
         << "a worker died of the signal";
-    const pid_t again = start(dir / "run.xml", dir / "resumed", dir / "resumed.log",
+    const pid_t again = start_cic(dir / "run.xml", dir / "resumed", dir / "resumed.log",
                               "Control.populationXmlLoadFrom=" + checkpoint.string());
     waitpid(again, &status, 0);
     ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(dir / "resumed.log");

@@ -1,6 +1,7 @@
 // gait::Encoding and gait::Search (pagmo2): bad arguments throw, the same seed
 // gives the same search, a saved state continues bit for bit, and the batch
-// evaluation sees every point the optimiser evaluates.
+// evaluation sees every point the optimiser evaluates; IPOP restarts happen on
+// a stagnating function, double the population and replay exactly.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -156,6 +157,177 @@ TEST_P(EveryOptimizer, SavedStateContinuesBitForBit) {
     EXPECT_EQ(resumed.history(), whole.history());
     EXPECT_EQ(resumed.generation(), 20);
 }
+
+// IPOP restarts (RestartRule). A landscape of plateaus (steps of 0.05 on the
+// sphere): a start's best soon stops rising, so restarts do happen.
+double plateaus(const std::vector<double>& x) { return std::floor(sphere(x) / 0.05) * 0.05; }
+
+struct RecordingEvaluator {
+    std::vector<std::size_t> batches;                      // size of each batch, in order
+    std::vector<std::vector<std::vector<double>>> points;  // the points of each batch
+    double (*f)(const std::vector<double>&) = plateaus;
+    std::vector<double> operator()(const std::vector<std::vector<double>>& xs) {
+        batches.push_back(xs.size());
+        points.push_back(xs);
+        std::vector<double> out;
+        for (const auto& x : xs) out.push_back(f(x));
+        return out;
+    }
+};
+
+double flat(const std::vector<double>&) { return 1.5; }
+
+RestartRule ipop(int patience, double tolerance = 0.0, double tol_x = 0.0) {
+    return {Restarts::Ipop, patience, tolerance, tol_x};
+}
+
+TEST(GaitSearchIpop, BadArgumentsThrow) {
+    EXPECT_THROW(Search(Optimizer::Sade, 4, 8, 0.3, 1, ipop(3)), std::invalid_argument);
+    EXPECT_NO_THROW(Search(Optimizer::Sade, 4, 8, 0.3, 1, RestartRule{}));
+    EXPECT_NO_THROW(Search(Optimizer::Xnes, 4, 8, 0.3, 1, ipop(3)));
+    EXPECT_THROW(Search(Optimizer::Cmaes, 4, 8, 0.3, 1, ipop(-1)), std::invalid_argument);
+    EXPECT_THROW(Search(Optimizer::Cmaes, 4, 8, 0.3, 1, ipop(3, -0.1)), std::invalid_argument);
+    EXPECT_THROW(Search(Optimizer::Cmaes, 4, 8, 0.3, 1, ipop(3, std::nan(""))), std::invalid_argument);
+    EXPECT_THROW(Search(Optimizer::Cmaes, 4, 8, 0.3, 1, ipop(3, 0.0, -1.0)), std::invalid_argument);
+    EXPECT_THROW(Search(Optimizer::Cmaes, 4, 8, 0.3, 1, ipop(3, 0.0, INFINITY)), std::invalid_argument);
+    EXPECT_EQ(restart_seed(9, 0), 9u);
+    EXPECT_NE(restart_seed(9, 1), restart_seed(9, 2));
+    EXPECT_NE(restart_seed(9, 1), restart_seed(10, 1));
+}
+
+// On a flat function every start stagnates after `patience` generations: the
+// next generation is a fresh start from uniform points with twice the
+// population, announced by next_batch_size() before it is evaluated.
+TEST(GaitSearchIpop, AFlatFunctionRestartsWithDoubledPopulations) {
+    RecordingEvaluator eval;
+    eval.f = flat;
+    Search s(Optimizer::Cmaes, 3, 6, 0.2, 5, ipop(2));
+    s.initialise(std::ref(eval));
+    EXPECT_FALSE(s.restart_pending());
+    s.step(std::ref(eval));
+    EXPECT_FALSE(s.restart_pending());
+    s.step(std::ref(eval));   // generation 2: B_2 - B_0 = 0 <= 0
+    EXPECT_TRUE(s.restart_pending());
+    EXPECT_EQ(s.stalled_generations(), 2);
+    EXPECT_FALSE(s.collapsed());
+    EXPECT_EQ(s.population_size(), 6);
+    EXPECT_EQ(s.next_batch_size(), 12);
+    const Candidate first = s.champion();
+    s.step(std::ref(eval));   // generation 3: restart 1
+    EXPECT_EQ(s.restarts(), 1);
+    EXPECT_EQ(s.population_size(), 12);
+    EXPECT_EQ(s.population().size(), 12u);
+    EXPECT_EQ(s.restart_generations(), std::vector<int>{3});
+    EXPECT_EQ(s.champion().x, first.x) << "the champion (the first of equals) is kept across restarts";
+    for (const auto& x : eval.points.back())
+        for (double v : x) {
+            EXPECT_GE(v, 0.0);
+            EXPECT_LT(v, 1.0);
+        }
+    EXPECT_NE(eval.points.back().front(), eval.points.front().front()) << "a new seed for the new start";
+    for (int g = 0; g < 3; ++g) s.step(std::ref(eval));   // generations 4, 5 and restart 2 at 6
+    EXPECT_EQ(s.restarts(), 2);
+    EXPECT_EQ(s.population_size(), 24);
+    EXPECT_EQ(s.restart_generations(), (std::vector<int>{3, 6}));
+    EXPECT_EQ(eval.batches, (std::vector<std::size_t>{6, 6, 6, 12, 12, 12, 24}));
+    EXPECT_EQ(s.evaluations(), 78);
+    EXPECT_EQ(s.generation(), 6);
+    EXPECT_EQ(s.history().size(), 78u);
+
+    // Without the rule the same function never restarts.
+    RecordingEvaluator none_eval;
+    none_eval.f = flat;
+    Search none(Optimizer::Cmaes, 3, 6, 0.2, 5);
+    none.initialise(std::ref(none_eval));
+    for (int g = 0; g < 6; ++g) {
+        EXPECT_EQ(none.next_batch_size(), 6);
+        none.step(std::ref(none_eval));
+    }
+    EXPECT_EQ(none.restarts(), 0);
+    EXPECT_EQ(none_eval.batches, std::vector<std::size_t>(7, 6));
+}
+
+// A start whose candidates have all come closer than tol_x in every
+// coordinate restarts at once, whatever the patience.
+TEST(GaitSearchIpop, ACollapsedStartRestarts) {
+    RecordingEvaluator eval;
+    Search s(Optimizer::Cmaes, 4, 8, 0.02, 2, ipop(1000, 0.0, 0.3));
+    s.initialise(std::ref(eval));
+    EXPECT_FALSE(s.restart_pending()) << "the uniform first batch is spread out";
+    s.step(std::ref(eval));
+    EXPECT_TRUE(s.restart_pending());
+    EXPECT_TRUE(s.collapsed());
+    s.step(std::ref(eval));
+    EXPECT_EQ(s.restarts(), 1);
+    EXPECT_FALSE(s.restart_pending());
+}
+
+TEST(GaitSearchIpop, DefaultPatienceIsHansensWindow) {
+    RecordingEvaluator eval;
+    eval.f = flat;
+    Search s(Optimizer::Cmaes, 6, 10, 0.3, 1, ipop(0));
+    EXPECT_EQ(s.patience(), 10 + 18);   // 10 + ceil(30 * 6 / 10)
+    s.initialise(std::ref(eval));
+    for (int g = 0; g < 27; ++g) s.step(std::ref(eval));
+    EXPECT_FALSE(s.restart_pending());
+    s.step(std::ref(eval));
+    EXPECT_TRUE(s.restart_pending());
+    s.step(std::ref(eval));
+    EXPECT_EQ(s.population_size(), 20);
+    EXPECT_EQ(s.patience(), 10 + 9);    // 10 + ceil(30 * 6 / 20)
+    EXPECT_EQ(Search(Optimizer::Cmaes, 6, 10, 0.3, 1, ipop(7)).patience(), 7);
+}
+
+class IpopOptimizer : public ::testing::TestWithParam<Optimizer> {};
+
+// The same seed repeats a restarting search exactly; replaying its history at
+// any generation (mid-start, with a restart pending, or at a restart's first
+// batch) and continuing gives the uninterrupted search, bit for bit.
+TEST_P(IpopOptimizer, ReplayAfterRestartsEqualsTheUninterruptedSearch) {
+    const RestartRule rule = ipop(3, 0.0, 1e-9);
+    auto run = [&](RecordingEvaluator& eval, int generations) {
+        Search s(GetParam(), 4, 6, 0.3, 11, rule);
+        s.initialise(std::ref(eval));
+        for (int g = 0; g < generations; ++g) s.step(std::ref(eval));
+        return s;
+    };
+    RecordingEvaluator a, b;
+    const Search whole = run(a, 30), again = run(b, 30);
+    ASSERT_GE(whole.restarts(), 2) << "the plateaus should stall every start";
+    EXPECT_EQ(whole.history(), again.history());
+    EXPECT_EQ(whole.champion().x, again.champion().x);
+    EXPECT_EQ(whole.restart_generations(), again.restart_generations());
+    // Generations to stop at: each restart's first batch, the one before it (restart pending), one after.
+    std::vector<int> stops;
+    for (int g : whole.restart_generations())
+        for (int stop : {g - 1, g, g + 1})
+            if (stop <= 30) stops.push_back(stop);
+    for (int stop : stops) {
+        RecordingEvaluator first;
+        const Search part = run(first, stop);
+        Search resumed(GetParam(), 4, 6, 0.3, 11, rule);
+        resumed.replay(part.history(), stop);
+        EXPECT_EQ(resumed.restarts(), part.restarts()) << stop;
+        EXPECT_EQ(resumed.restart_pending(), part.restart_pending()) << stop;
+        EXPECT_EQ(resumed.next_batch_size(), part.next_batch_size()) << stop;
+        RecordingEvaluator rest;
+        for (int g = stop; g < 30; ++g) resumed.step(std::ref(rest));
+        EXPECT_EQ(resumed.history(), whole.history()) << stop;
+        ASSERT_EQ(resumed.population().size(), whole.population().size()) << stop;
+        for (std::size_t i = 0; i < whole.population().size(); ++i)
+            EXPECT_EQ(resumed.population()[i].x, whole.population()[i].x) << stop << " " << i;
+        EXPECT_EQ(resumed.champion().x, whole.champion().x) << stop;
+        EXPECT_EQ(bits(resumed.champion().fitness), bits(whole.champion().fitness)) << stop;
+        EXPECT_EQ(resumed.restart_generations(), whole.restart_generations()) << stop;
+        EXPECT_EQ(resumed.population_size(), whole.population_size()) << stop;
+    }
+    // A history replayed under another rule does not fit its generations.
+    Search other(GetParam(), 4, 6, 0.3, 11);
+    EXPECT_THROW(other.replay(whole.history(), 30), std::invalid_argument);
+}
+
+INSTANTIATE_TEST_SUITE_P(Gait, IpopOptimizer, ::testing::Values(Optimizer::Cmaes, Optimizer::Xnes),
+                         [](const auto& info) { return to_string(info.param); });
 
 INSTANTIATE_TEST_SUITE_P(Gait, EveryOptimizer, ::testing::Values(Optimizer::Cmaes, Optimizer::Xnes, Optimizer::Sade),
                          [](const auto& info) { return to_string(info.param); });

@@ -1,8 +1,8 @@
 // Golden hashes: the final population files of two short, fixed-seed runs.
 // A HyperGP run in which about half the evaluations fail as physics blow-ups
 // gives the same bytes with 1 and 2 worker processes (and with 3 MPI ranks,
-// tests/app/mpi_test.cpp); a symbolic-regression run gives the same bytes with
-// 1 and 2 threads. A change that alters results must update these hashes on
+// tests/app/mpi_test.cpp); so does a HyperGP run on the CPG substrate with
+// feedback; a symbolic-regression run gives the same bytes with 1 and 2 threads. A change that alters results must update these hashes on
 // purpose and say why in its commit message.
 #include <gtest/gtest.h>
 
@@ -35,8 +35,35 @@ TEST(Golden, HypergpWithPhysicsFailures) {
     fs::remove_all(run.parent_path().parent_path());
 }
 
+TEST(Golden, HypergpCpgSubstrate) {
+    const fs::path run = expect_golden("cpg", golden_cpg_settings, kGoldenCpg);
+    EXPECT_NE(read_text(run / "settings.xml").find("<substrate>cpg</substrate>"), std::string::npos);
+    fs::remove_all(run.parent_path().parent_path());
+}
+
 TEST(Golden, SymbolicRegression) {
     const fs::path run = expect_golden("sr", golden_symreg_settings, kGoldenSymreg);
+    fs::remove_all(run.parent_path().parent_path());
+}
+
+// The golden IPOP run: CMA-ES gaits on R0 (2.5 s simulations), 7 candidates,
+// restarts when a start's best rises by no more than 1 mm (the default
+// tolerance) over 3 generations, 150 evaluations: at least one restart.
+std::string golden_ipop_settings(int workers) {
+    return R"(<settings>
+  <Experiment><type>gait</type><seed>4</seed><workers>)" + std::to_string(workers) + R"(</workers></Experiment>
+  <Gait><optimizer>cmaes</optimizer><evaluations>150</evaluations><populationSize>7</populationSize>
+      <bounds>reflect</bounds><restarts>ipop</restarts><restartPatience>3</restartPatience></Gait>
+  <Simulator><robot_type>0</robot_type><sample_to>2.5</sample_to><delayed_start>0.5</delayed_start></Simulator>
+</settings>
+)";
+}
+const std::string kGoldenIpop = "ce9eca08959a1a72";   // golden_ipop_settings' final population.xml
+
+TEST(Golden, GaitCmaesWithIpopRestarts) {
+    const fs::path run = expect_golden("ipop", golden_ipop_settings, kGoldenIpop);
+    EXPECT_NE(read_text(run / "run.log").find("restart 1: population 14"), std::string::npos) << "no restart";
+    EXPECT_NE(read_text(run / "population.xml").find("<restarts count=\""), std::string::npos);
     fs::remove_all(run.parent_path().parent_path());
 }
 

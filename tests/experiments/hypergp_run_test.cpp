@@ -128,6 +128,38 @@ TEST(HypergpRun, ReplayReproducesTheStoredFitness) {
     fs::remove_all(dir);
 }
 
+// The CPG and gait substrates and the evolved clock replay (view, trace, assess
+// and render all go through app::replay) to their stored fitness, bit for bit.
+TEST(HypergpRun, EverySubstrateReplaysItsStoredFitness) {
+    const auto dir = temp_dir("hgp-substrates");
+    const std::vector<std::string> neural = {
+        "<substrate>cpg</substrate><cpgFeedback>1.5</cpgFeedback>",
+        "<substrate>gait</substrate>",
+        "<clockInputs>1</clockInputs><evolveClock>1</evolveClock>",
+        "<clockInputs>1</clockInputs><oscillationPenalty>frequency</oscillationPenalty>"
+        "<penaltyMaxFrequency>0.1</penaltyMaxFrequency>"};
+    for (std::size_t i = 0; i < neural.size(); ++i) {
+        std::string text = tiny_hypergp_settings(2, 1);
+        text.replace(text.find("</settings>"), 0, "  <Neural>" + neural[i] + "</Neural>\n");
+        const auto r = run_settings(dir, "s" + std::to_string(i), text);
+        ASSERT_EQ(r.rc, 0) << r.log;
+        const auto items = app::replay(r.run.string(), "best", 2, 10.0, true);
+        ASSERT_EQ(items.size(), 2u);
+        for (const auto& it : items) {
+            EXPECT_EQ(it.replayed_fitness, it.stored_fitness) << neural[i] << ": " << it.label;
+            EXPECT_FALSE(it.trace.empty());
+            EXPECT_EQ(it.raw_outputs.size(), it.trace.size());
+            // raw_fitness is eq. 7.1 without the penalty, the score every method is compared on.
+            if (i < 3) {
+                EXPECT_EQ(it.raw_fitness, it.replayed_fitness);
+            } else if (it.replayed_fitness >= 0) {
+                EXPECT_GE(it.raw_fitness, it.replayed_fitness);
+            }
+        }
+    }
+    fs::remove_all(dir);
+}
+
 // A timeout too short for any evaluation: every job is retried on a fresh
 // worker, then scored as failed. Each step leaves a warning in run.log, and
 // stats.csv counts the failures.

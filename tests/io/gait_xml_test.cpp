@@ -67,6 +67,44 @@ TEST(GaitXml, BrokenFilesAreRefusedWithTheirLine) {
     EXPECT_NE(error_of(bad).find("parameters"), std::string::npos) << error_of(bad);
 }
 
+// A run with IPOP restarts records them; files without the element (restarts
+// none, or older runs) load as before and write no element.
+TEST(GaitXml, RestartsRoundTripAndAreChecked) {
+    const std::string plain = to_xml(sample());
+    EXPECT_EQ(plain.find("<restarts"), std::string::npos);
+    EXPECT_FALSE(parse_gait(plain, "g.xml").restarts.has_value());
+
+    GaitFile g = sample();
+    g.restarts = GaitRestartRecord{2, 2, {1, 3}};
+    const std::string text = to_xml(g);
+    EXPECT_NE(text.find("<restarts count=\"2\" populationSize=\"2\" generations=\"1 3\"/>"), std::string::npos)
+        << text;
+    const GaitFile back = parse_gait(text, "g.xml");
+    ASSERT_TRUE(back.restarts.has_value());
+    EXPECT_EQ(back.restarts->count, 2);
+    EXPECT_EQ(back.restarts->population_size, 2);
+    EXPECT_EQ(back.restarts->generations, (std::vector<int>{1, 3}));
+    EXPECT_EQ(to_xml(back), text);
+    g.restarts = GaitRestartRecord{0, 2, {}};
+    EXPECT_EQ(parse_gait(to_xml(g), "g.xml").restarts->count, 0);
+
+    auto broken = [&](const std::string& from, const std::string& to) {
+        std::string bad = text;
+        bad.replace(bad.find(from), from.size(), to);
+        return error_of(bad);
+    };
+    EXPECT_NE(broken("count=\"2\" populationSize", "count=\"3\" populationSize").find("lists 2 generations"),
+              std::string::npos);
+    EXPECT_NE(broken("populationSize=\"2\"", "populationSize=\"7\"").find("but 2 candidates"), std::string::npos);
+    EXPECT_NE(broken("generations=\"1 3\"", "generations=\"3 1\"").find("must rise"), std::string::npos);
+    EXPECT_NE(broken("generations=\"1 3\"", "generations=\"1 4\"").find("must rise, each in [1, 3]"),
+              std::string::npos);
+    EXPECT_NE(broken("count=\"2\" populationSize", "count=\"-1\" populationSize").find(">= 0"), std::string::npos);
+    EXPECT_NE(broken("generations=\"1 3\"", "generations=\"1 x\"").find("g.xml:"), std::string::npos);
+    const std::string twice = broken("<restarts ", "<restarts count=\"0\" populationSize=\"2\" generations=\"\"/><restarts ");
+    EXPECT_NE(twice.find("appears twice"), std::string::npos) << twice;
+}
+
 TEST(GaitXml, ACheckpointOfOtherSettingsIsRefused) {
     Settings s;
     s.experiment.type = ExperimentType::Gait;

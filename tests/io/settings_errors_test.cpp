@@ -123,6 +123,23 @@ TEST(SettingsErrors, CrossFieldChecksPointAtTheLine) {
     EXPECT_HAS(m, "delayed_start must lie in [sample_from, sample_to)");
     m = error_of(gp("<elitism>50</elitism>"));
     EXPECT_HAS(m, "elitism < population size");
+    m = error_of("<settings>\n<Gait>\n<optimizer>sade</optimizer>\n<restarts>ipop</restarts>\n</Gait>\n</settings>\n");
+    EXPECT_HAS(m, "bad.xml:4: <Gait> restarts = \"ipop\", <Gait> optimizer = \"sade\": ipop restarts are built for "
+                  "cmaes and xnes only (allowed: Gait.restarts = none | ipop with Gait.optimizer = cmaes | xnes");
+    for (const char* optimizer : {"cmaes", "xnes"})
+        EXPECT_EQ(error_of(std::string("<settings><Gait><optimizer>") + optimizer +
+                           "</optimizer><restarts>ipop</restarts></Gait></settings>"),
+                  "(no error)")
+            << optimizer;
+    m = error_of("<settings><Gait><restarts>bipop</restarts></Gait></settings>");
+    EXPECT_HAS(m, "<Gait> restarts = \"bipop\"");
+    EXPECT_HAS(m, "allowed: one of: none, ipop");
+    m = error_of("<settings><Gait><restartPatience>-1</restartPatience></Gait></settings>");
+    EXPECT_HAS(m, "<Gait> restartPatience = \"-1\"");
+    m = error_of("<settings><Gait><restartTolerance>-0.5</restartTolerance></Gait></settings>");
+    EXPECT_HAS(m, "allowed: number >= 0");
+    m = error_of("<settings><Gait><restartTolX>2</restartTolX></Gait></settings>");
+    EXPECT_HAS(m, "allowed: number in [0, 1]");
     m = error_of("<settings><Simulator><sample_step>0.5</sample_step></Simulator></settings>");
     EXPECT_HAS(m, "bad.xml:1: <Simulator> sample_step = \"0.5\", <Simulator> extraTimeStepDivider = \"1\": the "
                   "physics step sample_step / extraTimeStepDivider = 0.5 s is above the stability bound 0.025 s");
@@ -176,4 +193,31 @@ TEST(SettingsRead, RelativeInputPathsResolveAgainstTheFile) {
     EXPECT_EQ(s.robot.robot_file, (std::filesystem::absolute(dir) / "robots/r.xml").lexically_normal().string());
     EXPECT_EQ(s.experiment.output_directory, "out");   // outputs stay relative to the current folder
     std::filesystem::remove_all(dir);
+}
+
+TEST(SettingsErrors, SubstrateKeysBelongToTheirSubstrate) {
+    auto neural = [](const std::string& body) { return "<settings>\n<Neural>\n" + body + "\n</Neural>\n</settings>\n"; };
+    auto m = error_of(neural("<evolveClock>1</evolveClock>"));
+    EXPECT_HAS(m, "bad.xml:3: <Neural> evolveClock = \"1\", <Neural> clockInputs = \"0\"");
+    EXPECT_HAS(m, "an evolved clock needs the network substrate with clock inputs");
+    EXPECT_EQ(error_of(neural("<evolveClock>1</evolveClock><clockInputs>1</clockInputs>")), "(no error)");
+    m = error_of(neural("<substrate>cpg</substrate>\n<clockInputs>1</clockInputs>"));
+    EXPECT_HAS(m, "bad.xml:4: <Neural> clockInputs = \"1\"");
+    EXPECT_HAS(m, "clock and bias inputs belong to the network substrate");
+    m = error_of(neural("<substrate>gait</substrate><sampleAverageCount>4</sampleAverageCount>"));
+    EXPECT_HAS(m, "sample averaging belongs to the network substrate");
+    m = error_of(neural("<cpgFeedback>2</cpgFeedback>"));
+    EXPECT_HAS(m, "feedback gains belong to the cpg substrate");
+    m = error_of(neural("<substrate>oscillator</substrate>"));
+    EXPECT_HAS(m, "allowed: one of: network, cpg, gait");
+    m = error_of(neural("<frequencyMin>4</frequencyMin>"));
+    EXPECT_HAS(m, "<Neural> frequencyMin = \"4\", <Neural> frequencyMax = \"3\": the frequency range is empty");
+    m = error_of(neural("<cpgHops>0</cpgHops>"));
+    EXPECT_HAS(m, "<Neural> cpgHops = \"0\"");
+    EXPECT_EQ(error_of(neural("<substrate>cpg</substrate><cpgFeedback>2</cpgFeedback><cpgHops>3</cpgHops>")),
+              "(no error)");
+    m = error_of("<settings><Gait><controller>cpg</controller><secondHarmonic>1</secondHarmonic></Gait></settings>");
+    EXPECT_HAS(m, "a second harmonic belongs to the sine controller");
+    m = error_of("<settings><Gait><controller>neat</controller></Gait></settings>");
+    EXPECT_HAS(m, "allowed: one of: sine, cpg");
 }

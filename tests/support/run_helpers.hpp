@@ -54,6 +54,27 @@ inline RunResult run_settings(const std::filesystem::path& dir, const std::strin
     return r;
 }
 
+// `cic --quiet --settings SETTINGS --output OUTPUT [--set EXTRA]` in its own
+// process group (as a batch job: a signal can reach cic and its workers), its
+// output in `log`; returns its pid without waiting.
+inline pid_t start_cic(const std::filesystem::path& settings, const std::filesystem::path& output,
+                       const std::filesystem::path& log, const std::string& extra) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+        setpgid(0, 0);
+        if (!freopen(log.c_str(), "w", stdout) || !freopen(log.c_str(), "a", stderr)) _exit(126);
+        const std::string bin = cic_binary(), cfg = settings.string(), out = output.string();
+        if (extra.empty())
+            execl(bin.c_str(), bin.c_str(), "--quiet", "--settings", cfg.c_str(), "--output", out.c_str(),
+                  static_cast<char*>(nullptr));
+        else
+            execl(bin.c_str(), bin.c_str(), "--quiet", "--settings", cfg.c_str(), "--output", out.c_str(), "--set",
+                  extra.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    return pid;
+}
+
 // HyperGP with population 6 on R0 and 2.5 s simulations: seconds, not minutes.
 // Elitism 1 (not the thesis's 0), so that the best never falls.
 inline std::string tiny_hypergp_settings(int generations, int workers, const std::string& extra_control = "") {
@@ -77,6 +98,16 @@ inline std::string golden_hypergp_settings(int workers) {
     return s;
 }
 
+// The golden HyperGP-CPG run: tiny_hypergp_settings on the CPG substrate with
+// feedback, two trees (tree 1 gives the feedback gains), 4 generations.
+inline std::string golden_cpg_settings(int workers) {
+    std::string s = tiny_hypergp_settings(4, workers);
+    s.replace(s.find("<elitism>"), 0, "<numberOfTreesInForestGenotype>2</numberOfTreesInForestGenotype>");
+    s.replace(s.find("</settings>"), 0,
+              "  <Neural><substrate>cpg</substrate><cpgFeedback>2</cpgFeedback></Neural>\n");
+    return s;
+}
+
 // The golden symbolic-regression run: Nguyen-7, 200 individuals, 6 generations.
 inline std::string golden_symreg_settings(int threads) {
     return R"(<settings>
@@ -94,6 +125,7 @@ inline std::string golden_symreg_settings(int threads) {
 // population.xml (tests/experiments/golden_test.cpp, tests/app/mpi_test.cpp).
 inline const std::string kGoldenHypergp = "ab3a3e7d29aa37ad";
 inline const std::string kGoldenSymreg = "1267ae7aacf5fb20";
+inline const std::string kGoldenCpg = "45c972bee328b1dc";   // golden_cpg_settings
 
 // A sweep file of small HyperGP runs on R0 (2.5 s or `seconds` simulations,
 // tournament 3): `population` individuals, `generations` generations, the

@@ -18,7 +18,8 @@ namespace cic::app {
 inline constexpr double kShakingAboveHz = 4.0;
 
 struct GaitAssessment {
-    double fitness = 0;              // replayed
+    double fitness = 0;              // replayed, as the run scored it
+    double raw_fitness = 0;          // eq. 7.1 without the oscillation penalty
     double dominant_hz = 0;          // max over joints of the command's crossing frequency
     double mean_height = 0;          // centre module, m, over every control step
     double min_height = 0;

@@ -18,7 +18,8 @@ struct ReplayItem {
     sim::Recording recording;                        // frames at the requested fps
     std::vector<sim::TraceRow> trace;                // when trace was requested
     std::vector<std::vector<double>> raw_outputs;    // per trace row: raw network outputs
-    double replayed_fitness = 0.0;
+    double replayed_fitness = 0.0;                   // the run's score (after any oscillation penalty)
+    double raw_fitness = 0.0;                        // eq. 7.1 alone: what every method is compared on
     int centre_body = 0;                             // body of the robot's centre module
     std::vector<std::string> joint_names;            // actuated joints in controller order; empty = "j0", "j1", ...
 };

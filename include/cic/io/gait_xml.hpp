@@ -7,6 +7,7 @@
 // round trip).
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,6 +21,15 @@ struct GaitPoint {
     double fitness = 0.0;
 };
 
+// The IPOP restarts of a run (Gait.restarts = ipop), for a person to read and
+// for a resume to check against the replay: <restarts count populationSize
+// generations>.
+struct GaitRestartRecord {
+    int count = 0;                       // starts begun after the first
+    int population_size = 0;             // the current start's lambda (= the candidates)
+    std::vector<int> generations;        // the generation of each restart's first batch
+};
+
 struct GaitFile {
     std::string settings_digest;
     std::string optimizer;               // cmaes | xnes | sade
@@ -30,6 +40,9 @@ struct GaitFile {
     std::vector<GaitPoint> population;
     GaitPoint champion;                  // the best point of the run so far
     std::vector<double> history;         // every fitness evaluated, in order
+    // Written by runs with restarts only; files without it (restarts = none,
+    // or made before the key) load as before.
+    std::optional<GaitRestartRecord> restarts;
 };
 
 std::string to_xml(const GaitFile& g);

@@ -54,6 +54,10 @@ struct SymregConfig {
 // HyperGP at the same budget of evaluations (docs/baselines.md).
 enum class GaitOptimizer { Cmaes, Xnes, Sade };
 enum class GaitBounds { Clamp, Reflect };
+// What the gait experiment's parameters drive: the open-loop sine gait, or the
+// CPG of HyperGP's cpg substrate (its Neural.cpg* keys), weights tuned directly.
+enum class GaitController { Sine, Cpg };
+enum class GaitRestarts { None, Ipop };
 
 struct GaitConfig {
     GaitOptimizer optimizer = GaitOptimizer::Cmaes;
@@ -66,6 +70,12 @@ struct GaitConfig {
     // How a sampled value outside its range is read: clamp (cic before this key
     // existed, so older runs replay alike) or reflect (settings/r1_gait.xml).
     GaitBounds bounds = GaitBounds::Clamp;
+    GaitController controller = GaitController::Sine;
+    // IPOP restarts of cmaes / xnes (experiments/gait/search.hpp, docs/baselines.md).
+    GaitRestarts restarts = GaitRestarts::None;
+    int restart_patience = 0;         // generations; 0 = 10 + ceil(30 n / lambda)
+    double restart_tolerance = 1e-3;  // metres: a start whose best rises no more over the patience stagnates
+    double restart_tol_x = 1e-6;      // unit box: every coordinate's spread below this = collapse; 0 = off
 };
 
 struct Settings {

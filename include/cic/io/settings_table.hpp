@@ -50,6 +50,10 @@ struct SettingKey {
     std::vector<std::vector<std::string>> choices;
     std::function<std::string(const Settings&)> get;          // canonical text (writer)
     std::function<void(Settings&, std::string_view)> set;     // parse + assign; throws ValueError
+    // false: the settings digest leaves the key out while it is at its default,
+    // so that a key added after runs were made (its default keeping the old
+    // behaviour) does not change the digest those runs' files hold.
+    bool digest_at_default = true;
 };
 
 // Sections in file order.

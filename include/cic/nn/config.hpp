@@ -12,6 +12,9 @@ inline constexpr int kSynapseTypes = 5;
 enum class WeightRule { Raw, Scaled };          // raw CPPF value, or SharpNEAT-style rescale to +-max_weight
 enum class NeuronModel { Tanh, Integrating };   // thesis eq. 7.2-7.3
 enum class OscillationPenalty { None, Frequency, CommandChange };
+// What the HyperGP genotype is queried to build (docs/hypergp.md): the thesis's
+// recurrent network, a CPG of coupled oscillators, or an open-loop gait.
+enum class Substrate { Network, Cpg, Gait };
 
 struct NeuralConfig {
     double threshold = 0.2;                 // synopsisThreshold: |w| < threshold -> no synapse
@@ -31,6 +34,14 @@ struct NeuralConfig {
     OscillationPenalty penalty = OscillationPenalty::None;
     double penalty_max_frequency = 2.0;     // Hz, for Frequency
     double penalty_weight = 1.0;            // for CommandChange
+    // Beyond the thesis (docs/hypergp.md); the defaults are the thesis's network.
+    Substrate substrate = Substrate::Network;
+    bool evolve_clock = false;              // network: the clock's frequency comes from the genotype
+    double frequency_min = 0.1;             // Hz: range of an evolved frequency (evolved clock, gait)
+    double frequency_max = 3.0;
+    double cpg_weight_scale = 6.283185307179586;   // rad/s: w = scale * tanh(tree)
+    int cpg_hops = 2;                       // joints at most this many links apart are coupled
+    double cpg_feedback = 0.0;              // 1/s: largest feedback gain; 0 = open loop
 };
 
 } // namespace cic::nn

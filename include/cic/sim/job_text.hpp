@@ -9,6 +9,7 @@
 
 #include "cic/sim/config.hpp"
 #include "cic/sim/controller.hpp"
+#include "cic/sim/cpg.hpp"
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/robot.hpp"
 
@@ -45,5 +46,12 @@ std::string run_sine_job(const std::string& body);
 std::string make_gait_job(const RobotSpec& robot, const SimConfig& cfg, const GaitSpec& gait);
 // Runs a "gait" job body; returns the reply.
 std::string run_gait_job(const std::string& body);
+
+// Job kind "cpg": the first line is "cpg", then robot, config and the CPG's
+// weights (sim/cpg.hpp). make_cpg_job validates the spec first.
+std::string make_cpg_job(const RobotSpec& robot, const SimConfig& cfg, const CpgSpec& cpg);
+CpgSpec read_cpg_spec(std::istream& in);   // the part after robot and config
+// Runs a "cpg" job body; returns the reply.
+std::string run_cpg_job(const std::string& body);
 
 } // namespace cic::sim

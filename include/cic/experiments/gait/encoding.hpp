@@ -41,6 +41,9 @@ struct Encoding {
     sim::GaitSpec decode(std::span<const double> x) const;
 };
 
+// A sampled coordinate read into [0, 1] as `bounds` says.
+double to_unit(double v, Bounds bounds);
+
 // pagmo's default population for n parameters: 4 + floor(3 ln n) (Hansen),
 // raised to `at_least`.
 int default_population(std::size_t dimension, int at_least);

@@ -15,6 +15,13 @@
 // different. Fitness here is cic's (higher is better); pagmo minimises its
 // negation. A checkpoint holds the seed and the fitness history; replay()
 // re-runs the optimiser from them, which gives back its exact state.
+//
+// IPOP restarts (Auger & Hansen, CEC 2005), optional: when a start stagnates
+// (RestartRule), the next generation begins a new start of the optimiser from
+// fresh uniform points of the unit box with twice the population,
+// lambda_r = lambda_0 2^r, and a seed derived from the run seed and r; the
+// champion is kept across starts. A decision depends only on the fitness
+// history and the candidates, so replay() makes it again.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -31,28 +38,68 @@ struct Candidate {
     double fitness = 0.0;
 };
 
+enum class Restarts { None, Ipop };
+std::string to_string(Restarts r);
+
+// When a start of the optimiser is over (Restarts::Ipop). After each
+// generation k of a start (k = 0 is its first batch), with B_k the best
+// fitness the start has evaluated so far and P the patience:
+//   stagnation  k >= P and B_k - B_{k-P} <= tolerance
+//   collapse    k >= 1, tol_x > 0 and every coordinate's standard deviation
+//               across the current candidates is below tol_x
+// Either one makes the next generation the first of a new start.
+struct RestartRule {
+    Restarts mode = Restarts::None;
+    int patience = 0;          // generations; 0 = 10 + ceil(30 n / lambda_r) (Hansen's TolHistFun window)
+    double tolerance = 0.0;    // fitness (metres for the gait)
+    double tol_x = 0.0;        // unit-box spread; 0 = no collapse test
+};
+
+// Seed of start r of a run seeded `seed`: the seed itself for r = 0, else
+// mix64(seed + r * 0x9e3779b97f4a7c15).
+std::uint64_t restart_seed(std::uint64_t seed, int r);
+
 // Fitness of each point, in order.
 using BatchEvaluator = std::function<std::vector<double>(const std::vector<std::vector<double>>&)>;
 
 class Search {
 public:
     // Throws std::invalid_argument: dimension 0, population below pagmo's
-    // minimum (cmaes/xnes 5, sade 7), sigma0 not in (0, 1].
-    Search(Optimizer optimizer, std::size_t dimension, int population, double sigma0, std::uint64_t seed);
+    // minimum (cmaes/xnes 5, sade 7), sigma0 not in (0, 1], ipop restarts for
+    // sade, a negative patience, or a tolerance or tol_x negative or not finite.
+    Search(Optimizer optimizer, std::size_t dimension, int population, double sigma0, std::uint64_t seed,
+           RestartRule restarts = {});
     ~Search();
     Search(Search&&) noexcept;
     Search& operator=(Search&&) noexcept;
 
     // Generation 0: `population` uniform points of the unit box, drawn from the seed.
     void initialise(const BatchEvaluator& evaluate);
-    // One generation of the optimiser. Requires initialise() (or replay()).
+    // One generation of the optimiser, or, when restart_pending(), the first
+    // batch of the next start: next_batch_size() uniform points of the unit
+    // box drawn from restart_seed(seed, r). Requires initialise() (or replay()).
+    // Throws std::overflow_error when a restart's population would pass 10^8.
     void step(const BatchEvaluator& evaluate);
 
     int generation() const;                        // 0 after initialise
     long evaluations() const;                      // points evaluated so far
     const std::vector<Candidate>& population() const;
     const Candidate& champion() const;             // best point ever evaluated (the first of equals)
-    int population_size() const;
+    int population_size() const;                   // of the current start: lambda_0 2^restarts()
+    // The points step() will evaluate: the doubled population when a restart
+    // is pending (for a budget check before the step).
+    int next_batch_size() const;
+    int restarts() const;                          // starts begun after the first
+    bool restart_pending() const;                  // the next step() begins a new start
+    // Why the pending restart was decided: the generations since the current
+    // start's best last rose by more than the tolerance (>= the patience when
+    // it stagnated), and whether its candidates had collapsed instead.
+    int stalled_generations() const;
+    bool collapsed() const;
+    int patience() const;                          // of the current start (the rule's or the default)
+    // The generation of each restart's first batch, in order.
+    const std::vector<int>& restart_generations() const;
+    const RestartRule& restart_rule() const;
     std::size_t dimension() const;
     Optimizer optimizer() const;
     std::uint64_t seed() const;

@@ -5,6 +5,7 @@
 // where or on how many workers a candidate ran).
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "cic/io/settings.hpp"
 #include "cic/sim/robot.hpp"
 #include "cic/experiments/experiment.hpp"
+#include "cic/experiments/gait/cpg_encoding.hpp"
 #include "cic/experiments/gait/encoding.hpp"
 #include "cic/experiments/gait/search.hpp"
 
@@ -22,10 +24,17 @@ namespace cic::gait {
 struct Setup {
     sim::RobotSpec robot;
     sim::SimConfig sim;
-    Encoding encoding;
+    Encoding encoding;           // the sine gait's (Gait.controller = sine)
+    std::optional<CpgEncoding> cpg;   // set when Gait.controller = cpg
     Optimizer optimizer = Optimizer::Cmaes;
     int population = 0;          // resolved (Gait.populationSize or the default)
     double sigma0 = 0.25;
+
+    // Of the encoding Gait.controller chooses.
+    std::size_t dimension() const { return cpg ? cpg->dimension() : encoding.dimension(); }
+    std::unique_ptr<sim::Controller> controller(std::span<const double> x) const;
+    // One line: the frequency and each joint's parameters, or the CPG's weights.
+    std::string describe(std::span<const double> x) const;
 
     // The robot of the settings (file or preset with useMiddleLegs, as HyperGP
     // builds it). Throws cic::InputError for a robot that cannot be loaded.
@@ -38,12 +47,6 @@ Optimizer optimizer_of(io::GaitOptimizer o);
 void check_inputs(const io::Settings& s);
 
 std::string make_job(const Setup& setup, std::span<const double> x);
-
-// The search a checkpoint describes, rebuilt by replaying its history from the
-// seed (no evaluation), and checked against the candidates and champion the
-// checkpoint lists. Throws cic::InputError naming `file` when they differ (a
-// checkpoint edited by hand, or made by another cic or pagmo).
-Search resume_search(const Setup& setup, const io::GaitFile& checkpoint, const std::string& file);
 
 // Evaluates batches of unit-box points on the context's runner. A job that
 // fails in the runner (its worker crashed or hung twice) scores the

@@ -11,6 +11,7 @@
 #include "cic/io/settings.hpp"
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/job_text.hpp"
+#include "cic/experiments/hypergp/controller.hpp"
 #include "cic/experiments/hypergp/neural_controller.hpp"
 
 namespace cic::hypergp {
@@ -30,7 +31,7 @@ struct Outcome {
     double distance_fitness = 0.0;  // eq. 7.1 before any penalty
     bool failed = false;
     std::string failure;
-    std::size_t synapses = 0;
+    std::size_t synapses = 0;       // the controller's connections (controller.hpp)
     sim::EvalResult result;         // recording / trace when asked for
     ControlRecord control;          // raw outputs and commands when asked for
 };

@@ -14,22 +14,13 @@
 #include "cic/nn/config.hpp"
 #include "cic/nn/geometry.hpp"
 #include "cic/nn/network.hpp"
-#include "cic/sim/controller.hpp"
+#include "cic/experiments/hypergp/controller.hpp"
 #include "cic/sim/robot.hpp"
 #include "cic/tree/tree.hpp"
 
 namespace cic::hypergp {
 
-// What the controller did, step-major: value of joint j at step s is [s * joints + j].
-struct ControlRecord {
-    std::size_t joints = 0;
-    std::vector<double> times;      // t of each step
-    std::vector<double> outputs;    // raw network outputs, [-1, 1]
-    std::vector<double> commands;   // desired angles sent to the simulator, rad
-    std::size_t steps() const { return times.size(); }
-};
-
-class NeuralController final : public sim::Controller {
+class NeuralController final : public Controller {
 public:
     // Throws cic::InputError for sample_average_count < 1 (or clock inputs with
     // clock_period <= 0) and std::invalid_argument if network and layout disagree.
@@ -39,11 +30,12 @@ public:
     void reset(std::size_t joints) override;
     void step(double t, std::span<const double> angles, std::span<double> desired) override;
 
-    // Recording is off by default (it allocates); reset() clears the record.
-    void set_recording(bool on) { recording_ = on; }
-    const ControlRecord& record() const { return record_; }
+    void set_recording(bool on) override { recording_ = on; }
+    const ControlRecord& record() const override { return record_; }
+    std::size_t connections() const override { return network_.synapse_count(); }
     const nn::Network& network() const { return network_; }
     const nn::NeuronLayout& layout() const { return layout_; }
+    double clock_period() const { return cfg_.clock_period; }   // s (evolved or from the settings)
 
 private:
     nn::Network network_;
@@ -55,7 +47,9 @@ private:
     ControlRecord record_;
 };
 
-// Genotype + robot -> ready controller: substrate_geometry, make_neuron_layout, build_network.
+// Genotype + robot -> ready controller: substrate_geometry, make_neuron_layout,
+// build_network; with cfg.evolve_clock the clock period is 1 / the evolved
+// frequency (queries.hpp) instead of cfg.clock_period.
 NeuralController make_neural_controller(const sim::RobotSpec& robot, const tree::Forest& genotype,
                                         const nn::NeuralConfig& cfg);
 

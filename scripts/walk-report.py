@@ -1,0 +1,269 @@
+#!/usr/bin/env python3
+"""The tables of docs/baselines.md, "Walking like the best" (issue 21).
+
+    scripts/walk-report.py [--studies DIR] [--results DIR] tune|compare
+
+DIR (default runs/baselines) holds the study folders that scripts/baselines.sh
+writes; --results (default experiments/baselines/results) holds each study's
+gait assessments (<study>-gaits.csv from `cic assess`, one row per finished
+run: its best_ever individual replayed).
+
+Every method is scored alike: the raw eq. 7.1 fitness of its best individual,
+replayed (column raw_fitness: without HyperGP's oscillation penalty, which
+best_ever includes). A run without an assessment row is scored by best_ever and
+marked with *. Evaluations are the counts index.csv records.
+
+  tune     the tuning studies (walk-tune-*.xml, tuning seeds 101..105): per
+           configuration n, median, IQR, evaluations, and how its best gait
+           moves; the winner of each method is the highest median whose best
+           gait neither shakes nor flipped, decided before the comparison runs.
+  compare  the comparison (walk-2500-*.xml, walk-15000-*.xml, seeds 1..10): per
+           budget and robot, each method's median and IQR; every HyperGP method
+           against the best CMA-ES of the cell (the higher median of the two):
+           two-sided Mann-Whitney p (scipy, method auto, as `cic compare`), Holm
+           over every comparison of the table at once, A12 = P(HyperGP run >
+           CMA-ES run) with a 95% bootstrap interval (2,000 resamples, seed 1);
+           and the goal per cell.
+"""
+import argparse
+import csv
+import pathlib
+import random
+import statistics as st
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+ap.add_argument("--studies", default="runs/baselines")
+ap.add_argument("--results", default=str(ROOT / "experiments" / "baselines" / "results"))
+ap.add_argument("mode", choices=["tune", "compare"])
+args = ap.parse_args()
+STUDIES, RESULTS = pathlib.Path(args.studies), pathlib.Path(args.results)
+
+TUNING = ["walk-tune-hypergp", "walk-tune-cmaes"]
+# (label, study suffix, is HyperGP); the study is walk-BUDGET-SUFFIX
+METHODS = [
+    ("HyperGP, best configuration", "hgp-best", True),
+    ("HyperGP, evolved clock", "hgp-clock", True),
+    ("HyperGP-CPG", "hgp-cpg", True),
+    ("HyperGP-gait", "hgp-gait", True),
+    ("CMA-ES gait, IPOP", "cmaes-gait", False),
+    ("CMA-ES CPG, IPOP", "cmaes-cpg", False),
+]
+ROBOTS = ["R0", "R1", "R2", "R1-6legs", "cross"]
+
+
+def fail(message):
+    print(f"walk-report.py: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def run_of(input_path):
+    """The run folder of an assessed input: the folder itself, or RUN/populations/gen-NNNN.xml."""
+    p = pathlib.Path(input_path)
+    return (p.parent.parent if p.suffix == ".xml" and p.parent.name == "populations" else p).resolve()
+
+
+def number(text, where, column):
+    try:
+        return float(text)
+    except ValueError:
+        fail(f"{where}: column '{column}': '{text}' is not a number")
+
+
+def runs(study):
+    """{config: [run]} of the finished runs, each a dict: score, scored_by_best_ever, evaluations, gait."""
+    index = STUDIES / study / "index.csv"
+    if not index.exists():
+        return None
+    gaits = {}
+    gfile = RESULTS / f"{study}-gaits.csv"
+    if gfile.exists():
+        with open(gfile, newline="") as f:
+            reader = csv.DictReader(f)
+            if "raw_fitness" not in (reader.fieldnames or []):
+                fail(f"{gfile}:1: no column raw_fitness (made by an older cic assess; rerun the summary)")
+            for r in reader:
+                gaits[run_of(r["input"])] = r
+    out = {}
+    with open(index, newline="") as f:
+        reader = csv.DictReader(f)
+        missing = {"run_dir", "config", "status", "best_ever", "evaluations"} - set(reader.fieldnames or [])
+        if missing:
+            fail(f"{index}:1: header has no column {', '.join(sorted(missing))}")
+        for r in reader:
+            if r["status"] != "done" or not r["best_ever"]:
+                continue
+            where = f"{index}:{reader.line_num}"
+            g = gaits.get((STUDIES / study / r["run_dir"]).resolve())
+            score = number(g["raw_fitness"], f"{gfile}", "raw_fitness") if g else number(r["best_ever"], where, "best_ever")
+            out.setdefault(r["config"], []).append({"score": score, "star": g is None, "gait": g,
+                                                    "evaluations": int(number(r["evaluations"], where, "evaluations"))})
+    return out
+
+
+def quartiles(v):
+    q = st.quantiles(v, n=4, method="inclusive") if len(v) > 1 else [v[0]] * 3
+    return q[0], q[2]
+
+
+def a12(x, y):
+    return sum(1 if a > b else 0.5 if a == b else 0 for a in x for b in y) / (len(x) * len(y))
+
+
+def a12_interval(x, y, resamples=2000):
+    rng = random.Random(1)
+    values = sorted(a12([rng.choice(x) for _ in x], [rng.choice(y) for _ in y]) for _ in range(resamples))
+    return values[int(0.025 * resamples)], values[int(0.975 * resamples) - 1]
+
+
+def mann_whitney_p(x, y):
+    try:
+        from scipy.stats import mannwhitneyu
+    except ImportError:
+        return None
+    return float(mannwhitneyu(x, y, alternative="two-sided").pvalue)
+
+
+def holm(ps):
+    """Holm's step-down adjustment of a list of p-values (None stays None)."""
+    order = sorted((p, i) for i, p in enumerate(ps) if p is not None)
+    out, running = [None] * len(ps), 0.0
+    for rank, (p, i) in enumerate(order):
+        running = max(running, min(1.0, (len(order) - rank) * p))
+        out[i] = running
+    return out
+
+
+def gait_text(best_run):
+    g = best_run["gait"]
+    if not g:
+        return "not assessed"
+    moves = "flipped" if g["flipped"] == "1" else "shaking" if g["shaking"] == "1" else "steps"
+    return f"{moves} at {float(g['dominant_hz']):.2f} Hz, centre {float(g['mean_height']):.2f} m"
+
+
+def walks(best_run):
+    g = best_run["gait"]
+    return g is not None and g["flipped"] != "1" and g["shaking"] != "1"
+
+
+def describe(v):
+    scores = [r["score"] for r in v]
+    q1, q3 = quartiles(scores)
+    evals = [r["evaluations"] for r in v]
+    star = "*" if any(r["star"] for r in v) else ""
+    best = max(v, key=lambda r: r["score"])
+    ev = f"{min(evals)}" if min(evals) == max(evals) else f"{min(evals)}–{max(evals)}"
+    return scores, f"{len(v)} | {st.median(scores):.2f}{star} | [{q1:.2f}, {q3:.2f}] | {ev} | {gait_text(best)}"
+
+
+def tune():
+    print("# Walking like the best: the tuning stage\n")
+    print(f"Made by `scripts/walk-report.py tune` from `{STUDIES}`: R1, 2,500 evaluations, tuning seeds "
+          "101..105; score = raw eq. 7.1 of each run's best individual, replayed (* = best_ever, not assessed).\n")
+    for study in TUNING:
+        found = runs(study)
+        print(f"## {study}\n")
+        if found is None:
+            print("not run\n")
+            continue
+        print("| configuration | n | median | IQR [Q1, Q3] | evaluations | best run's gait |")
+        print("|---|---|---|---|---|---|")
+        families = {}
+        for config in sorted(found):
+            v = found[config]
+            scores, text = describe(v)
+            print(f"| {config} | {text} |")
+            family = config.split("-")[0]
+            best = max(v, key=lambda r: r["score"])
+            families.setdefault(family, []).append((st.median(scores), config, walks(best), len(v)))
+        print()
+        for family, rows in sorted(families.items()):
+            ok = sorted((r for r in rows if r[2]), reverse=True)
+            passed = [r[1] for r in rows if not r[2]]
+            complete = all(r[3] == 5 for r in rows)
+            if ok:
+                print(f"- **{family}**: winner {ok[0][1]} (median {ok[0][0]:.2f})"
+                      + (f"; passed over (best gait shakes, flipped or not assessed): {', '.join(passed)}" if passed else "")
+                      + ("" if complete else " — provisional: not every configuration has 5 runs"))
+            else:
+                print(f"- **{family}**: no configuration whose best gait walks")
+        print()
+
+
+def compare():
+    print("# Walking like the best: the comparison\n")
+    print(f"Made by `scripts/walk-report.py compare` from `{STUDIES}`: seeds 1..10; score = raw eq. 7.1 of each "
+          "run's best individual, replayed (* = best_ever, not assessed). Holm over every comparison below.\n")
+    table, tests = [], []   # tests: (budget, robot, method, p, A12, interval, hgp median, cma median, cma label)
+    for budget in (2500, 15000):
+        for robot in ROBOTS:
+            cell = {}
+            for label, suffix, is_hgp in METHODS:
+                found = runs(f"walk-{budget}-{suffix}")
+                if found and robot in found:
+                    cell[label] = (found[robot], is_hgp)
+            if not cell:
+                continue
+            table.append((budget, robot, cell))
+            cmas = [(st.median([r["score"] for r in v]), label, v) for label, (v, h) in cell.items() if not h]
+            if not cmas:
+                continue
+            cma_median, cma_label, cma_runs = max(cmas)
+            y = [r["score"] for r in cma_runs]
+            for label, (v, is_hgp) in cell.items():
+                if not is_hgp:
+                    continue
+                x = [r["score"] for r in v]
+                tests.append([budget, robot, label, mann_whitney_p(x, y), a12(x, y), a12_interval(x, y),
+                              st.median(x), cma_median, cma_label, min(len(x), len(y))])
+    adjusted = holm([t[3] for t in tests])
+    for budget in (2500, 15000):
+        rows = [t for t in table if t[0] == budget]
+        if not rows:
+            continue
+        print(f"## {budget:,} evaluations\n")
+        print("| robot | method | n | median | IQR [Q1, Q3] | evaluations | best run's gait |")
+        print("|---|---|---|---|---|---|---|")
+        for _, robot, cell in rows:
+            for label, (v, _) in cell.items():
+                print(f"| {robot} | {label} | {describe(v)[1]} |")
+        print()
+        print("| robot | HyperGP method | median | best CMA-ES | median | p | p (Holm) | A12 [95% CI] | reading |")
+        print("|---|---|---|---|---|---|---|---|---|")
+        for t, p_holm in zip(tests, adjusted):
+            if t[0] != budget:
+                continue
+            _, robot, label, p, a, (lo, hi), mx, my, cma, n = t
+            if p_holm is None:
+                reading = "no p (scipy missing)"
+            elif p_holm < 0.05:
+                reading = "HyperGP better" if mx > my else "CMA-ES better"
+            else:
+                reading = f"no difference shown at n = {n}"
+            ptext = "–" if p is None else f"{p:.3g}"
+            htext = "–" if p_holm is None else f"{p_holm:.3g}"
+            print(f"| {robot} | {label} | {mx:.2f} | {cma} | {my:.2f} | {ptext} | {htext} | {a:.2f} [{lo:.2f}, {hi:.2f}] "
+                  f"| {reading} |")
+        print()
+    print("## The goal, cell by cell\n")
+    print("Some HyperGP method beats the best CMA-ES median with p (Holm) < 0.05 at 15,000 evaluations, and is not "
+          "significantly worse at 2,500.\n")
+    for budget in (2500, 15000):
+        for robot in ROBOTS:
+            cell = [(t, p) for t, p in zip(tests, adjusted) if t[0] == budget and t[1] == robot]
+            if not cell:
+                continue
+            if budget == 15000:
+                met = [t[2] for t, p in cell if p is not None and p < 0.05 and t[6] > t[7]]
+            else:
+                met = [t[2] for t, p in cell if p is not None and not (p < 0.05 and t[6] < t[7])]
+            print(f"- {budget:,}, {robot}: " + (f"met by {', '.join(met)}" if met else "not met"))
+    print()
+
+
+if args.mode == "tune":
+    tune()
+else:
+    compare()
