@@ -1,4 +1,5 @@
 # Helpers shared by the top-level CMakeLists.txt.
+include(GNUInstallDirs)   # CMAKE_INSTALL_INCLUDEDIR for the layers' installed include path
 
 # cic_layer(NAME DIR): a static library from every .cpp below DIR.
 # Globbing keeps one layer = one folder; CONFIGURE_DEPENDS re-globs on build.
@@ -10,7 +11,11 @@ function(cic_layer name dir)
   add_library(${name} STATIC ${sources})
   # Public headers only (include/cic/<layer>/); private ones sit beside their
   # sources. Which layer may include which is checked by scripts/check-layers.py.
-  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/include)
+  target_include_directories(${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
+                                            $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  # Installed as cic::<layer> (cmake/CicInstall.cmake, cicConfig.cmake).
+  string(REGEX REPLACE "^cic_" "" _export ${name})
+  set_target_properties(${name} PROPERTIES EXPORT_NAME ${_export})
   add_dependencies(${name} cic_layer_check)   # an upward include fails the build
   set_property(GLOBAL APPEND PROPERTY CIC_LAYERS ${name})
 endfunction()

@@ -7,6 +7,8 @@
 #   share/doc/cic/                      README.md, docs/*.md, docs/img/*
 #   share/man/man1/cic.1                made by `cic man` at build time
 #   share/bash-completion/completions/cic   made by `cic completion` at build time
+#   lib/libcic_*.a, include/cic/<layer>/   the library layers below the command line
+#   lib/cmake/cic/cicConfig*.cmake      find_package(cic): targets cic::core ... cic::experiments
 #
 # This file is also a script (cmake -P) for the build steps below: with CIC_RUN it
 # runs `CIC_RUN CIC_ARG` into CIC_OUT; with CIC_EXAMPLE_IN it writes the installed
@@ -94,6 +96,23 @@ install(FILES ${_cic_gen}/cic.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 install(FILES ${_cic_gen}/cic.bash-completion
         DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME cic)
 
+# --- cic as a CMake package: find_package(cic) gives cic::core ... cic::experiments
+# (docs/install.md, "Building on cic"). The command-line layer (app, viz) stays
+# inside the binary.
+include(CMakePackageConfigHelpers)
+set(CIC_LIBRARY_LAYERS cic_core cic_tree cic_gp cic_nn cic_sim cic_io cic_experiments)
+install(TARGETS ${CIC_LIBRARY_LAYERS} EXPORT cicTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+foreach(_layer core tree gp nn sim io experiments)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/cic/${_layer} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cic)
+endforeach()
+set(CIC_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/cic)
+install(EXPORT cicTargets NAMESPACE cic:: DESTINATION ${CIC_INSTALL_CMAKEDIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/cicConfig.cmake.in ${_cic_gen}/cicConfig.cmake
+  INSTALL_DESTINATION ${CIC_INSTALL_CMAKEDIR})
+# 0.x: a new minor version may change the library's API (docs/install.md).
+write_basic_package_version_file(${_cic_gen}/cicConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${_cic_gen}/cicConfig.cmake ${_cic_gen}/cicConfigVersion.cmake DESTINATION ${CIC_INSTALL_CMAKEDIR})
+
 # --- Debian package: cpack -G DEB (in the build folder) -----------------------
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME cic)
@@ -150,6 +169,12 @@ include(CPack)
 # generated files, and the cmake/cpack of this build.
 if(TARGET cic_test_app)
   add_dependencies(cic_test_app cic_install_files)
+  # An out-of-tree build against sanitized libraries needs the same runtime.
+  set(_cic_example_flags "")
+  if(CIC_SANITIZE)
+    set(_cic_example_flags "-fsanitize=address,undefined -DEIGEN_MALLOC_ALREADY_ALIGNED=1")
+  endif()
   target_compile_definitions(cic_test_app PRIVATE
-    CIC_CMAKE_COMMAND="${CMAKE_COMMAND}" CIC_CPACK_COMMAND="${CMAKE_CPACK_COMMAND}")
+    CIC_CMAKE_COMMAND="${CMAKE_COMMAND}" CIC_CPACK_COMMAND="${CMAKE_CPACK_COMMAND}"
+    CIC_EXAMPLE_CXX_FLAGS="${_cic_example_flags}")
 endif()

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cic/app/settings_lookup.hpp"
+#include "cic/experiments/hypergp/model.hpp"
 #include "cic/core/error.hpp"
 #include "cic/io/settings_table.hpp"
 #include "support/run_helpers.hpp"
@@ -24,6 +25,9 @@ namespace {
 #endif
 #ifndef CIC_CPACK_COMMAND
 #define CIC_CPACK_COMMAND "cpack"
+#endif
+#ifndef CIC_EXAMPLE_CXX_FLAGS
+#define CIC_EXAMPLE_CXX_FLAGS ""
 #endif
 
 #define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << "no '" << (part) << "' in:\n" << (text)
@@ -130,6 +134,33 @@ TEST(Install, InstalledBinaryNamesThePlacesItLookedIn) {
     EXPECT_HAS(r.out, "no_such_settings.xml");
     EXPECT_HAS(r.out, (fs::canonical(p) / "share/cic/settings").string());
     EXPECT_FALSE(fs::exists(work / "runs"));
+}
+
+// cic as a CMake package: examples/library, an out-of-tree project, builds
+// against the installed cic with find_package(cic) and scores a genotype as a
+// cic run does, bit for bit.
+TEST(Install, LibraryPackageBuildsAnOutOfTreeProject) {
+    const fs::path& p = installed_prefix();
+    for (const char* f : {"lib/cmake/cic/cicConfig.cmake", "lib/cmake/cic/cicConfigVersion.cmake",
+                          "lib/libcic_experiments.a", "include/cic/sim/cpg.hpp",
+                          "include/cic/experiments/hypergp/model.hpp"})
+        EXPECT_TRUE(fs::is_regular_file(p / f)) << f;
+    EXPECT_FALSE(fs::exists(p / "include/cic/app")) << "the command line is not part of the library";
+    const ScratchDir scratch("install-library");
+    const fs::path build = scratch.path / "build";
+    const Shell made = sh(q(CIC_CMAKE_COMMAND) + " -S " + q(fs::path(CIC_SOURCE_DIR) / "examples/library") + " -B " +
+                          q(build) + " -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=" + q(p) + " '-DCMAKE_CXX_FLAGS=" +
+                          CIC_EXAMPLE_CXX_FLAGS + "' && " +
+                          q(CIC_CMAKE_COMMAND) + " --build " + q(build));
+    ASSERT_EQ(made.rc, 0) << made.out;
+    const char* tree = "(sin (add x0 (mul x2 x3)))";
+    const Shell ran = sh(q(build / "cpg-walk") + " '" + tree + "'");
+    ASSERT_EQ(ran.rc, 0) << ran.out;
+    cic::io::Settings settings;
+    settings.neural.substrate = cic::nn::Substrate::Cpg;
+    const auto outcome = cic::hypergp::run(cic::hypergp::Model::from_settings(settings),
+                                           cic::tree::Forest{cic::tree::Tree::parse(tree)});
+    EXPECT_EQ(std::stod(ran.out), outcome.fitness) << ran.out;
 }
 
 TEST(Install, DebianPackage) {
