@@ -15,8 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// "Section.key=value" naming a real key (the value is checked later, with the
-// settings, when every task's settings are loaded).
 // A path value in a sweep file, like one in a settings file, is read against
 // the file's folder (not the folder cic runs in), and stored absolute.
 std::string resolved_path(const std::string& value, const fs::path& folder) {
@@ -24,6 +22,8 @@ std::string resolved_path(const std::string& value, const fs::path& folder) {
     return (folder / value).lexically_normal().string();
 }
 
+// "Section.key=value" naming a real key (the value is checked later, with the
+// settings, when every task's settings are loaded), a path value resolved.
 std::string checked_override(const io::xml::Node& n, const std::string& text, const fs::path& folder) {
     const auto eq = text.find('='), dot = text.find('.');
     if (eq == std::string::npos || dot == std::string::npos || dot > eq)
@@ -111,11 +111,8 @@ SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
                 if (v.name() != "vary") throw v.error("unknown element <" + std::string(v.name()) + "> in <grid>; allowed: vary");
                 Vary vary{v.attribute("key").value_or(""), words(v.text())};
                 checked_override(v, vary.key + "=x", plan.file.parent_path());
-                const std::string dot_key = vary.key;
-                const io::SettingKey* k = io::find_setting(dot_key.substr(0, dot_key.find('.')),
-                                                           dot_key.substr(dot_key.find('.') + 1));
-                if (k->type == io::ValueType::Path)
-                    for (auto& value : vary.values) value = resolved_path(value, plan.file.parent_path());
+                for (auto& value : vary.values)
+                    value = checked_override(v, vary.key + "=" + value, plan.file.parent_path()).substr(vary.key.size() + 1);
                 if (vary.values.empty()) throw v.error("<vary key=\"" + vary.key + "\"> has no values");
                 if (std::set<std::string>(vary.values.begin(), vary.values.end()).size() != vary.values.size())
                     throw v.error("<vary key=\"" + vary.key + "\"> lists a value twice");

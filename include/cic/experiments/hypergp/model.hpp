@@ -1,7 +1,7 @@
 #pragma once
-// One HyperGP evaluation (thesis 5.1.5): genotype -> substrate network ->
-// neural controller -> ODE simulation -> fitness (eq. 7.1), with the optional
-// oscillation penalty. The same code runs in-process, in worker processes and
+// One HyperGP evaluation (thesis 5.1.5): genotype -> the controller that
+// Neural.substrate names (network, CPG or gait; controller.hpp) -> ODE
+// simulation -> fitness (eq. 7.1), with the optional oscillation penalty. The same code runs in-process, in worker processes and
 // in replays, so a replayed fitness equals the stored one.
 #include <filesystem>
 #include <functional>
