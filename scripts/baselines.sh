@@ -30,6 +30,8 @@
 #   --output DIR    study folders (default runs/baselines); the run store is shared
 #                   with the chapter-7 studies (runs/thesis-ch7/store)
 #   --summary-only  run nothing; summarise what is there
+#   --config NAME   run only this configuration of each study (repeatable, e.g.
+#                   --config R1 first: every method on one robot before the next)
 # PYTHON names the interpreter for the report (default python3; the p-values
 # need scipy, Debian's python3-scipy).
 set -euo pipefail
@@ -40,13 +42,14 @@ if [ -z "${CIC:-}" ]; then
 fi
 [ -n "$CIC" ] && [ -x "$CIC" ] || { echo "baselines.sh: no cic found; build it (scripts/run.sh) or set CIC" >&2; exit 2; }
 
-jobs=2 output=runs/baselines summary_only=0 stages=()
+jobs=2 output=runs/baselines summary_only=0 stages=() only=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --jobs) jobs="$2"; shift 2 ;;
     --output) output="$2"; shift 2 ;;
     --summary-only) summary_only=1; shift ;;
-    -h|--help) sed -n '2,34p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --config) only+=(--config "$2"); shift 2 ;;
+    -h|--help) sed -n '2,36p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     search|compare|long|gap|walk-tune|walk|walk-long) stages+=("$1"); shift ;;
     *) echo "baselines.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
   esac
@@ -89,7 +92,7 @@ study() {   # STUDY
     return 0
   fi
   echo "== $1" >&2
-  [ "$summary_only" = 1 ] || "$CIC" sweep "$HERE/$1.xml" --output "$output/$1" --jobs "$jobs" >&2
+  [ "$summary_only" = 1 ] || "$CIC" sweep "$HERE/$1.xml" --output "$output/$1" --jobs "$jobs" "${only[@]}" >&2
   summarise "$1"
 }
 # A screenshot strip of each robot's best gait from each method (results/strip-METHOD-ROBOT.png):

@@ -38,6 +38,7 @@ struct SweepOptions {
     bool dry_run = false;
     bool slurm = false;
     bool index_only = false;
+    std::vector<std::string> configs;   // --config: only these configurations (empty: all)
 };
 
 volatile std::sig_atomic_t g_stop_signal = 0;
@@ -61,6 +62,27 @@ void check_every_configuration(const SweepPlan& plan) {
     }
 }
 
+// The tasks --config selects, in plan order: every task when none is named. An
+// unknown name is refused with the names the sweep has.
+std::vector<SweepTask> selected_tasks(const SweepPlan& plan, const std::vector<std::string>& names) {
+    std::vector<bool> wanted(plan.configs.size(), names.empty());
+    for (const auto& n : names) {
+        std::size_t i = 0;
+        while (i < plan.configs.size() && plan.configs[i].name != n) ++i;
+        if (i == plan.configs.size()) {
+            std::string allowed;
+            for (const auto& c : plan.configs) allowed += (allowed.empty() ? "" : ", ") + c.name;
+            throw InputError(fmt::format("--config {}: the sweep has no such configuration (it has: {})", n, allowed),
+                             plan.file.string());
+        }
+        wanted[i] = true;
+    }
+    std::vector<SweepTask> out;
+    for (const SweepTask& t : plan.tasks())
+        if (wanted[t.config]) out.push_back(t);
+    return out;
+}
+
 // `program`: self_path() where the command is shown or written down,
 // self_exec_path() where it is run.
 std::vector<std::string> task_argv(const SweepPlan& plan, const SweepTask& t, int workers,
@@ -79,13 +101,14 @@ std::string shell_words(const std::vector<std::string>& argv) {
     return out;
 }
 
-int dry_run(const SweepPlan& plan, int workers) {
+int dry_run(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int workers) {
     fmt::print("sweep {} ({}): {} configurations x {} repeats = {} runs; base {}\nstudy {}\n", plan.name,
                plan.file.string(), plan.configs.size(), plan.repeats, plan.tasks().size(), plan.base.string(),
                plan.study.string());
     if (!plan.store.empty()) fmt::print("run store {} (runs another study has done are reused)\n", plan.store.string());
+    if (tasks.size() != plan.tasks().size()) fmt::print("listed: the {} runs --config selects\n", tasks.size());
     std::map<std::string, int> counts;
-    for (const SweepTask& t : plan.tasks()) {
+    for (const SweepTask& t : tasks) {
         const TaskState state = task_state(plan, t);
         const TaskStatus st = state.status;
         ++counts[to_string(st)];
@@ -101,8 +124,14 @@ int dry_run(const SweepPlan& plan, int workers) {
     return 0;
 }
 
-int write_slurm_script(const SweepOptions& o, const SweepPlan& plan, int workers) {
-    const auto tasks = plan.tasks();
+int write_slurm_script(const SweepOptions& o, const SweepPlan& plan, const std::vector<SweepTask>& tasks,
+                       int workers) {
+    // Array ids are the plan's task indices, so a --config selection is a list of them.
+    std::string ids = fmt::format("0-{}", plan.tasks().size() - 1);
+    if (tasks.size() != plan.tasks().size()) {
+        ids.clear();
+        for (const SweepTask& t : tasks) ids += (ids.empty() ? "" : ",") + std::to_string(t.index);
+    }
     fs::create_directories(plan.study / "slurm");
     std::vector<std::string> argv = task_argv(plan, tasks.front(), workers);
     argv[5] = "\"$SLURM_ARRAY_TASK_ID\"";
@@ -116,7 +145,7 @@ int write_slurm_script(const SweepOptions& o, const SweepPlan& plan, int workers
         "# resumes from its checkpoint. cic treats SIGTERM like Ctrl-C: it finishes\n"
         "# the generation, writes the checkpoint and exits 143.\n"
         "#SBATCH --job-name=cic-{name}\n"
-        "#SBATCH --array=0-{last}%{at_once}\n"
+        "#SBATCH --array={ids}%{at_once}\n"
         "#SBATCH --ntasks=1\n"
         "#SBATCH --cpus-per-task={workers}\n"
         "#SBATCH --output={study}/slurm/%A_%a.out\n"
@@ -125,7 +154,7 @@ int write_slurm_script(const SweepOptions& o, const SweepPlan& plan, int workers
         "#SBATCH --signal=B:TERM@120\n"
         "exec {command}\n",
         fmt::arg("name", plan.name), fmt::arg("file", plan.file.string()),
-        fmt::arg("script", (plan.study / "slurm.sh").string()), fmt::arg("last", tasks.size() - 1),
+        fmt::arg("script", (plan.study / "slurm.sh").string()), fmt::arg("ids", ids),
         fmt::arg("at_once", std::max(1, o.jobs)), fmt::arg("workers", workers), fmt::arg("study", plan.study.string()),
         fmt::arg("command", command));
     io::xml::write_file_atomically(plan.study / "slurm.sh", script);
@@ -140,11 +169,12 @@ int write_slurm_script(const SweepOptions& o, const SweepPlan& plan, int workers
 
 // Runs the tasks not done yet, `jobs` at a time, as child processes (each one
 // `cic sweep FILE --task I`), rebuilding index.csv as they finish.
-int run_locally(const SweepOptions& o, const SweepPlan& plan, int workers, bool quiet) {
+int run_locally(const SweepOptions& o, const SweepPlan& plan, const std::vector<SweepTask>& tasks, int workers,
+                bool quiet) {
     std::vector<SweepTask> todo;
-    for (const SweepTask& t : plan.tasks())
+    for (const SweepTask& t : tasks)
         if (task_state(plan, t).status != TaskStatus::Done) todo.push_back(t);
-    const std::size_t total = plan.tasks().size();
+    const std::size_t total = tasks.size();
     if (!quiet)
         std::fprintf(stderr, "cic sweep: %s: %zu of %zu runs to do, %d at a time, %d worker%s each; study %s\n",
                      plan.name.c_str(), todo.size(), total, o.jobs, workers, workers == 1 ? "" : "s",
@@ -239,6 +269,8 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
     cmd.flag("--index-only", o->index_only,
                   "rewrite STUDY/index.csv from the run folders (and link runs another study stored); run nothing");
     cmd.flag("--slurm", o->slurm, "write STUDY/slurm.sh, a job array with one task per run");
+    cmd.option("--config", o->configs,
+               "only this configuration's runs (repeatable; with the local runner, --dry-run and --slurm)");
     cmd.option("--task", o->task, "run only task I (0-based), resumably: what each array task runs")
         .range(0L, 100000000L);
     cmd.on_run([o, &ctx] {
@@ -246,14 +278,18 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
             const SweepPlan plan = read_sweep_file(o->file, o->output);
             const int workers = o->workers > 0 ? o->workers : std::max(1, hardware_threads() / o->jobs);
             if (o->task >= 0) {
+                if (!o->configs.empty())
+                    throw InputError("--config and --task: a task is one run already; give one of them",
+                                     plan.file.string());
                 const auto tasks = plan.tasks();
                 if (static_cast<std::size_t>(o->task) >= tasks.size())
                     throw InputError(fmt::format("--task {}: the sweep has tasks 0..{}", o->task, tasks.size() - 1),
                                      plan.file.string());
                 return run_task(plan, tasks[static_cast<std::size_t>(o->task)], workers, ctx.quiet, self_exec_path());
             }
+            const std::vector<SweepTask> tasks = selected_tasks(plan, o->configs);
             check_every_configuration(plan);
-            if (o->dry_run) return dry_run(plan, workers);
+            if (o->dry_run) return dry_run(plan, tasks, workers);
             if (o->index_only) {   // for summaries: the runs as they are, nothing run
                 fs::create_directories(plan.study);
                 link_to_store(plan);
@@ -264,9 +300,9 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
             fs::create_directories(plan.study);
             link_to_store(plan);
             io::xml::write_file_atomically(plan.study / "sweep.xml", io::xml::Document::load_file(plan.file).to_string());
-            if (o->slurm) return write_slurm_script(*o, plan, workers);
+            if (o->slurm) return write_slurm_script(*o, plan, tasks, workers);
             write_index(plan);
-            return run_locally(*o, plan, workers, ctx.quiet);
+            return run_locally(*o, plan, tasks, workers, ctx.quiet);
         });
     });
 }

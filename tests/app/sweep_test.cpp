@@ -468,5 +468,34 @@ TEST(Sweep, SlurmScriptRunsTheSameResumableCommandPerTask) {
     fs::remove_all(dir);
 }
 
+// --config runs one configuration's runs and leaves the others pending; the
+// dry run and the Slurm array list only those; an unknown name is refused
+// with the names the sweep has.
+TEST(Sweep, ConfigSelectsOneConfigurationsRuns) {
+    const auto dir = temp_dir("sweep-config");
+    write_text(dir / "s.xml", sweep_text(dir / "study", 2));
+    const std::string sweep = "sweep " + (dir / "s.xml").string();
+    const std::string one = " --config elitism=1+sampleAverageCount=1";
+    ASSERT_EQ(run_command(sweep + one + " --dry-run", dir / "dry.log"), 0) << read_text(dir / "dry.log");
+    EXPECT_NE(read_text(dir / "dry.log").find("3 pending;"), std::string::npos) << read_text(dir / "dry.log");
+    ASSERT_EQ(run_command(sweep + one + " --slurm --workers 1", dir / "slurm.log"), 0) << read_text(dir / "slurm.log");
+    // Tasks are seed-major: configuration 2 of 4 is tasks 2, 6 and 10.
+    EXPECT_NE(read_text(dir / "study" / "slurm.sh").find("#SBATCH --array=2,6,10%1\n"), std::string::npos)
+        << read_text(dir / "study" / "slurm.sh");
+    ASSERT_EQ(run_command(sweep + one + " --jobs 2", dir / "log"), 0) << read_text(dir / "log");
+    EXPECT_NE(read_text(dir / "log").find("3 of 3 runs to do"), std::string::npos) << read_text(dir / "log");
+    const app::StudyIndex study = app::read_study_index(dir / "study");
+    ASSERT_EQ(study.runs.size(), 12u);
+    for (const app::StudyRun& run : study.runs)
+        EXPECT_EQ(run.status == "done", run.config == "elitism=1+sampleAverageCount=1") << run.run_dir;
+    EXPECT_EQ(run_command(sweep + " --config elitism=2 --dry-run", dir / "bad.log"), 2);
+    EXPECT_NE(read_text(dir / "bad.log").find("--config elitism=2: the sweep has no such configuration (it has: "
+                                              "elitism=0+sampleAverageCount=1, elitism=0+sampleAverageCount=2, "),
+              std::string::npos)
+        << read_text(dir / "bad.log");
+    EXPECT_EQ(run_command(sweep + one + " --task 2", dir / "task.log"), 2);
+    fs::remove_all(dir);
+}
+
 } // namespace
 } // namespace cic
