@@ -13,7 +13,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include "cic/app/worker_jobs.hpp"
+#include "cic/run/worker_jobs.hpp"
 #include "cic/core/process_pool.hpp"
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/job_text.hpp"

@@ -165,16 +165,16 @@ set(CPACK_DEBIAN_PACKAGE_SUGGESTS "${_cic_suggests}")
 
 include(CPack)
 
-# tests/app/install_test.cpp installs and packages this build: it needs the
+# tests/cli/install_test.cpp installs and packages this build: it needs the
 # generated files, and the cmake/cpack of this build.
-if(TARGET cic_test_app)
-  add_dependencies(cic_test_app cic_install_files)
+if(TARGET cic_test_cli)
+  add_dependencies(cic_test_cli cic_install_files)
   # An out-of-tree build against sanitized libraries needs the same runtime.
   set(_cic_example_flags "")
   if(CIC_SANITIZE)
     set(_cic_example_flags "-fsanitize=address,undefined -DEIGEN_MALLOC_ALREADY_ALIGNED=1")
   endif()
-  target_compile_definitions(cic_test_app PRIVATE
+  target_compile_definitions(cic_test_cli PRIVATE
     CIC_CMAKE_COMMAND="${CMAKE_COMMAND}" CIC_CPACK_COMMAND="${CMAKE_CPACK_COMMAND}"
     CIC_EXAMPLE_CXX_FLAGS="${_cic_example_flags}")
 endif()

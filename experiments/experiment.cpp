@@ -16,7 +16,7 @@ std::unique_ptr<Experiment> make_experiment(const Context& ctx) {
     switch (ctx.settings.experiment.type) {
     case io::ExperimentType::Symreg: return make_symreg_experiment(ctx);
     case io::ExperimentType::HyperGP: return make_hypergp_experiment(ctx);
-    case io::ExperimentType::Gait: break;   // not a GP experiment: the app runs it (src/app/run_gait.cpp)
+    case io::ExperimentType::Gait: break;   // not a GP experiment: the app runs it (src/run/run_gait.cpp)
     }
     throw std::logic_error("make_experiment: the gait experiment has no GP evaluator");
 }

@@ -21,7 +21,11 @@ ALLOWED = {
     "io": {"gp", "nn", "sim", "tree", "core"},
     "experiments": {"io", "gp", "nn", "sim", "tree", "core"},
     "viz": {"sim", "core"},
-    "app": {"experiments", "io", "gp", "nn", "sim", "tree", "core", "viz"},
+    # The application: report < run < study < cli.
+    "report": {"experiments", "io", "gp", "nn", "sim", "tree", "core"},
+    "run": {"report", "viz", "experiments", "io", "gp", "nn", "sim", "tree", "core"},
+    "study": {"run", "report", "viz", "experiments", "io", "gp", "nn", "sim", "tree", "core"},
+    "cli": {"study", "run", "report", "viz", "experiments", "io", "gp", "nn", "sim", "tree", "core"},
 }
 # Where each layer's files live: its public headers and its sources.
 def places(root, layer):

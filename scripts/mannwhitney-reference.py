@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference values of the two-sided Mann-Whitney U test for tests/app/statistics_test.cpp.
+"""Reference values of the two-sided Mann-Whitney U test for tests/report/statistics_test.cpp.
 
 Runs scipy.stats.mannwhitneyu with its defaults (alternative="two-sided",
 use_continuity=True, method="auto") on fixed data sets and prints them as the

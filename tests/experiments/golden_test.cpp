@@ -1,7 +1,7 @@
 // Golden hashes: the final population files of two short, fixed-seed runs.
 // A HyperGP run in which about half the evaluations fail as physics blow-ups
 // gives the same bytes with 1 and 2 worker processes (and with 3 MPI ranks,
-// tests/app/mpi_test.cpp); so does a HyperGP run on the CPG substrate with
+// tests/run/mpi_test.cpp); so does a HyperGP run on the CPG substrate with
 // feedback; a symbolic-regression run gives the same bytes with 1 and 2 threads. A change that alters results must update these hashes on
 // purpose and say why in its commit message.
 #include <gtest/gtest.h>

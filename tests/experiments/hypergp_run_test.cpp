@@ -11,7 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "cic/app/replay.hpp"
+#include "cic/report/replay.hpp"
 #include "cic/core/error.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/stats_csv.hpp"

@@ -122,7 +122,7 @@ inline std::string golden_symreg_settings(int threads) {
 }
 
 // The hashes of golden_hypergp_settings' and golden_symreg_settings' final
-// population.xml (tests/experiments/golden_test.cpp, tests/app/mpi_test.cpp).
+// population.xml (tests/experiments/golden_test.cpp, tests/run/mpi_test.cpp).
 inline const std::string kGoldenHypergp = "ab3a3e7d29aa37ad";
 inline const std::string kGoldenSymreg = "1267ae7aacf5fb20";
 inline const std::string kGoldenCpg = "45c972bee328b1dc";   // golden_cpg_settings

@@ -11,7 +11,7 @@
 #include <set>
 #include <string>
 
-#include "cic/app/preset_replay.hpp"
+#include "cic/report/preset_replay.hpp"
 #include "cic/viz/palette.hpp"
 #include "cic/viz/viewer.hpp"
 #include "support/child_env.hpp"

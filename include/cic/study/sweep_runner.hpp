@@ -1,0 +1,33 @@
+#pragma once
+// What `cic sweep` does with a plan (cic/study/sweep.hpp): check it, list it,
+// run it here N tasks at a time, or write it as a Slurm job array.
+#include <string>
+#include <vector>
+
+#include "cic/study/sweep.hpp"
+
+namespace cic::app {
+
+// The tasks of the named configurations (--config), in plan order; every task
+// when `names` is empty. Throws cic::InputError for an unknown name, listing the
+// sweep's names.
+std::vector<SweepTask> selected_tasks(const SweepPlan& plan, const std::vector<std::string>& names);
+
+// Loads and checks every configuration's settings (seeds change no input),
+// before anything is written. Throws cic::InputError naming the configuration.
+void check_every_configuration(const SweepPlan& plan);
+
+// Prints each task's status and command; runs nothing. Returns 0.
+int dry_run(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int workers);
+
+// Writes STUDY/slurm.sh, a job array of `tasks` (their plan indices), at most
+// `jobs` at once, and the index. Returns 0.
+int write_slurm_script(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int jobs, int workers);
+
+// Runs the tasks not done yet, `jobs` at a time, as child processes (each one
+// `cic sweep FILE --task I`), rebuilding index.csv as they finish. SIGINT and
+// SIGTERM stop them at their next checkpoint. Returns 0, 1 (a task failed),
+// 130 or 143.
+int run_locally(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int jobs, int workers, bool quiet);
+
+} // namespace cic::app

@@ -1,0 +1,55 @@
+// `cic assess RUN...`: is each run's best individual walking? One CSV row per
+// input (gait_assessment.hpp), to stdout or --out.
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "cic/cli/command_guard.hpp"
+#include "cic/cli/commands.hpp"
+#include "cic/report/gait_assessment.hpp"
+#include "cic/io/xml.hpp"
+
+namespace cic::app {
+
+void add_assess_command(Command& app, CommandContext& ctx) {
+    struct Options {
+        std::vector<std::string> inputs;
+        std::string out;
+        double shaking_above = kShakingAboveHz;
+    };
+    auto opts = std::make_shared<Options>();
+    Command cmd = app.subcommand(
+        "assess", "Replay the best individual of each run folder (or population file) and say whether it walks: "
+                  "dominant command frequency, centre height, flipped, shaking (thesis 7.3.2.1), and the raw eq. 7.1 "
+                  "fitness without any penalty. CSV, one row per input");
+    cmd.option("inputs", opts->inputs, "run folders or population XML files").required();
+    cmd.option("--out", opts->out, "write the CSV here (atomically) instead of stdout");
+    cmd.option("--shaking-above", opts->shaking_above, "dominant command frequency, Hz, above which a gait is "
+                                                            "marked shaking")
+        .show_default()
+        .positive();
+    cmd.on_run([opts, &ctx] {
+        run_guarded(ctx, "assess", [&] {
+            std::ostringstream csv;
+            csv << "input,fitness,dominant_hz,mean_height,min_height,final_up,flipped,shaking,raw_fitness\n";
+            for (const std::string& input : opts->inputs) {
+                const auto items = replay(input, "best", 1, 10.0, true);
+                const GaitAssessment a = assess_gait(items.at(0), opts->shaking_above);
+                csv << fmt::format("{},{:.17g},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{:.17g}\n", input, a.fitness,
+                                   a.dominant_hz, a.mean_height, a.min_height, a.final_up, a.flipped ? 1 : 0,
+                                   a.shaking ? 1 : 0, a.raw_fitness);
+            }
+            if (opts->out.empty()) {
+                std::cout << csv.str();
+            } else {
+                io::xml::write_file_atomically(opts->out, csv.str());
+                if (!ctx.quiet) std::cerr << fmt::format("assessed {} gaits; wrote {}\n", opts->inputs.size(), opts->out);
+            }
+            return 0;
+        });
+    });
+}
+
+} // namespace cic::app

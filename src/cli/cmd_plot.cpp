@@ -1,0 +1,143 @@
+// `cic plot`: fitness, depth and size per generation from run folders or a study, or a network trace.
+#include <fmt/format.h>
+
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <type_traits>
+
+#include "cic/cli/command_guard.hpp"
+#include "cic/cli/commands.hpp"
+#include "cic/report/plot.hpp"
+#include "cic/core/error.hpp"
+
+namespace cic::app {
+namespace {
+
+struct PlotCommandOptions {
+    std::vector<std::string> runs;
+    std::string trace;
+    std::string out;
+    std::string title;
+    std::vector<std::string> joints;
+    double from = -std::numeric_limits<double>::infinity();
+    double to = std::numeric_limits<double>::infinity();
+    int width = 0, height = 0;
+    bool median = false;
+    bool include_unfinished = false;
+    bool by_evaluations = false;
+    std::vector<std::string> configs;
+};
+
+// The fields every kind of plot shares; P is PlotOptions or one derived from it.
+template <class P>
+P plot_options(const PlotCommandOptions& o) {
+    P plot;
+    plot.title = o.title;
+    plot.width = o.width;
+    plot.height = o.height;
+    if constexpr (std::is_base_of_v<StudyPlotOptions, P>) {
+        plot.median = o.median;
+        plot.include_unfinished = o.include_unfinished;
+    }
+    return plot;
+}
+
+} // namespace
+
+void add_plot_command(Command& app, CommandContext& ctx) {
+    auto opts = std::make_shared<PlotCommandOptions>();
+    Command cmd = app.subcommand(
+        "plot", "Plot best/mean fitness, depth and size per generation of run folders (folders named NAME-NNN "
+                "are grouped by NAME: mean curve, +-1 sd band) or of a study folder from cic sweep (one colour per "
+                "configuration), or best fitness so far against evaluations of several studies (--by-evaluations), or a "
+                "trace CSV with --trace");
+    cmd.option("runs", opts->runs,
+                    "run folders (each holds stats.csv), or one study folder (holds index.csv), or with "
+                    "--by-evaluations several study folders");
+    cmd.option("--trace", opts->trace, "plot this trace CSV (from cic trace) instead");
+    cmd.option("--out", opts->out, "output .svg or .png (default: plot.svg, or trace.svg with --trace)");
+    cmd.option("--title", opts->title, "figure title");
+    cmd.option("--joints", opts->joints, "with --trace: only these joints").delimiter(',');
+    cmd.option("--from", opts->from, "with --trace: start time, s");
+    cmd.option("--to", opts->to, "with --trace: end time, s");
+    cmd.option("--width", opts->width, "pixels").positive();
+    cmd.option("--height", opts->height, "pixels").positive();
+    cmd.flag("--median", opts->median, "with a study: median curves with Q1..Q3 bands (default: mean, +-1 sd)");
+    cmd.flag("--include-unfinished", opts->include_unfinished,
+                  "with a study: also runs whose status is not done (default: done runs only)");
+    cmd.flag("--by-evaluations", opts->by_evaluations,
+                  "study folders on one panel: best fitness so far against evaluations used, one curve per "
+                  "study and configuration (e.g. HyperGP against CMA-ES at the same budget)");
+    cmd.option("--config", opts->configs,
+                    "with --by-evaluations: only these configurations (config names of index.csv); every study "
+                    "must have them")
+        .delimiter(',');
+    cmd.on_run([opts, &ctx] {
+        run_guarded(ctx, "plot", [&] {
+            if (opts->trace.empty() == opts->runs.empty())
+                throw InputError("give either run folders or --trace FILE.csv");
+            if (opts->by_evaluations && !opts->trace.empty())
+                throw InputError("--by-evaluations plots study folders, not a trace");
+            if (!opts->trace.empty()) {
+                auto plot = plot_options<TracePlotOptions>(*opts);
+                plot.joints = opts->joints;
+                plot.from = opts->from;
+                plot.to = opts->to;
+                const std::string out = opts->out.empty() ? "trace.svg" : opts->out;
+                plot_trace(opts->trace, out, plot);
+                if (!ctx.quiet) std::cerr << "wrote " << out << '\n';
+                return 0;
+            }
+            if (!opts->configs.empty() && !opts->by_evaluations)
+                throw InputError("--config applies with --by-evaluations");
+            if (opts->by_evaluations) {
+                std::vector<std::filesystem::path> studies;
+                for (const auto& dir : opts->runs) {
+                    if (!is_study_folder(dir))
+                        throw InputError("--by-evaluations plots study folders (each holds index.csv from cic sweep)",
+                                         dir);
+                    studies.emplace_back(dir);
+                }
+                auto plot = plot_options<EvaluationPlotOptions>(*opts);
+                plot.configs = opts->configs;
+                const std::string out = opts->out.empty() ? "plot.svg" : opts->out;
+                plot_studies_by_evaluations(studies, out, plot);
+                if (!ctx.quiet) std::cerr << "wrote " << out << '\n';
+                return 0;
+            }
+            const bool study = opts->runs.size() == 1 && is_study_folder(opts->runs[0]);
+            if (!study) {
+                for (const auto& dir : opts->runs)
+                    if (is_study_folder(dir))
+                        throw InputError("a study folder is plotted on its own (give one study, or run folders)",
+                                         dir);
+                if (opts->median || opts->include_unfinished)
+                    throw InputError("--median and --include-unfinished apply to a study folder (holds index.csv)");
+            } else {
+                const auto plot = plot_options<StudyPlotOptions>(*opts);
+                const std::string out = opts->out.empty() ? "plot.svg" : opts->out;
+                plot_study(opts->runs[0], out, plot);
+                if (!ctx.quiet) {
+                    const StudyIndex index = read_study_index(opts->runs[0]);
+                    for (const auto& g : group_study(index, opts->include_unfinished))
+                        std::cerr << fmt::format("{}: {} run(s)\n", g.config, g.runs.size());
+                    std::cerr << "wrote " << out << '\n';
+                }
+                return 0;
+            }
+            const auto plot = plot_options<PlotOptions>(*opts);
+            std::vector<std::filesystem::path> dirs(opts->runs.begin(), opts->runs.end());
+            const std::string out = opts->out.empty() ? "plot.svg" : opts->out;
+            plot_runs(dirs, out, plot);
+            if (!ctx.quiet) {
+                for (const auto& g : group_runs(dirs))
+                    std::cerr << fmt::format("{}: {} run(s)\n", g.label, g.runs.size());
+                std::cerr << "wrote " << out << '\n';
+            }
+            return 0;
+        });
+    });
+}
+
+} // namespace cic::app

@@ -1,0 +1,89 @@
+// `cic sweep FILE`: runs every (configuration, seed) of a sweep file as its own
+// run folder under one study folder, N at a time; or writes a Slurm job array
+// that runs the same resumable command per task (docs/cluster.md).
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "cic/cli/command_guard.hpp"
+#include "cic/cli/commands.hpp"
+#include "cic/core/parallel_for.hpp"
+#include "cic/io/xml.hpp"
+#include "cic/run/self_path.hpp"
+#include "cic/study/sweep.hpp"
+#include "cic/study/sweep_runner.hpp"
+
+namespace cic::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SweepOptions {
+    std::string file;
+    std::string output;
+    int jobs = 1;
+    int workers = 0;      // 0: cores / jobs
+    long task = -1;       // >= 0: run this one task (Slurm array tasks, and the local runner's children)
+    bool dry_run = false;
+    bool slurm = false;
+    bool index_only = false;
+    std::vector<std::string> configs;   // --config: only these configurations (empty: all)
+};
+
+} // namespace
+
+void add_sweep_command(Command& app, CommandContext& ctx) {
+    auto o = std::make_shared<SweepOptions>();
+    Command cmd = app.subcommand(
+        "sweep", "Run a study: every (configuration, seed) of a sweep file in its own run folder, N at a time, "
+                 "resumable; or write a Slurm job array for it");
+    cmd.option("file", o->file, "sweep file (docs/cluster.md)").required();
+    cmd.option("--jobs,-j", o->jobs, "runs at the same time (with --slurm: array tasks at once)")
+        .show_default()
+        .range(1, 4096);
+    cmd.option("--workers", o->workers, "worker processes per run (default: cores / jobs, at least 1)")
+        .range(0, 4096);
+    cmd.option("--output", o->output, "study folder (default: the sweep file's <output>, else runs/NAME)");
+    cmd.flag("--dry-run", o->dry_run, "list every run with its status and command; run nothing");
+    cmd.flag("--index-only", o->index_only,
+                  "rewrite STUDY/index.csv from the run folders (and link runs another study stored); run nothing");
+    cmd.flag("--slurm", o->slurm, "write STUDY/slurm.sh, a job array with one task per run");
+    cmd.option("--config", o->configs,
+               "only this configuration's runs (repeatable; with the local runner, --dry-run and --slurm)");
+    cmd.option("--task", o->task, "run only task I (0-based), resumably: what each array task runs")
+        .range(0L, 100000000L);
+    cmd.on_run([o, &ctx] {
+        run_guarded(ctx, "sweep", [&] {
+            const SweepPlan plan = read_sweep_file(o->file, o->output);
+            const int workers = o->workers > 0 ? o->workers : std::max(1, hardware_threads() / o->jobs);
+            if (o->task >= 0) {
+                if (!o->configs.empty())
+                    throw InputError("--config and --task: a task is one run already; give one of them",
+                                     plan.file.string());
+                const auto tasks = plan.tasks();
+                if (static_cast<std::size_t>(o->task) >= tasks.size())
+                    throw InputError(fmt::format("--task {}: the sweep has tasks 0..{}", o->task, tasks.size() - 1),
+                                     plan.file.string());
+                return run_task(plan, tasks[static_cast<std::size_t>(o->task)], workers, ctx.quiet, self_exec_path());
+            }
+            const std::vector<SweepTask> tasks = selected_tasks(plan, o->configs);
+            check_every_configuration(plan);
+            if (o->dry_run) return dry_run(plan, tasks, workers);
+            if (o->index_only) {   // for summaries: the runs as they are, nothing run
+                fs::create_directories(plan.study);
+                link_to_store(plan);
+                write_index(plan);
+                return 0;
+            }
+            refuse_mismatched_runs(plan);   // before anything of the study is written
+            fs::create_directories(plan.study);
+            link_to_store(plan);
+            io::xml::write_file_atomically(plan.study / "sweep.xml", io::xml::Document::load_file(plan.file).to_string());
+            if (o->slurm) return write_slurm_script(plan, tasks, o->jobs, workers);
+            write_index(plan);
+            return run_locally(plan, tasks, o->jobs, workers, ctx.quiet);
+        });
+    });
+}
+
+} // namespace cic::app

@@ -1,0 +1,371 @@
+// gnuplot scripts for run statistics and network traces.
+#include "cic/report/plot.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
+
+#include "cic/report/trace_csv.hpp"
+#include "cic/core/error.hpp"
+
+namespace cic::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::array<const char*, 8> kColours = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
+                                                 "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+
+// A scratch folder for the script and data files, removed afterwards.
+class ScratchDir {
+public:
+    ScratchDir() {
+        std::string templ = (fs::temp_directory_path() / "cic-plot-XXXXXX").string();
+        if (!mkdtemp(templ.data())) throw std::runtime_error("plot: cannot create a temporary folder");
+        path_ = templ;
+    }
+    ~ScratchDir() {
+        std::error_code ec;
+        fs::remove_all(path_, ec);
+    }
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+    const fs::path& path() const { return path_; }
+
+private:
+    fs::path path_;
+};
+
+// A gnuplot single-quoted string.
+std::string quote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) {
+        if (c == '\'') out += '\'';
+        out += c;
+    }
+    return out + "'";
+}
+
+void write_file(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw std::runtime_error("plot: cannot write " + path.string());
+}
+
+// The terminal line for the output file's extension.
+std::string terminal_for(const fs::path& out_file, int width, int height, const std::string& gnuplot,
+                         const fs::path& scratch) {
+    std::string ext = out_file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == ".svg")
+        return fmt::format("set terminal svg size {},{} dynamic noenhanced font 'Sans,12' background rgb 'white'",
+                           width, height);
+    if (ext == ".png") {
+        // pngcairo draws antialiased lines; plain png (libgd) is the fallback on minimal gnuplot builds.
+        const fs::path probe = scratch / "probe.gp";
+        write_file(probe, "set terminal pngcairo\n");
+        try {
+            run_gnuplot(gnuplot, probe);
+            return fmt::format("set terminal pngcairo size {},{} noenhanced font 'Sans,10' background rgb 'white'",
+                               width, height);
+        } catch (const std::runtime_error&) {
+            return fmt::format("set terminal png size {},{} noenhanced background rgb 'white'", width, height);
+        }
+    }
+    throw InputError(fmt::format("unsupported plot format '{}' (use .svg or .png)", ext), out_file.string());
+}
+
+void check_output_folder(const fs::path& out_file) {
+    const fs::path parent = out_file.parent_path();
+    if (!parent.empty() && !fs::is_directory(parent))
+        throw InputError("output folder does not exist", parent.string());
+}
+
+void render(const std::string& gnuplot, const fs::path& scratch, const std::string& script,
+            const fs::path& out_file) {
+    const fs::path script_file = scratch / "plot.gp";
+    write_file(script_file, script);
+    std::error_code ec;
+    fs::remove(out_file, ec);   // so a stale file cannot pass for a new plot
+    run_gnuplot(gnuplot, script_file);
+    if (!fs::exists(out_file) || fs::file_size(out_file) == 0)
+        throw std::runtime_error("gnuplot exited normally but wrote no " + out_file.string());
+}
+
+// A curve with a band per series: centre column `col`, band columns col+1 (low)
+// and col+2 (high); the band only where a series has several runs.
+struct BandSeries {
+    std::string label;
+    std::size_t runs = 0;
+    std::string data;   // gnuplot-quoted data file
+};
+std::string band_plot_command(const std::vector<BandSeries>& series, int col) {
+    std::vector<std::string> items;
+    for (std::size_t k = 0; k < series.size(); ++k) {
+        const std::string colour = fmt::format("rgb '{}'", kColours[k % kColours.size()]);
+        const std::string label =
+            fmt::format("{} ({} run{})", series[k].label, series[k].runs, series[k].runs == 1 ? "" : "s");
+        if (series[k].runs > 1)
+            items.push_back(fmt::format("{} using 1:{}:{} with filledcurves fs transparent solid 0.18 noborder "
+                                        "lc {} notitle",
+                                        series[k].data, col + 1, col + 2, colour));
+        items.push_back(
+            fmt::format("{} using 1:{} with lines lw 2 lc {} title {}", series[k].data, col, colour, quote(label)));
+    }
+    return fmt::format("plot {}\n", fmt::join(items, ", \\\n  "));
+}
+
+// The done runs of a study configuration (or every run with statistics).
+std::vector<std::vector<StatsRow>> stats_of(const StudyIndex& index, const StudyGroup& group) {
+    std::vector<std::vector<StatsRow>> runs;
+    for (const StudyRun* run : group.runs) {
+        auto rows = read_study_run_stats(index, *run);
+        if (!rows.empty()) runs.push_back(std::move(rows));
+    }
+    return runs;
+}
+
+InputError nothing_to_plot(const StudyIndex& index, bool include_unfinished) {
+    return InputError(include_unfinished ? "the study has no run with statistics yet"
+                                         : "the study has no done run to plot (--include-unfinished also plots "
+                                           "the others)",
+                      index.file.string());
+}
+
+std::string study_name(const fs::path& study) {
+    fs::path p = study;
+    if (!p.has_filename()) p = p.parent_path();
+    return fs::weakly_canonical(p).filename().string();
+}
+
+} // namespace
+
+void plot_runs(const std::vector<fs::path>& run_dirs, const fs::path& out_file, const PlotOptions& options) {
+    if (run_dirs.empty()) throw InputError("plot: give at least one run folder");
+    check_output_folder(out_file);
+    const auto groups = group_runs(run_dirs);
+    ScratchDir scratch;
+
+    std::vector<std::string> data_files;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        std::vector<std::vector<StatsRow>> runs;
+        for (const auto& dir : groups[g].runs) runs.push_back(read_stats_csv(dir / "stats.csv"));
+        std::string text = "# generation runs best best_sd mean mean_sd mean_depth max_depth mean_size max_size\n";
+        for (const auto& s : summarise(runs))
+            text += fmt::format("{} {} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g}\n", s.generation,
+                                s.runs, s.best, s.best_sd, s.mean, s.mean_sd, s.mean_depth, s.max_depth, s.mean_size,
+                                s.max_size);
+        const fs::path data = scratch.path() / fmt::format("group{}.dat", g);
+        write_file(data, text);
+        data_files.push_back(quote(data.string()));
+    }
+
+    auto label = [&](std::size_t g) {
+        const auto n = groups[g].runs.size();
+        return n > 1 ? fmt::format("{} ({} runs)", groups[g].label, n) : groups[g].label;
+    };
+    auto colour = [](std::size_t g) { return fmt::format("rgb '{}'", kColours[g % kColours.size()]); };
+    // Mean curve of column `col` with a +-1 sd band (column sd_col) for groups of several runs.
+    auto fitness_panel = [&](const char* title, int col, int sd_col) {
+        std::vector<std::string> items;
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            if (groups[g].runs.size() > 1)
+                items.push_back(fmt::format("{} using 1:(${}-${}):(${}+${}) with filledcurves fs transparent solid 0.18 "
+                                            "noborder lc {} notitle",
+                                            data_files[g], col, sd_col, col, sd_col, colour(g)));
+            items.push_back(fmt::format("{} using 1:{} with lines lw 2 lc {} title {}", data_files[g], col, colour(g),
+                                        quote(label(g))));
+        }
+        return fmt::format("set title {}\nset ylabel 'fitness'\nplot {}\n", quote(title), fmt::join(items, ", \\\n  "));
+    };
+    auto mean_max_panel = [&](const char* title, const char* what, int mean_col, int max_col) {
+        std::vector<std::string> items;
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            items.push_back(fmt::format("{} using 1:{} with lines lw 2 lc {} title {}", data_files[g], max_col,
+                                        colour(g), quote(label(g) + " max " + what)));
+            items.push_back(fmt::format("{} using 1:{} with lines lw 2 dt 2 lc {} title {}", data_files[g], mean_col,
+                                        colour(g), quote(label(g) + " mean " + what)));
+        }
+        return fmt::format("set title {}\nset ylabel {}\nplot {}\n", quote(title), quote(what),
+                           fmt::join(items, ", \\\n  "));
+    };
+
+    const int width = options.width > 0 ? options.width : 1200;
+    const int height = options.height > 0 ? options.height : 900;
+    std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
+    script += fmt::format("set output {}\n", quote(out_file.string()));
+    script += fmt::format("set multiplot layout 2,2{}\n",
+                          options.title.empty() ? "" : " title " + quote(options.title));
+    script += "set grid\nset key left top box opaque\nset xlabel 'generation'\nset autoscale xfix\n";
+    script += fitness_panel("best fitness", 3, 4);
+    script += fitness_panel("mean fitness", 5, 6);
+    script += mean_max_panel("depth (solid: max, dashed: mean)", "depth", 7, 8);
+    script += mean_max_panel("size (solid: max, dashed: mean)", "size", 9, 10);
+    script += "unset multiplot\nset output\n";
+    render(options.gnuplot, scratch.path(), script, out_file);
+}
+
+void plot_study(const fs::path& study, const fs::path& out_file, const StudyPlotOptions& options) {
+    check_output_folder(out_file);
+    const StudyIndex index = read_study_index(study);
+    std::vector<BandSeries> series;
+    ScratchDir scratch;
+    for (const auto& group : group_study(index, options.include_unfinished)) {
+        const auto runs = stats_of(index, group);
+        if (runs.empty()) continue;
+        std::string text = "# generation runs then centre low high of: best mean mean_depth max_depth\n";
+        for (const auto& g : summarise_bands(runs, options.median)) {
+            text += fmt::format("{} {}", g.generation, g.runs);
+            for (const Band& b : {g.best, g.mean, g.mean_depth, g.max_depth})
+                text += fmt::format(" {:.10g} {:.10g} {:.10g}", b.centre, b.low, b.high);
+            text += '\n';
+        }
+        const fs::path data = scratch.path() / fmt::format("config{}.dat", series.size());
+        write_file(data, text);
+        series.push_back({group.config, runs.size(), quote(data.string())});
+    }
+    if (series.empty())
+        throw nothing_to_plot(index, options.include_unfinished);
+
+    const std::string band_name = options.median ? "median, IQR band" : "mean, +-1 sd band";
+    auto panel = [&](const std::string& title, const char* ylabel, int col) {
+        return fmt::format("set title {}\nset ylabel {}\n{}", quote(title + " (" + band_name + ")"), quote(ylabel),
+                           band_plot_command(series, col));
+    };
+
+    const int width = options.width > 0 ? options.width : 1200;
+    const int height = options.height > 0 ? options.height : 900;
+    const std::string title = options.title.empty() ? "study " + study_name(study) : options.title;
+    std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
+    script += fmt::format("set output {}\n", quote(out_file.string()));
+    script += fmt::format("set multiplot layout 2,2 title {}\n", quote(title));
+    script += "set grid\nset key left top box opaque\nset xlabel 'generation'\nset autoscale xfix\n";
+    script += panel("best fitness", "fitness", 3);
+    script += panel("mean fitness", "fitness", 6);
+    script += panel("max depth", "depth", 12);
+    script += panel("mean depth", "depth", 9);
+    script += "unset multiplot\nset output\n";
+    render(options.gnuplot, scratch.path(), script, out_file);
+}
+
+void plot_studies_by_evaluations(const std::vector<fs::path>& studies, const fs::path& out_file,
+                                 const EvaluationPlotOptions& options) {
+    if (studies.empty()) throw InputError("plot: give at least one study folder");
+    check_output_folder(out_file);
+    const bool one_per_study = options.configs.size() == 1;
+    std::vector<BandSeries> series;
+    ScratchDir scratch;
+    for (const auto& study : studies) {
+        const StudyIndex index = read_study_index(study);
+        const auto groups = group_study(index, options.include_unfinished);
+        std::vector<const StudyGroup*> chosen;
+        if (options.configs.empty()) {
+            for (const auto& g : groups) chosen.push_back(&g);
+        } else {
+            for (const auto& name : options.configs) {
+                const auto it = std::find_if(groups.begin(), groups.end(),
+                                             [&](const StudyGroup& g) { return g.config == name; });
+                if (it == groups.end()) {
+                    std::vector<std::string> names;
+                    for (const auto& g : groups) names.push_back(g.config);
+                    throw InputError(fmt::format("no configuration '{}' in the study (it has: {})", name,
+                                                 fmt::join(names, ", ")),
+                                     index.file.string());
+                }
+                chosen.push_back(&*it);
+            }
+        }
+        const std::size_t before = series.size();
+        for (const StudyGroup* group : chosen) {
+            const auto runs = stats_of(index, *group);
+            if (runs.empty()) continue;
+            std::string text = "# evaluations runs best_so_far low high\n";
+            for (const auto& b : summarise_by_evaluations(runs, options.median))
+                text += fmt::format("{:.10g} {} {:.10g} {:.10g} {:.10g}\n", b.evaluations, b.runs,
+                                    b.best_so_far.centre, b.best_so_far.low, b.best_so_far.high);
+            const fs::path data = scratch.path() / fmt::format("series{}.dat", series.size());
+            write_file(data, text);
+            const std::string name = study_name(study);
+            series.push_back({one_per_study ? name : name + ": " + group->config, runs.size(), quote(data.string())});
+        }
+        if (series.size() == before)
+            throw nothing_to_plot(index, options.include_unfinished);
+    }
+
+    const int width = options.width > 0 ? options.width : 900;
+    const int height = options.height > 0 ? options.height : 600;
+    const std::string band_name = options.median ? "median, IQR band" : "mean, +-1 sd band";
+    const std::string title = options.title.empty() ? "best fitness so far" : options.title;
+    std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
+    script += fmt::format("set output {}\n", quote(out_file.string()));
+    script += fmt::format("set title {}\n", quote(title + " (" + band_name + ")"));
+    script += "set grid\nset key left top box opaque\nset xlabel 'evaluations'\nset ylabel 'best fitness so far'\n"
+              "set autoscale xfix\n";
+    script += band_plot_command(series, 3);
+    script += "set output\n";
+    render(options.gnuplot, scratch.path(), script, out_file);
+}
+
+void plot_trace(const fs::path& trace_csv, const fs::path& out_file, const TracePlotOptions& options) {
+    check_output_folder(out_file);
+    if (!(options.from < options.to)) throw InputError("plot: --from must be before --to");
+    const TraceTable table = read_trace_csv(trace_csv);
+    std::vector<std::size_t> chosen;
+    if (options.joints.empty()) {
+        for (std::size_t j = 0; j < table.joints.size(); ++j) chosen.push_back(j);
+    } else {
+        for (const auto& name : options.joints) {
+            const auto it = std::find(table.joints.begin(), table.joints.end(), name);
+            if (it == table.joints.end())
+                throw InputError(fmt::format("no joint '{}' in the trace (joints: {})", name,
+                                             fmt::join(table.joints, ", ")),
+                                 trace_csv.string());
+            chosen.push_back(static_cast<std::size_t>(it - table.joints.begin()));
+        }
+    }
+    if (chosen.empty()) throw InputError("the trace has no joints", trace_csv.string());
+
+    ScratchDir scratch;
+    std::string text = "# t then per chosen joint: output command angle\n";
+    std::size_t kept = 0;
+    for (const auto& row : table.rows) {
+        if (row.t < options.from || row.t > options.to) continue;
+        ++kept;
+        text += fmt::format("{:.10g}", row.t);
+        for (std::size_t j : chosen)
+            text += fmt::format(" {:.10g} {:.10g} {:.10g}", row.outputs[j], row.commands[j], row.angles[j]);
+        text += '\n';
+    }
+    if (kept == 0) throw InputError("no trace rows in the chosen time window", trace_csv.string());
+    const fs::path data = scratch.path() / "trace.dat";
+    write_file(data, text);
+
+    const int columns = chosen.size() > 6 ? 2 : 1;
+    const int rows = static_cast<int>((chosen.size() + static_cast<std::size_t>(columns) - 1) /
+                                      static_cast<std::size_t>(columns));
+    const int width = options.width > 0 ? options.width : 900 * columns;
+    const int height = options.height > 0 ? options.height : 80 + 210 * rows;
+    std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
+    script += fmt::format("set output {}\n", quote(out_file.string()));
+    script += fmt::format("set multiplot layout {},{} columnsfirst{}\n", rows, columns,
+                          " title " + quote(options.title.empty() ? trace_csv.filename().string() : options.title));
+    script += "set grid\nset key outside right top\nset xlabel 't [s]'\nset ylabel 'rad'\nset autoscale xfix\n";
+    for (std::size_t k = 0; k < chosen.size(); ++k) {
+        const std::size_t base = 2 + 3 * k;
+        script += fmt::format("set title {}\n", quote("joint " + table.joints[chosen[k]]));
+        script += fmt::format(
+            "plot {0} using 1:{1} with lines lw 1 lc rgb '#999999' title 'raw output', \\\n"
+            "  {0} using 1:{2} with lines lw 2 lc rgb '#1f77b4' title 'command', \\\n"
+            "  {0} using 1:{3} with lines lw 2 dt 2 lc rgb '#d62728' title 'angle'\n",
+            quote(data.string()), base, base + 1, base + 2);
+    }
+    script += "unset multiplot\nset output\n";
+    render(options.gnuplot, scratch.path(), script, out_file);
+}
+
+} // namespace cic::app

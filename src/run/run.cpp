@@ -1,0 +1,187 @@
+// The main job: settings -> experiment -> evolution loop, with statistics,
+// checkpoints, progress and Ctrl-C handling around it.
+#include "cic/run/run.hpp"
+
+
+#include <fmt/format.h>
+
+#include "cic/run/progress.hpp"
+#include "cic/core/error.hpp"
+#include "cic/io/population_xml.hpp"
+#include "cic/io/stats_csv.hpp"
+#include "cic/io/xml.hpp"
+#include "cic/io/gait_xml.hpp"
+#include "cic/experiments/experiment.hpp"
+#include "cic/experiments/gait/restarts.hpp"
+#include "cic/experiments/gait/setup.hpp"
+#include "run_support.hpp"
+
+namespace cic::app {
+
+using detail::finish_run;
+using detail::make_context;
+using detail::resolved_workers;
+using detail::RunConsole;
+using detail::StopSignalGuard;
+using detail::write_checkpoint;
+
+PreparedRun prepare_run(io::Settings s) {
+    experiments::check_inputs(s);
+    PreparedRun p;
+    if (!s.control.population_load_from.empty() && s.experiment.type == io::ExperimentType::Gait) {
+        const std::string from = s.control.population_load_from;
+        try {
+            io::GaitFile loaded = io::load_gait(from);
+            const gait::Setup setup = gait::Setup::from_settings(s);
+            io::check_compatible(loaded, s, setup.dimension(), from);
+            (void)gait::resume_search(setup, gait::restart_rule_of(s), loaded, from);   // replays: a checkpoint that does not is refused now
+            p.gait_resume = std::move(loaded);
+        } catch (const InputError& e) {
+            throw InputError("<Control> populationXmlLoadFrom: " + e.message(), e.file(), e.line());
+        }
+    } else if (!s.control.population_load_from.empty()) {
+        const std::string from = s.control.population_load_from;   // absolute: resolved when read
+        try {
+            io::PopulationFile loaded = io::load_population(from);
+            io::check_compatible(loaded, s, from);
+            p.resume = std::move(loaded);
+        } catch (const InputError& e) {
+            throw InputError("<Control> populationXmlLoadFrom: " + e.message(), e.file(), e.line());
+        }
+    }
+    p.settings = std::move(s);
+    return p;
+}
+
+namespace {
+
+// Where the loop starts: a fresh state from the seed, or the loaded population
+// with its saved state (a resume continues the same run).
+struct Start {
+    gp::EvolutionState state;
+    std::optional<gp::Population> population;
+};
+
+Start start_of(PreparedRun& prepared, const io::PopulationFile& header, RunConsole& console) {
+    const io::Settings& s = prepared.settings;
+    Start out;
+    out.state.seed = s.experiment.seed;
+    out.state.rng = Rng(s.experiment.seed);
+    if (!prepared.resume) return out;
+    io::PopulationFile& loaded = *prepared.resume;
+    const std::string& from = s.control.population_load_from;
+    if (loaded.settings_digest != header.settings_digest)
+        console.say(fmt::format("note: {} was made with other settings (digest {} vs {}); continuing with these settings",
+                                from, loaded.settings_digest, header.settings_digest));
+    out.state = loaded.state;
+    out.population = std::move(loaded.population);
+    console.say(fmt::format("resuming from {} at generation {} (seed {})", from, out.population->generation,
+                            out.state.seed));
+    return out;
+}
+
+// What the run does after each generation: stats.csv, run.log, the progress
+// line, and every Experiment.checkpointInterval generations a population file.
+class GenerationObserver {
+public:
+    GenerationObserver(const io::Settings& s, const RunOptions& opt, RunConsole& console, io::PopulationFile header,
+                       const Start& start)
+        : s_(s), opt_(opt), console_(console), header_(std::move(header)),
+          stats_(opt.continue_in_place && start.population
+                     ? io::StatsWriter(opt.run_dir / "stats.csv", start.population->generation)
+                     : io::StatsWriter(opt.run_dir / "stats.csv")),
+          evaluations_before_(start.state.evaluations),
+          first_generation_(start.population ? start.population->generation + 1 : 0) {
+        std::filesystem::create_directories(opt.run_dir / "populations");
+    }
+
+    gp::EvolutionHooks hooks() {
+        gp::EvolutionHooks h;
+        h.on_generation = [this](const gp::GenerationRecord& r) { on_generation(r); };
+        h.on_checkpoint = [this](const gp::Population& p, const gp::EvolutionState& st, bool last) {
+            on_checkpoint(p, st, last);
+        };
+        h.stop_requested = &detail::stop_requested();
+        return h;
+    }
+
+private:
+    void on_generation(const gp::GenerationRecord& r) {
+        stats_.write(r);
+        console_.log(fmt::format("gen {} best {:.17g} mean {:.17g} median {:.17g} depth {:.3f}/{} size {:.2f}/{} limit "
+                                 "{} illegal {} evaluations {} {:.2f}s",
+                                 r.generation, r.best, r.mean, r.median, r.mean_depth, r.max_depth, r.mean_size,
+                                 r.max_size, r.limit, r.illegal, r.evaluations, r.wall_seconds));
+        ProgressLine p;
+        p.generation = r.generation;
+        p.max_generations = r.max_generations;
+        p.evaluations_per_second = r.generation_seconds > 0
+            ? static_cast<double>(r.evaluations - evaluations_before_) / r.generation_seconds : 0.0;
+        evaluations_before_ = r.evaluations;
+        p.best = r.best;
+        p.mean = r.mean;
+        p.limit = r.limit;
+        const int done = r.generation + 1 - first_generation_;
+        const int left = r.max_generations - (r.generation + 1);
+        p.eta_seconds = done > 0 ? r.wall_seconds / done * left : -1.0;
+        console_.progress(p);
+    }
+
+    void on_checkpoint(const gp::Population& pop, const gp::EvolutionState& st, bool last) {
+        const int interval = std::max(1, s_.experiment.checkpoint_interval);
+        // After every `interval` evaluated generations (generation g is the (g+1)-th).
+        if (!last && (pop.generation + 1) % interval != 0) return;
+        header_.population = pop;
+        header_.state = st;
+        write_checkpoint(opt_.run_dir, pop.generation, io::to_xml(header_));
+    }
+
+    const io::Settings& s_;
+    const RunOptions& opt_;
+    RunConsole& console_;
+    io::PopulationFile header_;
+    io::StatsWriter stats_;
+    long evaluations_before_;
+    int first_generation_;
+};
+
+std::string summary_of(const gp::EvolutionResult& result, const experiments::Experiment& experiment,
+                       const io::Settings& s) {
+    const gp::Individual& best = result.population.best();
+    std::string trees;
+    for (const auto& t : best.genotype) trees += (trees.empty() ? "" : " | ") + t.to_string();
+    return fmt::format("stopped: {} at generation {}\nbest: id {} fitness {:.17g} depth {} size {} {}\n"
+                       "evaluations: {}\nbest tree{}: {}\n",
+                       gp::to_string(result.reason), result.population.generation, best.id, best.fitness,
+                       best.depth(s.gp.forest_depth), best.size(), experiment.describe(best),
+                       result.state.evaluations, best.genotype.size() > 1 ? "s" : "", trees);
+}
+
+} // namespace
+
+int run_experiment(PreparedRun prepared, const RunOptions& opt) {
+    if (prepared.settings.experiment.type == io::ExperimentType::Gait) return detail::run_gait(std::move(prepared), opt);
+    const io::Settings& s = prepared.settings;
+    RunConsole console(opt);
+    const io::PopulationFile header = io::describe(s);
+    Start start = start_of(prepared, header, console);
+    const int workers = resolved_workers(s);
+    console.say(fmt::format("cic {}: {} experiment, seed {}, {} worker{}, output {}", CIC_VERSION, header.experiment,
+                            start.state.seed, workers, workers == 1 ? "" : "s", opt.run_dir.string()));
+    const experiments::Context ctx = make_context(s, opt, console);
+    auto experiment = experiments::make_experiment(ctx);
+
+    GenerationObserver observer(s, opt, console, header, start);
+    StopSignalGuard stop_signals;
+    const tree::PrimitiveSet ps(s.gp.primitives);
+    const auto result = gp::evolve(s.gp, s.bloat, {s.control.maximum_iterations, s.control.minimum_fitness}, ps,
+                                   experiment->evaluator(), start.state, std::move(start.population),
+                                   observer.hooks());
+    if (const std::string note = experiment->session_note(); !note.empty()) console.log(note);
+    console.summary(summary_of(result, *experiment, s));
+    if (result.reason == gp::StopReason::Interrupted) return console.interrupted();
+    finish_run(s, opt, console);
+    return 0;
+}
+
+} // namespace cic::app

@@ -1,0 +1,49 @@
+// `cic --settings NAME.xml` from any folder: the shipped settings files are
+// found next to the installed binary or in the source tree (docs/install.md).
+#include "cic/run/settings_lookup.hpp"
+
+#include "cic/run/self_path.hpp"
+
+#include <iostream>
+#include <system_error>
+
+#include "cic/core/error.hpp"
+
+namespace cic::app {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> settings_search_folders() {
+    std::vector<fs::path> out;
+    if (const fs::path exe = self_path(); exe.has_parent_path())
+        out.push_back((exe.parent_path() / ".." / "share" / "cic" / "settings").lexically_normal());
+#ifdef CIC_SOURCE_DIR
+    out.push_back(fs::path(CIC_SOURCE_DIR) / "settings");
+#endif
+    return out;
+}
+
+fs::path find_settings_file(const std::string& given) {
+    if (given.empty()) throw InputError("--settings: the file name is empty");
+    const fs::path p(given);
+    std::error_code ec;
+    if (fs::is_regular_file(p, ec)) return p;
+    if (fs::exists(p, ec)) throw InputError("--settings " + given + ": not a regular file");
+
+    std::string looked = (p.is_absolute() ? p : fs::absolute(p, ec)).string();
+    if (p.is_relative()) {
+        for (const auto& dir : settings_search_folders()) {
+            const fs::path candidate = dir / p;
+            if (fs::is_regular_file(candidate, ec)) {
+                fs::path full = fs::weakly_canonical(candidate, ec);
+                if (ec) full = candidate;
+                std::cerr << "cic: settings " << given << ": using " << full.string() << '\n';
+                return full;
+            }
+            looked += ", " + candidate.string();
+        }
+    }
+    throw InputError("settings file " + given + " not found; looked in: " + looked);
+}
+
+} // namespace cic::app

@@ -1,0 +1,365 @@
+// One sweep task in its own run folder, resumable in place, and the study's
+// index.csv, derived from the run folders alone (so any task, on any node,
+// can rebuild it).
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "cic/run/run.hpp"
+#include "cic/study/sweep.hpp"
+#include "cic/core/error.hpp"
+#include "cic/core/hash.hpp"
+#include "cic/io/settings_io.hpp"
+#include "cic/io/settings_table.hpp"
+#include "cic/io/xml.hpp"
+
+namespace cic::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// An exclusive flock on `path` for this object's lifetime (advisory: shared by
+// every cic on every node that sees the file system, where flock works).
+class FileLock {
+public:
+    FileLock(const fs::path& path, bool wait) {
+        fd_ = ::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+        if (fd_ < 0) throw std::runtime_error("cannot open lock file " + path.string());
+        if (::flock(fd_, LOCK_EX | (wait ? 0 : LOCK_NB)) != 0) {
+            ::close(fd_);
+            fd_ = -1;
+        }
+    }
+    ~FileLock() {
+        if (fd_ >= 0) ::close(fd_);   // closing releases the lock
+    }
+    FileLock(const FileLock&) = delete;
+    FileLock& operator=(const FileLock&) = delete;
+    bool held() const { return fd_ >= 0; }
+
+private:
+    int fd_ = -1;
+};
+
+std::string first_line(const fs::path& p) {
+    std::ifstream in(p);
+    std::string line;
+    std::getline(in, line);
+    return line;
+}
+
+std::vector<std::string> split(const std::string& line) {
+    std::vector<std::string> out;
+    std::stringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) out.push_back(cell);
+    return out;
+}
+
+// Generations, last best, best ever, evaluations and wall time (summed over
+// sessions: the column restarts from 0 when a run is resumed) from a run's stats.csv.
+void read_progress(const fs::path& stats, TaskState& st) {
+    std::ifstream in(stats);
+    std::string line;
+    if (!std::getline(in, line)) return;
+    const auto header = split(line);
+    auto column = [&](const std::string& name) {
+        for (std::size_t i = 0; i < header.size(); ++i)
+            if (header[i] == name) return static_cast<long>(i);
+        return -1L;
+    };
+    const long best = column("best"), evals = column("evaluations"), wall = column("wall_seconds");
+    double session = 0, best_ever = -std::numeric_limits<double>::infinity();
+    while (std::getline(in, line)) {
+        const auto cells = split(line);
+        if (best < 0 || evals < 0 || wall < 0 || static_cast<long>(cells.size()) <= std::max({best, evals, wall}))
+            continue;
+        ++st.generations;
+        st.final_best = cells[static_cast<std::size_t>(best)];
+        // Kept as written (17 digits), so the index holds the exact value.
+        if (const double b = std::atof(st.final_best.c_str()); b > best_ever) {
+            best_ever = b;
+            st.best_ever = st.final_best;
+        }
+        st.evaluations = std::atol(cells[static_cast<std::size_t>(evals)].c_str());
+        const double w = std::atof(cells[static_cast<std::size_t>(wall)].c_str());
+        if (w < session) st.wall_seconds += session;   // a new session began
+        session = w;
+    }
+    st.wall_seconds += session;
+}
+
+std::string csv_cell(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string out = "\"";
+    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+} // namespace
+
+std::string to_string(TaskStatus s) {
+    switch (s) {
+    case TaskStatus::Pending: return "pending";
+    case TaskStatus::Running: return "running";
+    case TaskStatus::Done: return "done";
+    case TaskStatus::Interrupted: return "interrupted";
+    case TaskStatus::Failed: return "failed";
+    case TaskStatus::Mismatched: return "mismatched";
+    }
+    return "?";
+}
+
+namespace {
+
+// The settings less the keys that change no result: the run's name, output
+// folder, worker count and resume file. What a run store fingerprints and what
+// a run folder is checked against.
+io::Settings result_settings(io::Settings s) {
+    s.experiment.name.clear();
+    s.experiment.output_directory.clear();
+    s.experiment.workers = 0;
+    s.control.population_load_from.clear();
+    return s;
+}
+
+bool same_file_contents(const fs::path& a, const fs::path& b) {
+    std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
+    if (!fa || !fb) return false;
+    return std::string(std::istreambuf_iterator<char>(fa), {}) == std::string(std::istreambuf_iterator<char>(fb), {});
+}
+
+// The keys whose values differ between the settings a run folder ran and those
+// the sweep asks of it, as "Section.key: ran A, the sweep asks B". Keys that
+// change no result (name, output folder, workers, resume file) are left out; a
+// path counts as the same when both name files of identical contents (a copy
+// elsewhere). A path whose file is gone is compared as written: refused, loudly.
+std::vector<std::string> settings_differences(const io::Settings& ran_settings, const io::Settings& asked_settings) {
+    const io::Settings ran = result_settings(ran_settings), asked = result_settings(asked_settings);
+    std::vector<std::string> out;
+    for (const auto& k : io::settings_table()) {
+        const std::string a = k.get(ran), b = k.get(asked);
+        if (a == b || (k.type == io::ValueType::Path && same_file_contents(a, b))) continue;
+        out.push_back(fmt::format("{}.{}: ran '{}', the sweep asks '{}'", k.section, k.key, a, b));
+    }
+    return out;
+}
+
+} // namespace
+
+TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
+    // A stored task is read from the store folder of its settings, whatever the link
+    // says: before the link is made (dry runs), or while it still names the run of
+    // settings the sweep no longer has.
+    fs::path dir = plan.study / task.run_dir;
+    const bool stored = !plan.store.empty() && (fs::is_symlink(dir) || !fs::exists(dir));
+    if (stored) dir = store_dir(plan, task);
+    TaskState st;
+    if (!fs::exists(dir / "settings.xml")) {
+        st.status = fs::exists(dir / "failed.txt") ? TaskStatus::Failed : TaskStatus::Pending;
+        return st;
+    }
+    if (!stored) {
+        // A run folder of the study's own holds whatever ran there: if the sweep file or
+        // its base settings were edited since, it is not this task's run, done or not.
+        io::Settings ran;
+        try {
+            ran = io::read_settings(dir / "settings.xml");
+        } catch (const std::exception& e) {
+            st.status = TaskStatus::Mismatched;
+            st.mismatch = {std::string("its settings.xml cannot be read: ") + e.what()};
+            return st;
+        }
+        st.mismatch = settings_differences(ran, io::load_settings(plan.base, plan.overrides(task)));
+        if (!st.mismatch.empty()) {
+            st.status = TaskStatus::Mismatched;
+            return st;
+        }
+    }
+    read_progress(dir / "stats.csv", st);
+    if (fs::exists(dir / "failed.txt")) {
+        st.status = TaskStatus::Failed;
+    } else if (fs::exists(dir / "summary.txt")) {
+        st.status = first_line(dir / "summary.txt").rfind("stopped: interrupted", 0) == 0 ? TaskStatus::Interrupted
+                                                                                           : TaskStatus::Done;
+    } else {
+        // No summary: running if some process holds the task's lock, else killed.
+        const FileLock probe(dir / ".lock", false);
+        st.status = probe.held() ? TaskStatus::Interrupted : TaskStatus::Running;
+    }
+    return st;
+}
+
+namespace {
+
+std::string mismatch_text(const SweepPlan& plan, const SweepTask& task, const TaskState& st) {
+    std::string text = "  " + (plan.study / task.run_dir).string();
+    for (const auto& d : st.mismatch) text += "\n    " + d;
+    return text;
+}
+
+constexpr const char* kMismatchAdvice =
+    "the sweep file or its base settings changed since these runs were made. Move the folders away (or delete "
+    "them) to run the tasks with the new settings, or undo the edit; with a <store>, new studies keep every "
+    "version of a run apart";
+
+} // namespace
+
+void refuse_mismatched_runs(const SweepPlan& plan) {
+    std::string found;
+    std::size_t n = 0;
+    for (const SweepTask& t : plan.tasks())
+        if (const TaskState st = task_state(plan, t); st.status == TaskStatus::Mismatched) {
+            if (++n <= 5) found += "\n" + mismatch_text(plan, t, st);
+        }
+    if (n == 0) return;
+    if (n > 5) found += fmt::format("\n  ... and {} more (cic sweep {} --dry-run lists them)", n - 5, plan.file.string());
+    throw InputError(fmt::format("{} run folder{} of the study hold{} runs of other settings than the sweep asks:{}\n{}",
+                                 n, n == 1 ? "" : "s", n == 1 ? "s" : "", found, kMismatchAdvice),
+                     plan.file.string());
+}
+
+void write_index(const SweepPlan& plan) {
+    fs::create_directories(plan.study);
+    const FileLock lock(plan.study / ".index.lock", true);
+    std::string text = "run_dir,config";
+    for (const auto& k : plan.varied_keys) text += "," + csv_cell(k);
+    // best_ever last: it came after the others, and readers find columns by name.
+    text += ",seed,status,final_best,generations,evaluations,wall_seconds,best_ever\n";
+    for (const SweepTask& t : plan.tasks()) {
+        const TaskState st = task_state(plan, t);
+        const SweepConfig& cfg = plan.configs[t.config];
+        text += csv_cell(t.run_dir.string()) + "," + csv_cell(cfg.name);
+        for (const auto& [key, value] : cfg.varied) text += "," + csv_cell(value);
+        text += fmt::format(",{},{},{},{},{},{:.3f},{}\n", t.seed, to_string(st.status), st.final_best, st.generations,
+                            st.evaluations, st.wall_seconds, st.best_ever);
+    }
+    io::xml::write_file_atomically(plan.study / "index.csv", text);
+}
+
+namespace {
+
+// The fingerprint of a run: cic's version and every key whose value differs
+// from its default, but for those that change no result (the run's name,
+// output folder, worker count, resume file). Keys at their defaults are left
+// out, so that a key added to cic later (whose default keeps the old
+// behaviour) does not change the fingerprint of the runs already stored.
+std::string run_fingerprint(const io::Settings& settings) {
+    const io::Settings s = result_settings(settings);
+    const io::Settings defaults;
+    std::string text = std::string("cic ") + CIC_VERSION + "\n";
+    for (const auto& k : io::settings_table())
+        if (const std::string v = k.get(s); v != k.get(defaults)) text += k.section + "." + k.key + "=" + v + "\n";
+    return hex16(fnv1a_64(text));
+}
+
+// Fingerprint -> folder of every run in a store, from the settings.xml each
+// holds: a store folder is found by what it ran, whatever name an older cic
+// gave it. Read once per store and process.
+const std::map<std::string, fs::path>& store_index(const fs::path& store) {
+    static std::map<fs::path, std::map<std::string, fs::path>> cache;
+    auto [it, fresh] = cache.try_emplace(store);
+    if (fresh && fs::is_directory(store))
+        for (const auto& e : fs::directory_iterator(store)) {
+            if (!fs::exists(e.path() / "settings.xml")) continue;
+            try {
+                it->second.emplace(run_fingerprint(io::read_settings(e.path() / "settings.xml")), e.path());
+            } catch (const std::exception&) {
+                // not a run folder cic can read: never reused
+            }
+        }
+    return it->second;
+}
+
+} // namespace
+
+fs::path store_dir(const SweepPlan& plan, const SweepTask& task) {
+    if (plan.store.empty()) throw std::logic_error("store_dir: the sweep has no <store>");
+    const std::string key = run_fingerprint(io::load_settings(plan.base, plan.overrides(task)));
+    if (fs::exists(plan.store / key)) return plan.store / key;
+    const auto& known = store_index(plan.store);
+    if (auto it = known.find(key); it != known.end()) return it->second;
+    return plan.store / key;
+}
+
+void link_to_store(const SweepPlan& plan) {
+    if (plan.store.empty()) return;
+    for (const SweepTask& task : plan.tasks()) {
+        const fs::path link = plan.study / task.run_dir;
+        const bool linked = fs::is_symlink(link);
+        if (!linked && fs::exists(link)) continue;   // a run folder of its own (a study made before its store)
+        const fs::path target = store_dir(plan, task);
+        fs::create_directories(target);
+        if (linked && fs::exists(link) && fs::equivalent(link, target)) continue;
+        // New, or the sweep's settings changed since the link was made (an edited sweep
+        // or base file): point it at the run these settings make, never at the old one.
+        // Replaced by rename, atomically, since other tasks of the study may look at it.
+        fs::create_directories(link.parent_path());
+        const fs::path fresh = link.string() + ".link-" + std::to_string(::getpid());
+        fs::remove(fresh);
+        fs::create_directory_symlink(target.lexically_relative(link.parent_path()), fresh);
+        fs::rename(fresh, link);
+    }
+}
+
+int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool quiet, const std::string& executable) {
+    const fs::path dir = plan.study / task.run_dir;
+    link_to_store(plan);
+    fs::create_directories(dir);
+    const FileLock lock(dir / ".lock", false);
+    if (!lock.held()) {
+        if (!quiet) std::fprintf(stderr, "cic sweep: task %zu (%s) is running elsewhere; skipped\n", task.index, dir.c_str());
+        return 0;
+    }
+    const TaskState state = task_state(plan, task);
+    if (state.status == TaskStatus::Done) return 0;
+    if (state.status == TaskStatus::Mismatched)
+        throw InputError(fmt::format("task {} holds a run of other settings than the sweep asks:\n{}\n{}", task.index,
+                                     mismatch_text(plan, task, state), kMismatchAdvice),
+                         plan.file.string());
+
+    std::vector<std::string> overrides = plan.overrides(task);
+    if (workers > 0) overrides.push_back("Experiment.workers=" + std::to_string(workers));
+    overrides.push_back("Experiment.name=s" + std::to_string(task.seed));
+    const bool resume = fs::exists(dir / "population.xml") && fs::exists(dir / "settings.xml");
+    if (resume) overrides.push_back("Control.populationXmlLoadFrom=" + (dir / "population.xml").string());
+
+    PreparedRun prepared = prepare_run(io::load_settings(plan.base, overrides));
+    fs::remove(dir / "failed.txt");
+    if (!resume) {   // a fresh start: clear what a run killed before its first checkpoint left
+        for (const auto& e : fs::directory_iterator(dir))
+            if (e.path().filename() != ".lock") fs::remove_all(e.path());
+        io::Settings stored = prepared.settings;
+        stored.control.population_load_from.clear();
+        io::xml::write_file_atomically(dir / "settings.xml", io::write_settings(stored));
+        std::ofstream(dir / "run.log") << "cic " << CIC_VERSION << "\nsweep " << plan.file.string() << " task "
+                                       << task.index << " (" << plan.configs[task.config].name << ", seed " << task.seed
+                                       << ")\n";
+    } else {
+        std::ofstream(dir / "run.log", std::ios::app) << "resumed in place from population.xml\n";
+    }
+    RunOptions opt;
+    opt.run_dir = dir;
+    opt.quiet = quiet;
+    opt.worker_executable = executable;
+    opt.continue_in_place = resume;
+    int rc = 1;
+    try {
+        rc = run_experiment(std::move(prepared), opt);
+    } catch (const std::exception& e) {
+        io::xml::write_file_atomically(dir / "failed.txt", std::string(e.what()) + "\n");
+        write_index(plan);
+        throw;
+    }
+    write_index(plan);
+    return rc;
+}
+
+} // namespace cic::app

@@ -1,0 +1,286 @@
+// Installation (issue 11, docs/install.md): `cmake --install` lays out binary, settings,
+// docs, examples, man page and completion; the installed cic finds its settings by
+// name from any folder; `cpack -G DEB` makes a .deb into /usr; the man page renders
+// without warnings and the completion script is valid bash. Also find_settings_file.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "cic/run/settings_lookup.hpp"
+#include "cic/experiments/hypergp/model.hpp"
+#include "cic/core/error.hpp"
+#include "cic/io/settings_table.hpp"
+#include "support/run_helpers.hpp"
+
+namespace fs = std::filesystem;
+using cic::testing::read_text;
+using cic::testing::temp_dir;
+
+namespace {
+
+#ifndef CIC_CMAKE_COMMAND
+#define CIC_CMAKE_COMMAND "cmake"
+#endif
+#ifndef CIC_CPACK_COMMAND
+#define CIC_CPACK_COMMAND "cpack"
+#endif
+#ifndef CIC_EXAMPLE_CXX_FLAGS
+#define CIC_EXAMPLE_CXX_FLAGS ""
+#endif
+
+#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << "no '" << (part) << "' in:\n" << (text)
+
+std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
+
+// The build folder holding the cic binary (and CPackConfig.cmake, generated/).
+fs::path build_dir() { return fs::path(cic::testing::cic_binary()).parent_path(); }
+
+struct Shell {
+    int rc = -1;
+    std::string out;   // stdout and stderr
+};
+
+Shell sh(const std::string& command) {
+    Shell r;
+    FILE* p = ::popen(("(" + command + ") 2>&1").c_str(), "r");
+    if (!p) return r;
+    char buf[4096];
+    while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) r.out.append(buf, n);
+    const int status = ::pclose(p);
+    r.rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+bool have(const std::string& tool) { return sh("command -v " + tool + " >/dev/null").rc == 0; }
+
+// A fresh temporary folder, removed when the test ends (also when an ASSERT returns).
+struct ScratchDir {
+    fs::path path;
+    explicit ScratchDir(const std::string& name) : path(temp_dir(name)) {}
+    ~ScratchDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
+
+// Installs the build once per test program into a fresh prefix, removed at exit.
+const fs::path& installed_prefix() {
+    struct Prefix {
+        fs::path path = temp_dir("install-prefix");
+        Prefix() {
+            const Shell r = sh(q(CIC_CMAKE_COMMAND) + " --install " + q(build_dir()) + " --prefix " + q(path));
+            EXPECT_EQ(r.rc, 0) << r.out;
+        }
+        ~Prefix() {
+            std::error_code ec;
+            fs::remove_all(path, ec);
+        }
+    };
+    static const Prefix prefix;
+    return prefix.path;
+}
+
+} // namespace
+
+TEST(Install, LaysOutEveryFile) {
+    const fs::path& p = installed_prefix();
+    for (const char* f : {"bin/cic", "share/cic/settings/r1_settings.xml", "share/cic/settings/symreg_settings.xml",
+                          "share/cic/settings/robots/r1.xml", "share/cic/settings/robots/snake.xml",
+                          "share/cic/settings/cic-settings.xsd", "share/cic/settings/cic-sweep.xsd",
+                          "share/cic/examples/tournament-sweep.xml", "share/doc/cic/README.md",
+                          "share/doc/cic/settings.md", "share/doc/cic/install.md", "share/doc/cic/img/r1-best.png",
+                          "share/man/man1/cic.1", "share/bash-completion/completions/cic"})
+        EXPECT_TRUE(fs::is_regular_file(p / f)) << f;
+    EXPECT_EQ(fs::status(p / "bin/cic").permissions() & fs::perms::owner_exec, fs::perms::owner_exec);
+    // Every shipped settings file and robot is there.
+    for (const char* sub : {"settings", "settings/robots"}) {
+        for (const auto& e : fs::directory_iterator(fs::path(CIC_SOURCE_DIR) / sub)) {
+            if (e.path().extension() == ".xml") {
+                EXPECT_TRUE(fs::is_regular_file(p / "share/cic" / sub / e.path().filename())) << e.path();
+            }
+        }
+    }
+    // The installed example names its base settings where they are installed.
+    const std::string example = read_text(p / "share/cic/examples/tournament-sweep.xml");
+    EXPECT_HAS(example, "<base>../settings/r1_settings.xml</base>");
+    EXPECT_TRUE(fs::is_regular_file(p / "share/cic/examples/../settings/r1_settings.xml"));
+}
+
+TEST(Install, InstalledBinaryFindsItsSettingsFromAnyFolder) {
+    const fs::path& p = installed_prefix();
+    ASSERT_TRUE(fs::is_regular_file(p / "bin/cic"));
+    const ScratchDir scratch("install-run");   // unrelated to prefix and source tree
+    const fs::path& work = scratch.path;
+    const Shell r = sh("cd " + q(work) + " && " + q(p / "bin/cic") +
+                       " --settings r1_settings.xml --set GP.generatedPopulationSize=6"
+                       " --set Control.maximumIterations=2 --set Simulator.sample_to=3 --quiet --output out");
+    EXPECT_EQ(r.rc, 0) << r.out;
+    const fs::path used = fs::canonical(p / "share/cic/settings/r1_settings.xml");
+    EXPECT_HAS(r.out, "cic: settings r1_settings.xml: using " + used.string());
+    ASSERT_TRUE(fs::is_directory(work / "out")) << r.out;
+    const fs::path run = cic::testing::only_run(work / "out");
+    EXPECT_TRUE(fs::is_regular_file(run / "population.xml")) << run;
+    EXPECT_TRUE(fs::is_regular_file(run / "stats.csv")) << run;
+}
+
+TEST(Install, InstalledBinaryNamesThePlacesItLookedIn) {
+    const fs::path& p = installed_prefix();
+    const ScratchDir scratch("install-missing");
+    const fs::path& work = scratch.path;
+    const Shell r = sh("cd " + q(work) + " && " + q(p / "bin/cic") + " --settings no_such_settings.xml --quiet");
+    EXPECT_EQ(r.rc, 2) << r.out;
+    EXPECT_HAS(r.out, "no_such_settings.xml");
+    EXPECT_HAS(r.out, (fs::canonical(p) / "share/cic/settings").string());
+    EXPECT_FALSE(fs::exists(work / "runs"));
+}
+
+// cic as a CMake package: examples/library, an out-of-tree project, builds
+// against the installed cic with find_package(cic) and scores a genotype as a
+// cic run does, bit for bit.
+TEST(Install, LibraryPackageBuildsAnOutOfTreeProject) {
+    const fs::path& p = installed_prefix();
+    for (const char* f : {"lib/cmake/cic/cicConfig.cmake", "lib/cmake/cic/cicConfigVersion.cmake",
+                          "lib/libcic_experiments.a", "include/cic/sim/cpg.hpp",
+                          "include/cic/experiments/hypergp/model.hpp"})
+        EXPECT_TRUE(fs::is_regular_file(p / f)) << f;
+    EXPECT_FALSE(fs::exists(p / "include/cic/cli")) << "the command line is not part of the library";
+    const ScratchDir scratch("install-library");
+    const fs::path build = scratch.path / "build";
+    const Shell made = sh(q(CIC_CMAKE_COMMAND) + " -S " + q(fs::path(CIC_SOURCE_DIR) / "examples/library") + " -B " +
+                          q(build) + " -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=" + q(p) + " '-DCMAKE_CXX_FLAGS=" +
+                          CIC_EXAMPLE_CXX_FLAGS + "' && " +
+                          q(CIC_CMAKE_COMMAND) + " --build " + q(build));
+    ASSERT_EQ(made.rc, 0) << made.out;
+    const char* tree = "(sin (add x0 (mul x2 x3)))";
+    const Shell ran = sh(q(build / "cpg-walk") + " '" + tree + "'");
+    ASSERT_EQ(ran.rc, 0) << ran.out;
+    cic::io::Settings settings;
+    settings.neural.substrate = cic::nn::Substrate::Cpg;
+    const auto outcome = cic::hypergp::run(cic::hypergp::Model::from_settings(settings),
+                                           cic::tree::Forest{cic::tree::Tree::parse(tree)});
+    EXPECT_EQ(std::stod(ran.out), outcome.fitness) << ran.out;
+}
+
+TEST(Install, DebianPackage) {
+    if (!have(q(CIC_CPACK_COMMAND)) || !have("dpkg-deb")) GTEST_SKIP() << "cpack or dpkg-deb missing";
+    const ScratchDir scratch("install-deb");
+    const fs::path& out = scratch.path;
+    const Shell made =
+        sh(q(CIC_CPACK_COMMAND) + " -G DEB --config " + q(build_dir() / "CPackConfig.cmake") + " -B " + q(out));
+    ASSERT_EQ(made.rc, 0) << made.out;
+    fs::path deb;
+    for (const auto& e : fs::directory_iterator(out))
+        if (e.path().extension() == ".deb") deb = e.path();
+    ASSERT_FALSE(deb.empty()) << made.out;
+    EXPECT_EQ(deb.filename().string().rfind(std::string("cic_") + CIC_VERSION + "_", 0), 0u) << deb;
+
+    const Shell info = sh("dpkg-deb --info " + q(deb));
+    ASSERT_EQ(info.rc, 0) << info.out;
+    EXPECT_HAS(info.out, "Package: cic\n");
+    EXPECT_HAS(info.out, std::string("Version: ") + CIC_VERSION + "\n");
+    EXPECT_HAS(info.out, "Section: science\n");
+    EXPECT_HAS(info.out, "Maintainer: ");
+    const auto depends_at = info.out.find("Depends: ");
+    ASSERT_NE(depends_at, std::string::npos) << info.out;
+    const std::string depends = info.out.substr(depends_at, info.out.find('\n', depends_at) - depends_at);
+    EXPECT_HAS(depends, "libode");
+    EXPECT_HAS(depends, "libxml2");
+    EXPECT_HAS(depends, "libc6");
+    EXPECT_HAS(depends, "gnuplot");
+    EXPECT_HAS(info.out, "Recommends: povray, ffmpeg\n");
+
+    const Shell contents = sh("dpkg-deb --contents " + q(deb));
+    ASSERT_EQ(contents.rc, 0) << contents.out;
+    for (const char* f : {"./usr/bin/cic", "./usr/share/cic/settings/r1_settings.xml",
+                          "./usr/share/cic/settings/robots/r1.xml", "./usr/share/cic/settings/cic-settings.xsd",
+                          "./usr/share/cic/examples/tournament-sweep.xml", "./usr/share/doc/cic/README.md",
+                          "./usr/share/bash-completion/completions/cic"})
+        EXPECT_HAS(contents.out, std::string(f) + "\n");
+    EXPECT_TRUE(contents.out.find("./usr/share/man/man1/cic.1\n") != std::string::npos ||
+                contents.out.find("./usr/share/man/man1/cic.1.gz\n") != std::string::npos)
+        << contents.out;
+    EXPECT_EQ(contents.out.find("./usr/local/"), std::string::npos) << contents.out;
+}
+
+TEST(Install, ManPageIsMadeFromTheCliAndRendersCleanly) {
+    const Shell man = sh(q(cic::testing::cic_binary()) + " man 2>/dev/null");
+    ASSERT_EQ(man.rc, 0) << man.out;
+    // The build installs what `cic man` prints (one source of truth).
+    EXPECT_EQ(read_text(build_dir() / "generated/cic.1"), man.out);
+    for (const char* part : {".TH CIC 1", ".SH NAME", ".SH SYNOPSIS", ".SH DESCRIPTION", ".SH OPTIONS",
+                             ".SH COMMANDS", ".SH SETTINGS", ".SH EXIT STATUS", ".SH FILES", ".SH SEE ALSO",
+                             ".SS settings", ".SS sweep", ".SS compare", ".B 130", ".B 143", "\\-\\-settings"})
+        EXPECT_HAS(man.out, part);
+    for (const auto& k : cic::io::settings_table()) EXPECT_HAS(man.out, "\\fB" + k.section + "." + k.key + "\\fR");
+    EXPECT_EQ(man.out.find(".SS man"), std::string::npos);   // the hidden commands stay hidden
+
+    if (!have("groff")) GTEST_SKIP() << "groff missing: rendering not checked";
+    const ScratchDir scratch("install-man");
+    const fs::path& dir = scratch.path;
+    cic::testing::write_text(dir / "cic.1", man.out);
+    const Shell rendered = sh("groff -man -Tutf8 -ww -z " + q(dir / "cic.1"));
+    EXPECT_EQ(rendered.rc, 0);
+    EXPECT_EQ(rendered.out, "") << "groff warnings";
+}
+
+TEST(Install, CompletionScriptIsValidBashAndCompletes) {
+    const Shell script = sh(q(cic::testing::cic_binary()) + " completion 2>/dev/null");
+    ASSERT_EQ(script.rc, 0) << script.out;
+    EXPECT_EQ(read_text(build_dir() / "generated/cic.bash-completion"), script.out);
+    const ScratchDir scratch("install-completion");
+    const fs::path& dir = scratch.path;
+    cic::testing::write_text(dir / "cic", script.out);
+    const Shell syntax = sh("bash -n " + q(dir / "cic"));
+    EXPECT_EQ(syntax.rc, 0) << syntax.out;
+
+    // Runs the completion function as bash would for COMP_LINE; prints COMPREPLY.
+    cic::testing::write_text(dir / "complete.sh", R"(source "$1"
+COMP_LINE=$2; COMP_POINT=${#2}
+_cic
+printf '%s\n' "${COMPREPLY[@]}"
+)");
+    auto complete = [&](const std::string& line) {
+        return sh("cd " + q(dir) + " && bash complete.sh cic " + q(line)).out;
+    };
+    const std::string commands = complete("cic ");
+    for (const char* c : {"settings\n", "simulate\n", "plot\n", "compare\n", "sweep\n"}) EXPECT_HAS(commands, c);
+    EXPECT_EQ(commands.find("man\n"), std::string::npos);
+    EXPECT_HAS(complete("cic --se"), "--settings\n");
+    EXPECT_HAS(complete("cic sweep --"), "--dry-run\n");
+    EXPECT_HAS(complete("cic --set GP.tour"), "GP.tournament_size=\n");
+    EXPECT_HAS(complete("cic --set Experiment.type="), "hypergp\n");
+    EXPECT_HAS(complete("cic --settings co"), "complete.sh\n");   // file names
+    const std::string keys = complete("cic --set ");
+    for (const auto& k : cic::io::settings_table()) EXPECT_HAS(keys, k.section + "." + k.key + "=\n");
+}
+
+TEST(SettingsLookup, GivenPathWinsThenInstalledThenSourceTree) {
+    const ScratchDir scratch("settings-lookup");
+    const fs::path& dir = scratch.path;
+    struct InFolder {   // back to the old current folder before the scratch folder goes
+        fs::path old = fs::current_path();
+        explicit InFolder(const fs::path& d) { fs::current_path(d); }
+        ~InFolder() { fs::current_path(old); }
+    } in_dir(dir);
+    cic::testing::write_text(dir / "mine.xml", "<settings/>");
+    EXPECT_EQ(cic::app::find_settings_file("mine.xml"), fs::path("mine.xml"));
+    EXPECT_EQ(cic::app::find_settings_file((dir / "mine.xml").string()), dir / "mine.xml");
+    // Not here: the source tree's settings/ (a test binary has no share/cic next to it).
+    EXPECT_EQ(cic::app::find_settings_file("r1_settings.xml"),
+              fs::canonical(fs::path(CIC_SOURCE_DIR) / "settings/r1_settings.xml"));
+    EXPECT_EQ(cic::app::find_settings_file("robots/r1.xml"),
+              fs::canonical(fs::path(CIC_SOURCE_DIR) / "settings/robots/r1.xml"));
+    try {
+        cic::app::find_settings_file("nowhere.xml");
+        ADD_FAILURE() << "no InputError";
+    } catch (const cic::InputError& e) {
+        const std::string what = e.what();
+        EXPECT_HAS(what, "nowhere.xml");
+        EXPECT_HAS(what, (dir / "nowhere.xml").string());
+        for (const auto& folder : cic::app::settings_search_folders()) EXPECT_HAS(what, folder.string());
+    }
+    // An absolute path is never looked up elsewhere.
+    EXPECT_THROW(cic::app::find_settings_file((dir / "r1_settings.xml").string()), cic::InputError);
+}

@@ -1,0 +1,501 @@
+// `cic sweep`: sweep files are checked with file:line before anything is
+// written; every (configuration, seed) runs in its own folder, N at a time;
+// an interrupted study resumes and ends as if it had never stopped; index.csv
+// tells where each run stands; --slurm writes a job array.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <csignal>
+#include <chrono>
+#include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "cic/report/plot.hpp"
+#include "cic/study/sweep.hpp"
+#include "cic/io/settings_io.hpp"
+#include "cic/io/xml.hpp"
+#include "support/run_helpers.hpp"
+
+namespace cic {
+namespace {
+
+using namespace cic::testing;
+namespace fs = std::filesystem;
+
+// A 2 x 2 grid with 3 repeats of tiny HyperGP runs on R0.
+std::string sweep_text(const fs::path& study, int generations = 3) {
+    return tiny_sweep_text("tiny", study, 6, generations, 2.5,
+                           "<grid>\n    <vary key=\"GP.elitism\">0 1</vary>\n"
+                           "    <vary key=\"Neural.sampleAverageCount\">1 2</vary>\n  </grid>",
+                           3, 4);
+}
+
+int lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+
+// `cic sweep FILE --jobs 2` in a process group of its own (so a test can signal
+// the sweep alone or the whole group), its stderr to LOG; the pid, or -1.
+pid_t start_sweep(const fs::path& file, const fs::path& log) {
+    const pid_t pid = fork();
+    if (pid != 0) return pid;
+    setpgid(0, 0);
+    freopen(log.c_str(), "w", stderr);
+    const std::string bin = cic_binary();
+    execl(bin.c_str(), bin.c_str(), "sweep", file.c_str(), "--jobs", "2", static_cast<char*>(nullptr));
+    _exit(127);
+}
+
+TEST(SweepFile, PlansEveryConfigurationAndSeed) {
+    const auto dir = temp_dir("sweep-plan");
+    write_text(dir / "s.xml", sweep_text(dir / "study"));
+    const app::SweepPlan plan = app::read_sweep_file(dir / "s.xml");
+    ASSERT_EQ(plan.configs.size(), 4u);
+    EXPECT_EQ(plan.configs[1].name, "elitism=0+sampleAverageCount=2");
+    EXPECT_EQ(plan.varied_keys, (std::vector<std::string>{"GP.elitism", "Neural.sampleAverageCount"}));
+    const auto tasks = plan.tasks();
+    ASSERT_EQ(tasks.size(), 12u);
+    EXPECT_EQ(tasks[5].config, 1u);   // seed-major: every configuration gets seed 4 first
+    EXPECT_EQ(tasks[5].seed, 5u);
+    EXPECT_EQ(tasks[5].run_dir, fs::path("runs/elitism=0+sampleAverageCount=2/s5"));
+    EXPECT_EQ(plan.overrides(tasks[5]).back(), "Experiment.seed=5");
+    // The schema accepts it too.
+    const auto problems = io::xml::Document::load_file(dir / "s.xml")
+                              .validate(fs::path(CIC_SOURCE_DIR) / "settings" / "cic-sweep.xsd");
+    EXPECT_TRUE(problems.empty()) << problems.front();
+    // Distinct seeds: configuration c gets firstSeed + c * repeats + r.
+    std::string distinct = sweep_text(dir / "study");
+    distinct.replace(distinct.find("firstSeed=\"4\""), 13, "firstSeed=\"4\" seeds=\"distinct\"");
+    write_text(dir / "d.xml", distinct);
+    EXPECT_EQ(app::read_sweep_file(dir / "d.xml").tasks()[5].seed, 4u + 1 * 3 + 1);
+    fs::remove_all(dir);
+}
+
+// A path in a sweep file is read against the sweep file's folder, as one in a
+// settings file is, whatever folder cic runs in: in <set>, in a variant and in a <vary>.
+TEST(SweepFile, RelativePathsAreReadAgainstTheSweepFilesFolder) {
+    const auto dir = temp_dir("sweep-paths");
+    fs::create_directories(dir / "studies");
+    write_text(dir / "base.xml", "<settings><Control><maximumIterations>2</maximumIterations></Control></settings>\n");
+    write_text(dir / "studies" / "s.xml", R"(<sweep name="p">
+  <base>../base.xml</base>
+  <set>SymbolicRegression.dataFile=data/a.csv</set>
+  <grid><vary key="Control.populationXmlLoadFrom">pop/a.xml /abs/b.xml</vary></grid>
+  <variant name="v"><set>Simulator.robotFile=../robots/r.xml</set></variant>
+  <repeats count="1" firstSeed="1"/>
+</sweep>
+)");
+    const app::SweepPlan plan = app::read_sweep_file(dir / "studies" / "s.xml");
+    const auto folder = fs::absolute(dir / "studies").lexically_normal();
+    EXPECT_EQ(plan.common.at(0), "SymbolicRegression.dataFile=" + (folder / "data/a.csv").string());
+    ASSERT_EQ(plan.configs.size(), 2u);
+    EXPECT_EQ(plan.configs[0].overrides.at(0), "Control.populationXmlLoadFrom=" + (folder / "pop/a.xml").string());
+    EXPECT_EQ(plan.configs[1].overrides.at(0), "Control.populationXmlLoadFrom=/abs/b.xml");
+    EXPECT_EQ(plan.configs[0].overrides.at(1),
+              "Simulator.robotFile=" + (folder / "../robots/r.xml").lexically_normal().string());
+    fs::remove_all(dir);
+}
+
+// Every study the repository ships (experiments/**/*.xml with a <sweep> root)
+// passes the schema and plans with every configuration's settings accepted, so a
+// reader can rerun any of them as the docs say.
+TEST(SweepFile, ShippedStudiesAreValid) {
+    const fs::path root = CIC_SOURCE_DIR;
+    const auto dir = temp_dir("sweep-shipped");
+    int checked = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(root / "experiments")) {
+        if (entry.path().extension() != ".xml") continue;
+        const auto doc = io::xml::Document::load_file(entry.path());
+        if (doc.root().name() != "sweep") continue;
+        SCOPED_TRACE(entry.path().string());
+        const auto problems = doc.validate(root / "settings" / "cic-sweep.xsd");
+        EXPECT_TRUE(problems.empty()) << problems.front();
+        const fs::path study = dir / std::to_string(checked);
+        EXPECT_EQ(run_command("--quiet sweep '" + entry.path().string() + "' --dry-run --output '" + study.string() +
+                                  "'",
+                              dir / "log"),
+                  0)
+            << read_text(dir / "log");
+        ++checked;
+    }
+    EXPECT_GE(checked, 10);
+    fs::remove_all(dir);
+}
+
+// settings/r1_best.xml is the configuration that won the search of
+// docs/baselines.md (stage B's "threshold0.05" variant of search-b.xml), nothing
+// more and nothing less: the shipped file and the study that chose it agree.
+TEST(SweepFile, ShippedBestSettingsAreTheSearchWinner) {
+    const fs::path root = CIC_SOURCE_DIR;
+    const app::SweepPlan plan = app::read_sweep_file(root / "experiments" / "baselines" / "search-b.xml");
+    const auto tasks = plan.tasks();
+    const auto winner = std::find_if(tasks.begin(), tasks.end(),
+                                     [&](const app::SweepTask& t) { return plan.configs[t.config].name == "threshold0.05"; });
+    ASSERT_NE(winner, tasks.end());
+    std::vector<std::string> overrides = plan.overrides(*winner);
+    ASSERT_EQ(overrides.back().rfind("Experiment.seed=", 0), 0u);
+    overrides.pop_back();   // the tuning seed; the shipped file keeps the base's
+    EXPECT_EQ(io::write_settings(io::load_settings(root / "settings" / "r1_best.xml", {})),
+              io::write_settings(io::load_settings(plan.base, overrides)));
+}
+
+TEST(SweepFile, MistakesAreRefusedWithFileAndLine) {
+    const auto dir = temp_dir("sweep-errors");
+    const std::string good = sweep_text(dir / "study");
+    const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
+        {{"<repeats count=\"3\" firstSeed=\"4\"/>", "<repeats count=\"zero\"/>"}, "s.xml:13: <repeats> count=\"zero\""},
+        {{"<grid>", "<grid><vary key=\"GP.nonsense\">1</vary>"}, "s.xml:9: <set> names no settings key: <GP> nonsense"},
+        {{"<vary key=\"GP.elitism\">0 1</vary>", "<vary key=\"GP.elitism\">0 0</vary>"}, "lists a value twice"},
+        {{"<set>GP.tournament_size=3</set>", "<sett>GP.tournament_size=3</sett>"}, "s.xml:5: unknown element <sett>"},
+        {{"r0_settings.xml", "no_such_settings.xml"}, "s.xml:2: <base>"},
+    };
+    for (const auto& [edit, why] : cases) {
+        std::string text = good;
+        text.replace(text.find(edit.first), edit.first.size(), edit.second);
+        write_text(dir / "s.xml", text);
+        EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "log"), 2) << edit.second;
+        EXPECT_NE(read_text(dir / "log").find(why), std::string::npos) << read_text(dir / "log");
+        EXPECT_FALSE(fs::exists(dir / "study"));
+    }
+    // A value the settings refuse, in one configuration, stops the sweep before the study folder exists.
+    std::string text = good;
+    text.replace(text.find("0 1</vary>"), 3, "0 9");
+    write_text(dir / "s.xml", text);
+    EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "log"), 2);
+    EXPECT_NE(read_text(dir / "log").find("elitism"), std::string::npos) << read_text(dir / "log");
+    EXPECT_FALSE(fs::exists(dir / "study"));
+    fs::remove_all(dir);
+}
+
+TEST(Sweep, DryRunListsEveryRunAndWritesNothing) {
+    const auto dir = temp_dir("sweep-dry");
+    write_text(dir / "s.xml", sweep_text(dir / "study"));
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --dry-run", dir / "log"), 0) << read_text(dir / "log");
+    const std::string out = read_text(dir / "log");
+    EXPECT_NE(out.find("4 configurations x 3 repeats = 12 runs"), std::string::npos) << out;
+    EXPECT_NE(out.find("12 pending"), std::string::npos) << out;
+    EXPECT_NE(out.find("--set Neural.sampleAverageCount=2 --set Experiment.seed=6"), std::string::npos) << out;
+    EXPECT_FALSE(fs::exists(dir / "study"));
+    fs::remove_all(dir);
+}
+
+TEST(Sweep, RunsEveryTaskInItsFolderAndMatchesAPlainRun) {
+    const auto dir = temp_dir("sweep-run");
+    write_text(dir / "s.xml", sweep_text(dir / "study"));
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "log"), 0) << read_text(dir / "log");
+    const std::string index = read_text(dir / "study" / "index.csv");
+    EXPECT_EQ(index.rfind("run_dir,config,GP.elitism,Neural.sampleAverageCount,seed,status,final_best,generations,"
+                          "evaluations,wall_seconds,best_ever\n",
+                          0),
+              0u)
+        << index;
+    // best_ever is the largest best of the run's generations, as stats.csv writes it.
+    {
+        const app::StudyIndex study = app::read_study_index(dir / "study");
+        ASSERT_EQ(study.runs.size(), 12u);
+        for (const app::StudyRun& run : study.runs) {
+            double most = -1e300;
+            for (const auto& row : app::read_stats_csv(dir / "study" / run.run_dir / "stats.csv")) most = std::max(most, row.best);
+            ASSERT_TRUE(run.best_ever.has_value()) << run.run_dir;
+            EXPECT_EQ(*run.best_ever, most) << run.run_dir;
+            EXPECT_GE(*run.best_ever, *run.final_best);
+        }
+    }
+    EXPECT_EQ(lines(index), 13) << index;
+    EXPECT_EQ(std::count(index.begin(), index.end(), 'd') >= 12, true);
+    EXPECT_NE(index.find("runs/elitism=1+sampleAverageCount=2/s6,elitism=1+sampleAverageCount=2,1,2,6,done,"),
+              std::string::npos)
+        << index;
+    // One task equals a plain run of the same settings.
+    const std::string plain = "--quiet --settings " + (fs::path(CIC_SOURCE_DIR) / "settings" / "r0_settings.xml").string() +
+                              " --output " + (dir / "plain").string() +
+                              " --set GP.generatedPopulationSize=6 --set GP.tournament_size=3"
+                              " --set Control.maximumIterations=3 --set Simulator.sample_to=2.5"
+                              " --set Simulator.delayed_start=0.5 --set GP.elitism=1"
+                              " --set Neural.sampleAverageCount=2 --set Experiment.seed=6";
+    ASSERT_EQ(run_command(plain, dir / "plain.log"), 0) << read_text(dir / "plain.log");
+    EXPECT_EQ(read_text(dir / "study/runs/elitism=1+sampleAverageCount=2/s6/population.xml"),
+              read_text(only_run(dir / "plain") / "population.xml"));
+    // Run again: nothing left to do.
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "again.log"), 0);
+    EXPECT_NE(read_text(dir / "again.log").find("0 of 12 runs to do"), std::string::npos) << read_text(dir / "again.log");
+    fs::remove_all(dir);
+}
+
+// Two studies that share a run store and one configuration: the second
+// reuses the first's run (one folder, linked from both studies) and runs only
+// its own; a dry run already counts the shared run as done.
+TEST(Sweep, StudiesSharingAStoreRunACommonConfigurationOnce) {
+    const auto dir = temp_dir("sweep-store");
+    auto with_store = [](std::string text) {
+        return text.replace(text.find("</output>") + 9, 0, "\n  <store>../store</store>");
+    };
+    std::string b = tiny_sweep_text("b", dir / "b", 6, 2, 2.5,
+                                    "<grid><vary key=\"Neural.sampleAverageCount\">1 2</vary></grid>", 1, 4);
+    b.replace(b.find("<grid>"), 0, "<set>GP.elitism=0</set>\n  ");
+    write_text(dir / "a.xml", with_store(tiny_sweep_text("a", dir / "a", 6, 2, 2.5,
+                                                         "<grid><vary key=\"GP.elitism\">0 1</vary></grid>", 1, 4)));
+    write_text(dir / "b.xml", with_store(b));
+    ASSERT_EQ(run_command("sweep " + (dir / "a.xml").string(), dir / "a.log"), 0) << read_text(dir / "a.log");
+    // A store folder is found by the settings it ran, whatever its name (an older cic's key).
+    const fs::path stored = fs::canonical(dir / "a/runs/elitism=0/s4");
+    fs::rename(stored, stored.parent_path() / "named-by-an-older-cic");
+    fs::remove(dir / "a/runs/elitism=0/s4");
+    fs::create_directory_symlink("../../../store/named-by-an-older-cic", dir / "a/runs/elitism=0/s4");
+    ASSERT_EQ(run_command("sweep " + (dir / "b.xml").string() + " --dry-run", dir / "dry.log"), 0);
+    EXPECT_NE(read_text(dir / "dry.log").find("1 done, 1 pending"), std::string::npos) << read_text(dir / "dry.log");
+    EXPECT_NE(read_text(dir / "dry.log").find("run store " + (dir / "store").string()), std::string::npos);
+    // --index-only links and lists what is there, and runs nothing.
+    ASSERT_EQ(run_command("sweep " + (dir / "b.xml").string() + " --index-only", dir / "index.log"), 0);
+    EXPECT_NE(read_text(dir / "b/index.csv").find(",done,"), std::string::npos) << read_text(dir / "b/index.csv");
+    EXPECT_NE(read_text(dir / "b/index.csv").find(",pending,"), std::string::npos) << read_text(dir / "b/index.csv");
+    ASSERT_EQ(run_command("sweep " + (dir / "b.xml").string(), dir / "b.log"), 0) << read_text(dir / "b.log");
+    EXPECT_NE(read_text(dir / "b.log").find("1 of 2 runs to do"), std::string::npos) << read_text(dir / "b.log");
+    const fs::path shared_a = dir / "a/runs/elitism=0/s4", shared_b = dir / "b/runs/sampleAverageCount=1/s4";
+    ASSERT_TRUE(fs::is_symlink(shared_a) && fs::is_symlink(shared_b));
+    EXPECT_EQ(fs::canonical(shared_a), fs::canonical(shared_b));
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir / "store"), fs::directory_iterator()), 3);
+    EXPECT_EQ(lines(read_text(shared_a / "run.log")) > 0, true);
+    EXPECT_NE(read_text(dir / "b/index.csv").find("runs/sampleAverageCount=1/s4,sampleAverageCount=1,1,4,done,"),
+              std::string::npos)
+        << read_text(dir / "b/index.csv");
+    EXPECT_NE(fs::canonical(dir / "a/runs/elitism=1/s4"), fs::canonical(dir / "b/runs/sampleAverageCount=2/s4"));
+    fs::remove_all(dir);
+}
+
+// A sweep file edited after its runs (here its base settings' tournament size):
+// the study's links move to the runs of the new settings, which run; the old
+// runs stay in the store, where the old settings find them again.
+TEST(Sweep, EditedSweepUsesTheRunsOfItsNewSettings) {
+    const auto dir = temp_dir("sweep-edited");
+    std::string text = tiny_sweep_text("e", dir / "e", 6, 2, 2.5, "<variant name=\"R0\"/>", 1, 4);
+    text.replace(text.find("</output>") + 9, 0, "\n  <store>../store</store>");
+    write_text(dir / "s.xml", text);
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "first.log"), 0) << read_text(dir / "first.log");
+    const fs::path run = dir / "e/runs/R0/s4", old = fs::canonical(run);
+    std::string edited = text;
+    edited.replace(edited.find("GP.tournament_size=3"), 20, "GP.tournament_size=4");
+    write_text(dir / "s.xml", edited);
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --dry-run", dir / "dry.log"), 0);
+    EXPECT_NE(read_text(dir / "dry.log").find("\n1 pending;"), std::string::npos) << read_text(dir / "dry.log");
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "second.log"), 0) << read_text(dir / "second.log");
+    EXPECT_NE(read_text(dir / "second.log").find("1 of 1 runs to do"), std::string::npos) << read_text(dir / "second.log");
+    ASSERT_TRUE(fs::is_symlink(run));
+    EXPECT_NE(fs::canonical(run), old);
+    EXPECT_NE(read_text(run / "settings.xml").find("<tournament_size>4</tournament_size>"), std::string::npos);
+    EXPECT_TRUE(fs::exists(old / "summary.txt"));
+    write_text(dir / "s.xml", text);   // back to the first settings: their run is found, nothing runs
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "third.log"), 0) << read_text(dir / "third.log");
+    EXPECT_NE(read_text(dir / "third.log").find("0 of 1 runs to do"), std::string::npos) << read_text(dir / "third.log");
+    EXPECT_EQ(fs::canonical(run), old);
+    fs::remove_all(dir);
+}
+
+// Without a store, a study's run folders are its own: after an edit they hold runs
+// of other settings. They are refused (exit 2, nothing written), never counted as
+// done nor run over; a robot file named by another path but of the same bytes
+// is not a difference.
+TEST(Sweep, EditedSweepWithoutAStoreRefusesItsOldRuns) {
+    const auto dir = temp_dir("sweep-edited-nostore");
+    fs::copy_file(fs::path(CIC_SOURCE_DIR) / "settings/robots/r0.xml", dir / "robot.xml");
+    const std::string variant = "<variant name=\"R0\"><set>Simulator.robotFile=" + (dir / "robot.xml").string() +
+                                "</set></variant>";
+    const std::string text = tiny_sweep_text("n", dir / "n", 6, 2, 2.5, variant, 1, 4);
+    write_text(dir / "s.xml", text);
+    const std::string sweep = "sweep " + (dir / "s.xml").string();
+    ASSERT_EQ(run_command(sweep, dir / "first.log"), 0) << read_text(dir / "first.log");
+    const fs::path run = dir / "n/runs/R0/s4";
+    ASSERT_TRUE(fs::exists(run / "summary.txt"));
+    fs::copy_file(dir / "robot.xml", dir / "moved.xml");   // same bytes, another path: the same run
+    std::string moved = text;
+    moved.replace(moved.find("robot.xml"), 9, "moved.xml");
+    write_text(dir / "s.xml", moved);
+    ASSERT_EQ(run_command(sweep + " --dry-run", dir / "dry1.log"), 0);
+    EXPECT_NE(read_text(dir / "dry1.log").find("\n1 done;"), std::string::npos) << read_text(dir / "dry1.log");
+
+    std::string edited = moved;
+    edited.replace(edited.find("GP.tournament_size=3"), 20, "GP.tournament_size=4");
+    write_text(dir / "s.xml", edited);
+    const std::string index = read_text(dir / "n/index.csv"), summary = read_text(run / "summary.txt");
+    EXPECT_EQ(run_command(sweep, dir / "refused.log"), 2) << read_text(dir / "refused.log");
+    const std::string why = read_text(dir / "refused.log");
+    EXPECT_NE(why.find(run.string()), std::string::npos) << why;
+    EXPECT_NE(why.find("GP.tournament_size: ran '3', the sweep asks '4'"), std::string::npos) << why;
+    EXPECT_EQ(run_command(sweep + " --task 0", dir / "task.log"), 2) << read_text(dir / "task.log");
+    EXPECT_EQ(read_text(dir / "n/index.csv"), index);
+    EXPECT_EQ(read_text(run / "summary.txt"), summary);
+    EXPECT_NE(read_text(dir / "n/sweep.xml").find("GP.tournament_size=3"), std::string::npos);
+    ASSERT_EQ(run_command(sweep + " --dry-run", dir / "dry2.log"), 0);
+    EXPECT_NE(read_text(dir / "dry2.log").find("\n1 mismatched;"), std::string::npos) << read_text(dir / "dry2.log");
+    ASSERT_EQ(run_command(sweep + " --index-only", dir / "index.log"), 0);
+    EXPECT_NE(read_text(dir / "n/index.csv").find(",mismatched,"), std::string::npos) << read_text(dir / "n/index.csv");
+
+    fs::rename(dir / "n/runs/R0/s4", dir / "old-s4");   // moved away: the task runs with the new settings
+    ASSERT_EQ(run_command(sweep, dir / "second.log"), 0) << read_text(dir / "second.log");
+    EXPECT_NE(read_text(run / "settings.xml").find("<tournament_size>4</tournament_size>"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+// cic reinstalled while a study runs: the tasks still to start run the binary
+// that started the study (/proc/self/exe), not a missing or different file.
+TEST(Sweep, ReplacingTheBinaryMidStudyChangesNothing) {
+    const auto dir = temp_dir("sweep-replaced");
+    const fs::path bin = dir / "cic-copy";
+    fs::copy_file(cic_binary(), bin);
+    write_text(dir / "s.xml", tiny_sweep_text("replaced", dir / "study", 6, 3, 2.5,
+                                              "<variant name=\"R0\"><set>Simulator.robot_type=0</set></variant>", 3));
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        freopen((dir / "sweep.log").c_str(), "w", stderr);
+        const std::string file = (dir / "s.xml").string();
+        execl(bin.c_str(), bin.c_str(), "sweep", file.c_str(), "--jobs", "1", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    // The first task's folder exists: the sweep is running and tasks 2 and 3 are still to start.
+    bool started = false;
+    for (int i = 0; i < 1200 && !started; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(25));
+        started = fs::exists(dir / "study" / "runs" / "R0" / "s1" / "settings.xml");
+    }
+    ASSERT_TRUE(started) << read_text(dir / "sweep.log");
+    fs::remove(bin);
+    write_text(bin, "#!/bin/sh\nexit 3\n");   // a broken "new version" in its place
+    fs::permissions(bin, fs::perms::owner_all);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << read_text(dir / "sweep.log");
+    EXPECT_EQ(WEXITSTATUS(status), 0) << read_text(dir / "sweep.log");
+    const std::string index = read_text(dir / "study" / "index.csv");
+    EXPECT_EQ(std::count(index.begin(), index.end(), '\n'), 4) << index;
+    EXPECT_EQ(index.find(",pending,"), std::string::npos) << index;
+    EXPECT_EQ(index.find(",failed,"), std::string::npos) << index;
+    fs::remove_all(dir);
+}
+
+TEST(Sweep, InterruptedStudyResumesToTheSameBytes) {
+    const auto dir = temp_dir("sweep-resume");
+    write_text(dir / "ref.xml", sweep_text(dir / "reference", 6));
+    ASSERT_EQ(run_command("sweep " + (dir / "ref.xml").string() + " --jobs 2", dir / "ref.log"), 0)
+        << read_text(dir / "ref.log");
+    write_text(dir / "s.xml", sweep_text(dir / "study", 6));
+    const pid_t pid = start_sweep(dir / "s.xml", dir / "first.log");
+    ASSERT_GE(pid, 0);
+    // Let some runs finish and others start, then stop the whole study as Slurm would.
+    for (int i = 0; i < 400; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(25));
+        const std::string index = read_text(dir / "study" / "index.csv");
+        if (index.find(",done,") != std::string::npos) break;
+    }
+    kill(-pid, SIGTERM);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << read_text(dir / "first.log");
+    if (WEXITSTATUS(status) == 0) GTEST_SKIP() << "the study ended before the signal";
+    EXPECT_EQ(WEXITSTATUS(status), 143) << read_text(dir / "first.log");
+    const std::string partial = read_text(dir / "study" / "index.csv");
+    EXPECT_NE(partial.find(",pending,"), std::string::npos) << partial;
+
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "second.log"), 0)
+        << read_text(dir / "second.log");
+    for (const auto& e : fs::recursive_directory_iterator(dir / "reference" / "runs")) {
+        if (e.path().filename() != "population.xml") continue;
+        const fs::path rel = fs::relative(e.path(), dir / "reference");
+        EXPECT_EQ(read_text(dir / "study" / rel), read_text(e.path())) << rel;
+    }
+    const std::string index = read_text(dir / "study" / "index.csv");
+    EXPECT_EQ(index.find(",pending,"), std::string::npos) << index;
+    EXPECT_EQ(index.find(",interrupted,"), std::string::npos) << index;
+    fs::remove_all(dir);
+}
+
+// `kill PID` of the sweep alone (not its process group): the running tasks are told
+// at once and stop after their generation, instead of running on until one of them
+// ends by itself (the sweep's wait used to restart on the signal). The runs here
+// would take hours to finish, so "stopped" means "was told".
+TEST(Sweep, SignalToTheSweepAloneStopsItsRunningTasks) {
+    const auto dir = temp_dir("sweep-term");
+    write_text(dir / "s.xml", tiny_sweep_text("long", dir / "study", 6, 100000, 2.5, "<variant name=\"long\"/>", 2));
+    const pid_t pid = start_sweep(dir / "s.xml", dir / "sweep.log");
+    ASSERT_GE(pid, 0);
+    const auto started = [&] {
+        for (const char* seed : {"s1", "s2"}) {
+            const fs::path stats = dir / "study" / "runs" / "long" / seed / "stats.csv";
+            if (!fs::exists(stats) || lines(read_text(stats)) < 2) return false;
+        }
+        return true;
+    };
+    for (int i = 0; i < 2400 && !started(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    kill(pid, SIGTERM);
+    int status = 0;
+    bool ended = false;
+    for (int i = 0; i < 2400 && !ended; ++i) {   // a minute at most; the runs alone would take hours
+        ended = waitpid(pid, &status, WNOHANG) == pid;
+        if (!ended) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    }
+    if (!ended) {
+        kill(-pid, SIGKILL);
+        waitpid(pid, &status, 0);
+    }
+    ASSERT_TRUE(ended) << "the sweep did not stop its tasks\n" << read_text(dir / "sweep.log");
+    ASSERT_TRUE(WIFEXITED(status)) << read_text(dir / "sweep.log");
+    EXPECT_EQ(WEXITSTATUS(status), 143) << read_text(dir / "sweep.log");
+    const std::string index = read_text(dir / "study" / "index.csv");
+    EXPECT_EQ(std::count(index.begin(), index.end(), '\n'), 3) << index;
+    EXPECT_EQ(index.find(",done,"), std::string::npos) << index;
+    EXPECT_NE(index.find(",interrupted,"), std::string::npos) << index;
+    fs::remove_all(dir);
+}
+
+TEST(Sweep, SlurmScriptRunsTheSameResumableCommandPerTask) {
+    const auto dir = temp_dir("sweep-slurm");
+    write_text(dir / "s.xml", sweep_text(dir / "study"));
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --slurm --jobs 3 --workers 1", dir / "log"), 0)
+        << read_text(dir / "log");
+    const std::string script = read_text(dir / "study" / "slurm.sh");
+    EXPECT_NE(script.find("#SBATCH --array=0-11%3\n"), std::string::npos) << script;
+    EXPECT_NE(script.find("#SBATCH --requeue\n"), std::string::npos) << script;
+    EXPECT_NE(script.find("sweep " + (dir / "s.xml").string() + " --task \"$SLURM_ARRAY_TASK_ID\" --workers 1"),
+              std::string::npos)
+        << script;
+    // What one array task does: run task 7 by itself.
+    ASSERT_EQ(run_command("--quiet sweep " + (dir / "s.xml").string() + " --task 7 --workers 1", dir / "task.log"), 0)
+        << read_text(dir / "task.log");
+    const std::string index = read_text(dir / "study" / "index.csv");
+    EXPECT_EQ(std::count(index.begin(), index.end(), '\n'), 13);
+    EXPECT_NE(index.find(",done,"), std::string::npos) << index;
+    EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --task 12", dir / "bad.log"), 2);
+    fs::remove_all(dir);
+}
+
+// --config runs one configuration's runs and leaves the others pending; the
+// dry run and the Slurm array list only those; an unknown name is refused
+// with the names the sweep has.
+TEST(Sweep, ConfigSelectsOneConfigurationsRuns) {
+    const auto dir = temp_dir("sweep-config");
+    write_text(dir / "s.xml", sweep_text(dir / "study", 2));
+    const std::string sweep = "sweep " + (dir / "s.xml").string();
+    const std::string one = " --config elitism=1+sampleAverageCount=1";
+    ASSERT_EQ(run_command(sweep + one + " --dry-run", dir / "dry.log"), 0) << read_text(dir / "dry.log");
+    EXPECT_NE(read_text(dir / "dry.log").find("3 pending;"), std::string::npos) << read_text(dir / "dry.log");
+    ASSERT_EQ(run_command(sweep + one + " --slurm --workers 1", dir / "slurm.log"), 0) << read_text(dir / "slurm.log");
+    // Tasks are seed-major: configuration 2 of 4 is tasks 2, 6 and 10.
+    EXPECT_NE(read_text(dir / "study" / "slurm.sh").find("#SBATCH --array=2,6,10%1\n"), std::string::npos)
+        << read_text(dir / "study" / "slurm.sh");
+    ASSERT_EQ(run_command(sweep + one + " --jobs 2", dir / "log"), 0) << read_text(dir / "log");
+    EXPECT_NE(read_text(dir / "log").find("3 of 3 runs to do"), std::string::npos) << read_text(dir / "log");
+    const app::StudyIndex study = app::read_study_index(dir / "study");
+    ASSERT_EQ(study.runs.size(), 12u);
+    for (const app::StudyRun& run : study.runs)
+        EXPECT_EQ(run.status == "done", run.config == "elitism=1+sampleAverageCount=1") << run.run_dir;
+    EXPECT_EQ(run_command(sweep + " --config elitism=2 --dry-run", dir / "bad.log"), 2);
+    EXPECT_NE(read_text(dir / "bad.log").find("--config elitism=2: the sweep has no such configuration (it has: "
+                                              "elitism=0+sampleAverageCount=1, elitism=0+sampleAverageCount=2, "),
+              std::string::npos)
+        << read_text(dir / "bad.log");
+    EXPECT_EQ(run_command(sweep + one + " --task 2", dir / "task.log"), 2);
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace cic
