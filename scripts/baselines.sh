@@ -124,13 +124,15 @@ sine_strips() {   # from results/sine-grid.csv: robot,fitness,controller
   done < "$HERE/results/sine-grid.csv"
 }
 # Best fitness so far against evaluations, per robot: every method of a budget that has runs.
-curves() {   # BUDGET ROBOT STUDY...
+curves() {   # [PREFIX] BUDGET ROBOT STUDY... (results/PREFIXcurves-BUDGET-ROBOT.svg)
+  local prefix=""
+  [[ "$1" =~ ^[0-9]+$ ]] || { prefix="$1"; shift; }
   local budget="$1" robot="$2" found=()
   shift 2
   for s in "$@"; do grep -qs ',done,' "$output/$s/index.csv" && found+=("$output/$s"); done
   [ ${#found[@]} -gt 0 ] || return 0
   "$CIC" --quiet plot --by-evaluations "${found[@]}" --config "$robot" --median \
-    --title "$robot, $budget evaluations: best fitness so far" --out "$HERE/results/curves-$budget-$robot.svg" ||
+    --title "$robot, $budget evaluations: best fitness so far" --out "$HERE/results/${prefix}curves-$budget-$robot.svg" ||
     echo "baselines.sh: no curves for $robot at $budget evaluations yet" >&2
 }
 
@@ -181,7 +183,7 @@ for stage in "${stages[@]}"; do
         study "walk-$budget-$m"
         walk_studies+=("walk-$budget-$m")
       done
-      for r in $robots; do curves "$budget" "$r" "${walk_studies[@]}"; done
+      for r in $robots; do curves walk- "$budget" "$r" "${walk_studies[@]}"; done
       strips "${walk_studies[@]}"
       "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" compare > "$HERE/results/walk.md"
       ;;
