@@ -7,8 +7,8 @@
 #   share/doc/cic/                      README.md, docs/*.md, docs/img/*
 #   share/man/man1/cic.1                made by `cic man` at build time
 #   share/bash-completion/completions/cic   made by `cic completion` at build time
-#   lib/libcic_*.a, include/cic/<layer>/   the library layers below the command line
-#   lib/cmake/cic/cicConfig*.cmake      find_package(cic): targets cic::core ... cic::experiments
+#   lib/libcic_*.a, include/cic/<layer>/   every library layer, the command line's included
+#   lib/cmake/cic/cicConfig*.cmake      find_package(cic): targets cic::core ... cic::cli
 #
 # This file is also a script (cmake -P) for the build steps below: with CIC_RUN it
 # runs `CIC_RUN CIC_ARG` into CIC_OUT; with CIC_EXAMPLE_IN it writes the installed
@@ -96,15 +96,23 @@ install(FILES ${_cic_gen}/cic.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 install(FILES ${_cic_gen}/cic.bash-completion
         DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME cic)
 
-# --- cic as a CMake package: find_package(cic) gives cic::core ... cic::experiments
-# (docs/install.md, "Building on cic"). The command-line layer (app, viz) stays
-# inside the binary.
+# --- cic as a CMake package: find_package(cic) gives cic::core ... cic::cli
+# (docs/install.md, "Building on cic"; docs/extending.md): the library layers
+# and the application's, so that a project outside cic can register an
+# experiment type and run it through cic's own command line (examples/plugin).
 include(CMakePackageConfigHelpers)
-set(CIC_LIBRARY_LAYERS cic_core cic_tree cic_gp cic_nn cic_sim cic_io cic_experiments)
-install(TARGETS ${CIC_LIBRARY_LAYERS} EXPORT cicTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(_layer core tree gp nn sim io experiments)
+set(CIC_PACKAGE_LAYERS core tree gp nn sim io experiments report run study cli)
+if(CIC_WITH_VIEWER)
+  list(APPEND CIC_PACKAGE_LAYERS viz)
+endif()
+set(CIC_LIBRARY_LAYERS)
+foreach(_layer IN LISTS CIC_PACKAGE_LAYERS)
+  list(APPEND CIC_LIBRARY_LAYERS cic_${_layer})
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/cic/${_layer} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cic)
 endforeach()
+install(TARGETS ${CIC_LIBRARY_LAYERS} EXPORT cicTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# What cicConfig.cmake must find again for the layers this build has.
+set(CIC_PACKAGE_WITH_MPI ${CIC_WITH_MPI})
 set(CIC_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/cic)
 install(EXPORT cicTargets NAMESPACE cic:: DESTINATION ${CIC_INSTALL_CMAKEDIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/cicConfig.cmake.in ${_cic_gen}/cicConfig.cmake

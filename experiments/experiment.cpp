@@ -3,22 +3,15 @@
 #include <algorithm>
 
 #include "cic/core/process_pool.hpp"
-#include "cic/experiments/gait/setup.hpp"
-#include "cic/experiments/hypergp/model.hpp"
-#include "cic/experiments/symreg/problem.hpp"
+#include "cic/experiments/registry.hpp"
 
 namespace cic::experiments {
 
-std::unique_ptr<Experiment> make_symreg_experiment(const Context& ctx);
-std::unique_ptr<Experiment> make_hypergp_experiment(const Context& ctx);
-
 std::unique_ptr<Experiment> make_experiment(const Context& ctx) {
-    switch (ctx.settings.experiment.type) {
-    case io::ExperimentType::Symreg: return make_symreg_experiment(ctx);
-    case io::ExperimentType::HyperGP: return make_hypergp_experiment(ctx);
-    case io::ExperimentType::Gait: break;   // not a GP experiment: the app runs it (src/run/run_gait.cpp)
-    }
-    throw std::logic_error("make_experiment: the gait experiment has no GP evaluator");
+    const ExperimentKind& kind = experiment_kind(ctx.settings.experiment.type);
+    // The gait family has no GP evaluator: the run layer runs it (src/run/run_gait.cpp).
+    if (!kind.make) throw std::logic_error("make_experiment: type '" + kind.type.name + "' has no GP evaluator");
+    return kind.make(ctx);
 }
 
 std::unique_ptr<JobRunner> make_job_runner(const Context& ctx) {
@@ -31,11 +24,8 @@ std::unique_ptr<JobRunner> make_job_runner(const Context& ctx) {
 }
 
 void check_inputs(const io::Settings& s) {
-    switch (s.experiment.type) {
-    case io::ExperimentType::Symreg: symreg::make_dataset(s.symreg, {}); return;
-    case io::ExperimentType::HyperGP: hypergp::check_inputs(s); return;
-    case io::ExperimentType::Gait: gait::check_inputs(s); return;
-    }
+    const ExperimentKind& kind = experiment_kind(s.experiment.type);
+    if (kind.check_inputs) kind.check_inputs(s);
 }
 
 } // namespace cic::experiments

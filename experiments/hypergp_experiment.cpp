@@ -1,4 +1,5 @@
-// HyperGP wiring (thesis 6.2.2): genotypes are evaluated in `cic worker`
+// HyperGP wiring (thesis 6.2.2), and the `hypergp` type's registration:
+// genotypes are evaluated in `cic worker`
 // processes, or on whatever runner the app hands over in Context::make_runner
 // (MPI ranks). Physics runs in separate processes because ODE's QuickStep uses
 // process-global random state; each evaluation resets it, so any number of
@@ -8,7 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "cic/experiments/experiment.hpp"
+#include "cic/experiments/hypergp/experiment.hpp"
+#include "cic/experiments/registry.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 
 namespace cic::experiments {
@@ -17,8 +19,9 @@ namespace {
 class HypergpEvaluator final : public gp::Evaluator {
 public:
     // Jobs go to make_job_runner's runner: worker processes, or MPI ranks.
-    HypergpEvaluator(const Context& ctx)
-        : model_(hypergp::Model::from_settings(ctx.settings)), warn_(ctx.warn), pool_(make_job_runner(ctx)) {}
+    HypergpEvaluator(const Context& ctx, std::string job_kind)
+        : model_(hypergp::Model::from_settings(ctx.settings)), job_kind_(std::move(job_kind)), warn_(ctx.warn),
+          pool_(make_job_runner(ctx)) {}
 
     // Evaluation is a pure function of the job text (the genotype), so a
     // genotype met again in this session reuses its result instead of another
@@ -31,7 +34,7 @@ public:
         std::unordered_map<std::string_view, std::size_t> queued;
         std::vector<std::string> bodies(todo.size());
         for (std::size_t i = 0; i < todo.size(); ++i) {
-            bodies[i] = "hypergp\n" + hypergp::job_body(todo[i]->genotype);
+            bodies[i] = job_kind_ + "\n" + hypergp::job_body(todo[i]->genotype);
             if (auto hit = cache_.find(bodies[i]); hit != cache_.end()) {
                 apply(*todo[i], hit->second);
                 job_of[i] = kCached;
@@ -93,6 +96,7 @@ private:
     }
 
     hypergp::Model model_;
+    std::string job_kind_;
     std::function<void(const std::string&)> warn_;
     std::unique_ptr<JobRunner> pool_;
     std::unordered_map<std::string, sim::EvalReply> cache_;   // job text -> reply, for this session
@@ -101,7 +105,7 @@ private:
 
 class HypergpExperiment final : public Experiment {
 public:
-    explicit HypergpExperiment(const Context& ctx) : eval_(ctx) {}
+    HypergpExperiment(const Context& ctx, std::string job_kind) : eval_(ctx, std::move(job_kind)) {}
     gp::Evaluator& evaluator() override { return eval_; }
     std::string describe(const gp::Individual& ind) const override {
         return fmt::format("robot {} ({} modules)", eval_.model().robot.name, eval_.model().robot.modules.size()) +
@@ -113,10 +117,21 @@ private:
     HypergpEvaluator eval_;
 };
 
+const Registrar registrar{{
+    .type = *io::find_experiment_type("hypergp"),
+    .keys = {},
+    .check_inputs = &hypergp::check_inputs,
+    .make = [](const Context& ctx) { return make_hypergp_experiment(ctx, "hypergp"); },
+    .job_kinds = {{"hypergp",
+                   [](const WorkerContext& w) {
+                       return hypergp::make_job_handler([w] { return w.load_settings(); });
+                   }}},
+}};
+
 } // namespace
 
-std::unique_ptr<Experiment> make_hypergp_experiment(const Context& ctx) {
-    return std::make_unique<HypergpExperiment>(ctx);
+std::unique_ptr<Experiment> make_hypergp_experiment(const Context& ctx, std::string job_kind) {
+    return std::make_unique<HypergpExperiment>(ctx, std::move(job_kind));
 }
 
 } // namespace cic::experiments

@@ -1,10 +1,11 @@
 // Symbolic regression wiring (thesis 6.2.1): the dataset from the settings,
 // scored with -sum|error| on worker threads (trees are pure, so threads are safe
-// and the result does not depend on their number).
+// and the result does not depend on their number). Registers the `symreg` type.
 #include <fmt/format.h>
 
 #include "cic/core/parallel_for.hpp"
 #include "cic/experiments/experiment.hpp"
+#include "cic/experiments/registry.hpp"
 #include "cic/experiments/symreg/problem.hpp"
 
 namespace cic::experiments {
@@ -54,10 +55,14 @@ private:
     SymregEvaluator eval_;
 };
 
-} // namespace
+const Registrar registrar{{
+    .type = *io::find_experiment_type("symreg"),
+    .keys = {},
+    .check_inputs = [](const io::Settings& s) { (void)symreg::make_dataset(s.symreg, {}); },
+    .make = [](const Context& ctx) -> std::unique_ptr<Experiment> { return std::make_unique<SymregExperiment>(ctx); },
+    .job_kinds = {},
+}};
 
-std::unique_ptr<Experiment> make_symreg_experiment(const Context& ctx) {
-    return std::make_unique<SymregExperiment>(ctx);
-}
+} // namespace
 
 } // namespace cic::experiments

@@ -99,11 +99,29 @@ tree::Forest parse_job_body(const std::string& body) {
 
 sim::EvalReply to_reply(const Outcome& o) { return {o.fitness, o.failed, o.failure}; }
 
-std::function<std::string(const std::string&)> make_job_handler(std::function<io::Settings()> settings) {
-    auto model = std::make_shared<std::optional<Model>>();
-    return [model, settings = std::move(settings)](const std::string& body) {
-        if (!*model) *model = Model::from_settings(settings());
-        return sim::format_eval_reply(to_reply(run(**model, parse_job_body(body))));
+std::function<std::string(const std::string&)> make_job_handler(std::function<io::Settings()> settings,
+                                                                 Score score) {
+    struct Loaded {
+        io::Settings settings;
+        Model model;
+    };
+    auto loaded = std::make_shared<std::optional<Loaded>>();
+    return [loaded, settings = std::move(settings), score = std::move(score)](const std::string& body) {
+        if (!*loaded) {
+            io::Settings s = settings();
+            Model m = Model::from_settings(s);
+            loaded->emplace(Loaded{std::move(s), std::move(m)});
+        }
+        Outcome o = run((*loaded)->model, parse_job_body(body));
+        if (score && !o.failed) {
+            o.fitness = score((*loaded)->model, (*loaded)->settings, o);
+            if (!std::isfinite(o.fitness)) {
+                o.failed = true;
+                o.failure = "non-finite fitness";
+                o.fitness = (*loaded)->model.sim.failure_fitness;
+            }
+        }
+        return sim::format_eval_reply(to_reply(o));
     };
 }
 

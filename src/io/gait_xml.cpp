@@ -1,5 +1,6 @@
 // Gait checkpoints as XML (see gait_xml.hpp).
 #include "cic/io/gait_xml.hpp"
+#include "cic/io/experiment_types.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -177,7 +178,7 @@ bool is_gait_file(const std::filesystem::path& path) {
 }
 
 void check_compatible(const GaitFile& g, const Settings& s, std::size_t dimension, const std::string& file) {
-    if (s.experiment.type != ExperimentType::Gait)
+    if (family_of(s) != ExperimentFamily::Gait)
         throw InputError("this is a gait checkpoint; the settings run another experiment type", file);
     const char* names[] = {"cmaes", "xnes", "sade"};
     const std::string wanted = names[static_cast<int>(s.gait.optimizer)];

@@ -28,15 +28,6 @@ std::string hash_text(std::uint64_t h) {
     return buf;
 }
 
-std::string experiment_name(ExperimentType t) {
-    switch (t) {
-    case ExperimentType::HyperGP: return "hypergp";
-    case ExperimentType::Symreg: return "symreg";
-    case ExperimentType::Gait: return "gait";
-    }
-    return "?";
-}
-
 std::vector<std::string> function_names(const Settings& s) {
     std::vector<std::string> out;
     for (auto op : s.gp.primitives.functions) out.emplace_back(tree::name(op));
@@ -142,7 +133,7 @@ std::string settings_digest(const Settings& s);
 
 PopulationFile describe(const Settings& s) {
     PopulationFile p;
-    p.experiment = experiment_name(s.experiment.type);
+    p.experiment = s.experiment.type;
     p.settings_digest = settings_digest(s);
     p.variables = s.gp.primitives.variable_count;
     p.functions = function_names(s);

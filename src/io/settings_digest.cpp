@@ -1,6 +1,7 @@
 // The digest of the settings that change what a run computes. Stored in every
 // population file so a resume with other settings is noticed.
 #include <set>
+#include "cic/io/experiment_types.hpp"
 #include <string>
 
 #include "cic/core/hash.hpp"
@@ -20,7 +21,7 @@ std::string settings_digest(const Settings& s) {
         const std::string full = k.section + "." + k.key;
         if (k.section == "Control" || ignored.count(full)) continue;
         // The gait baseline's keys shape only gait runs.
-        if (k.section == "Gait" && s.experiment.type != ExperimentType::Gait) continue;
+        if (k.section == "Gait" && family_of(s) != ExperimentFamily::Gait) continue;
         // The restart keys shape only runs with restarts (so other gait runs keep the digest they had before them).
         if (k.section == "Gait" && k.key.rfind("restart", 0) == 0 && s.gait.restarts == GaitRestarts::None) continue;
         const std::string value = k.get(s);

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "cic/io/settings_io.hpp"
+#include "cic/io/experiment_types.hpp"
 #include "cic/io/settings_table.hpp"
 #include "cic/io/xml.hpp"
 #include "settings_values.hpp"
@@ -193,14 +194,13 @@ void apply_layer(Settings& s, std::vector<Assignment> layer, detail::Locations& 
         p.function_weights.assign(p.functions.size(), 1.0);
 }
 
-// Experiment.type when the file does not give it: a <SymbolicRegression> section
-// means symbolic regression, a <Gait> section the gait baseline, anything else
-// HyperGP (docs/settings.md).
+// Experiment.type when the file does not give it: the type whose own section
+// the file has (<SymbolicRegression>: symreg, <Gait>: gait, a registered
+// type's section: that type), anything else HyperGP (docs/settings.md).
 void infer_experiment_type(Settings& s, const xml::Document& doc) {
-    for (const auto& sec : doc.root().children()) {
-        if (sec.name() == "SymbolicRegression") s.experiment.type = ExperimentType::Symreg;
-        if (sec.name() == "Gait") s.experiment.type = ExperimentType::Gait;
-    }
+    for (const auto& sec : doc.root().children())
+        for (const auto& t : experiment_types())
+            if (!t.section.empty() && sec.name() == t.section) s.experiment.type = t.name;
 }
 
 } // namespace

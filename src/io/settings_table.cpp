@@ -168,15 +168,7 @@ using gp::SelectionType;
 
 // Experiment (ours)
 void experiment_rows(std::vector<SettingKey>& t) {
-    t.push_back(enum_row<ExperimentType>("Experiment", "type",
-                                         {{ExperimentType::HyperGP, {"hypergp"}}, {ExperimentType::Symreg, {"symreg"}},
-                                          {ExperimentType::Gait, {"gait"}}},
-                                         "Which experiment runs: HyperGP robot control, symbolic regression, or an "
-                                         "optimised open-loop gait (the baseline of docs/baselines.md). Not given: "
-                                         "symreg when the file has a <SymbolicRegression> section, gait when it has "
-                                         "a <Gait> section, else hypergp (so a file of thesis table B.1 keys runs "
-                                         "HyperGP)",
-                                         FIELD(experiment.type)));
+    t.push_back(detail::experiment_type_row());
     {
         auto k = row("Experiment", "seed", ValueType::UInt64, "Master random seed; the same seed gives the same run");
         k.min = 0;
@@ -513,16 +505,29 @@ std::string_view type_name(ValueType t) {
     return "?";
 }
 
-const std::vector<std::string>& settings_sections() {
+namespace detail {
+// Mutable only through register_settings_keys and register_experiment_type
+// (settings_extension.cpp, experiment_types.cpp), before settings are read.
+const std::vector<std::string>& builtin_settings_sections() {
     static const std::vector<std::string> s{"Experiment", "GP",     "Simulator",          "Control",
                                             "BloatControl", "Neural", "SymbolicRegression", "Gait"};
     return s;
 }
 
-const std::vector<SettingKey>& settings_table() {
-    static const std::vector<SettingKey> table = build_table();
+std::vector<std::string>& mutable_settings_sections() {
+    static std::vector<std::string> s = builtin_settings_sections();
+    return s;
+}
+
+std::vector<SettingKey>& mutable_settings_table() {
+    static std::vector<SettingKey> table = build_table();
     return table;
 }
+} // namespace detail
+
+const std::vector<std::string>& settings_sections() { return detail::mutable_settings_sections(); }
+
+const std::vector<SettingKey>& settings_table() { return detail::mutable_settings_table(); }
 
 const SettingKey* find_setting(std::string_view section, std::string_view key) {
     for (const auto& k : settings_table())

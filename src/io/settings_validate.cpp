@@ -1,6 +1,7 @@
 // Cross-field checks of Settings, run once after all layers are applied.
 // Single-key checks (type, range) happen in the table's setters.
 #include "cic/core/error.hpp"
+#include "cic/io/experiment_types.hpp"
 #include "cic/io/settings_table.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/nn/geometry.hpp"
@@ -86,7 +87,7 @@ void validate(const Settings& s, const Locations& locs) {
     }
 
     const auto& nn = s.neural;
-    c.require(s.experiment.type != ExperimentType::HyperGP || p.variable_count <= nn::cppf_variable_count(nn),
+    c.require(family_of(s) != ExperimentFamily::HyperGP || p.variable_count <= nn::cppf_variable_count(nn),
               {"GP.terminalVariableCount", "Neural.extraCppfInputs"},
               "HyperGP's CPPF has " + std::to_string(nn::cppf_variable_count(nn)) +
                   " inputs (x1 y1 x2 y2, and 3 more with extraCppfInputs); a tree cannot use more variables");
@@ -98,7 +99,7 @@ void validate(const Settings& s, const Locations& locs) {
 
     c.require(nn.frequency_min <= nn.frequency_max, {"Neural.frequencyMin", "Neural.frequencyMax"},
               "the frequency range is empty");
-    if (s.experiment.type == ExperimentType::HyperGP) {
+    if (family_of(s) == ExperimentFamily::HyperGP) {
         c.require(!nn.evolve_clock || (nn.substrate == nn::Substrate::Network && nn.clock_inputs),
                   {"Neural.evolveClock", "Neural.clockInputs", "Neural.substrate"},
                   "an evolved clock needs the network substrate with clock inputs (clockInputs = 1)");
@@ -121,14 +122,14 @@ void validate(const Settings& s, const Locations& locs) {
               {"Gait.secondHarmonic", "Gait.controller"}, "a second harmonic belongs to the sine controller");
     c.require(s.gait.frequency_min <= s.gait.frequency_max, {"Gait.frequencyMin", "Gait.frequencyMax"},
               "the frequency range is empty");
-    c.require(s.experiment.type != ExperimentType::Gait || s.gait.population_size == 0 ||
+    c.require(family_of(s) != ExperimentFamily::Gait || s.gait.population_size == 0 ||
                   s.gait.population_size >= (s.gait.optimizer == GaitOptimizer::Sade ? 7 : 5),
               {"Gait.populationSize", "Gait.optimizer"}, "pagmo's cmaes and xnes need at least 5 candidates, sade 7");
     c.require(s.gait.restarts == GaitRestarts::None || s.gait.optimizer != GaitOptimizer::Sade,
               {"Gait.restarts", "Gait.optimizer"},
               "ipop restarts are built for cmaes and xnes only (allowed: Gait.restarts = none | ipop with "
               "Gait.optimizer = cmaes | xnes; none with sade)");
-    c.require(s.experiment.type != ExperimentType::Gait || s.gait.population_size <= s.gait.evaluations,
+    c.require(family_of(s) != ExperimentFamily::Gait || s.gait.population_size <= s.gait.evaluations,
               {"Gait.populationSize", "Gait.evaluations"}, "the budget does not cover one generation");
 
     const auto& name = s.experiment.name;

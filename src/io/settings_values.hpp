@@ -23,6 +23,16 @@ double parse_number(const SettingKey& k, std::string_view text);            // c
 // Index of the choice whose spellings contain text; throws ValueError otherwise.
 std::size_t parse_choice(const SettingKey& k, std::string_view text);
 
+// The table and its sections, for the registrations that extend them
+// (settings_extension.cpp, experiment_types.cpp); everything else reads them
+// through settings_table() and settings_sections().
+std::vector<SettingKey>& mutable_settings_table();
+std::vector<std::string>& mutable_settings_sections();
+// The sections of the plain config structs, in file order (no registered ones).
+const std::vector<std::string>& builtin_settings_sections();
+// The Experiment.type row: one of experiment_types() (experiment_types.cpp).
+SettingKey experiment_type_row();
+
 // Where each key got its value ("Section.key" -> file, line), so cross-field
 // errors can point at the line the user wrote.
 struct Location {

@@ -1,6 +1,7 @@
 // Replays saved HyperGP individuals with the evaluation's own code path
 // (hypergp::run), for the viewer, POV-Ray export and traces.
 #include "cic/report/replay.hpp"
+#include "cic/io/experiment_types.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -97,8 +98,8 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
                                bool trace) {
     const Source src = locate(source);
     const io::Settings settings = io::read_settings(src.settings);
-    if (settings.experiment.type == io::ExperimentType::Gait) return replay_gait(src, settings, individual, fps, trace);
-    if (settings.experiment.type != io::ExperimentType::HyperGP)
+    if (io::family_of(settings) == io::ExperimentFamily::Gait) return replay_gait(src, settings, individual, fps, trace);
+    if (io::family_of(settings) != io::ExperimentFamily::HyperGP)
         throw InputError("only robot runs (HyperGP, gait) can be replayed; this run is symbolic regression",
                          src.settings.string());
     const io::PopulationFile pop = io::load_population(src.population);

@@ -3,6 +3,7 @@
 #ifdef CIC_HAVE_MPI
 
 #include "cic/run/mpi_pool.hpp"
+#include "cic/io/experiment_types.hpp"
 
 #include <mpi.h>
 
@@ -70,7 +71,7 @@ std::string host_name() {
 // need (valid settings; for HyperGP, the robot file at the same path).
 void check_settings(const std::string& text) {
     const io::Settings s = io::read_settings_string(text, "settings from rank 0");
-    if (s.experiment.type == io::ExperimentType::HyperGP) (void)hypergp::Model::from_settings(s);
+    if (io::family_of(s) == io::ExperimentFamily::HyperGP) (void)hypergp::Model::from_settings(s);
 }
 
 int env_int(const char* name) {

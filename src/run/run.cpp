@@ -11,6 +11,7 @@
 #include "cic/io/stats_csv.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/io/gait_xml.hpp"
+#include "cic/io/experiment_types.hpp"
 #include "cic/experiments/experiment.hpp"
 #include "cic/experiments/gait/restarts.hpp"
 #include "cic/experiments/gait/setup.hpp"
@@ -28,7 +29,7 @@ using detail::write_checkpoint;
 PreparedRun prepare_run(io::Settings s) {
     experiments::check_inputs(s);
     PreparedRun p;
-    if (!s.control.population_load_from.empty() && s.experiment.type == io::ExperimentType::Gait) {
+    if (!s.control.population_load_from.empty() && io::family_of(s) == io::ExperimentFamily::Gait) {
         const std::string from = s.control.population_load_from;
         try {
             io::GaitFile loaded = io::load_gait(from);
@@ -160,7 +161,8 @@ std::string summary_of(const gp::EvolutionResult& result, const experiments::Exp
 } // namespace
 
 int run_experiment(PreparedRun prepared, const RunOptions& opt) {
-    if (prepared.settings.experiment.type == io::ExperimentType::Gait) return detail::run_gait(std::move(prepared), opt);
+    // The loop is the family's: the gait family's own, else the GP loop with the type's evaluator.
+    if (io::family_of(prepared.settings) == io::ExperimentFamily::Gait) return detail::run_gait(std::move(prepared), opt);
     const io::Settings& s = prepared.settings;
     RunConsole console(opt);
     const io::PopulationFile header = io::describe(s);

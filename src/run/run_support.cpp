@@ -1,6 +1,7 @@
 // What every run loop shares: stop signals, checkpoint file names, and the
 // end-of-run actions of the thesis's settings (see run_support.hpp).
 #include "run_support.hpp"
+#include "cic/io/experiment_types.hpp"
 
 #include <csignal>
 #include <cstdio>
@@ -104,7 +105,7 @@ experiments::Context make_context(const io::Settings& s, const RunOptions& opt, 
     // (they get the settings as text: they may not see this run folder).
     if (const int ranks = mpi_world_size(); ranks > 1) {
         ctx.make_runner = [text = io::write_settings(s)] { return std::make_unique<MpiPool>(text); };
-        console.say(s.experiment.type == io::ExperimentType::Symreg
+        console.say(io::family_of(s) == io::ExperimentFamily::Symreg
                         ? fmt::format("MPI: {} ranks; symbolic regression evaluates on rank 0 with {} thread{}, the "
                                       "other ranks stay idle", ranks, workers, workers == 1 ? "" : "s")
                         : fmt::format("MPI: {} ranks, evaluation on ranks 1..{} (Experiment.workers is not used)",
@@ -144,7 +145,7 @@ void point_latest_at(const std::filesystem::path& checkpoint, const std::filesys
 void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& console) {
     auto say = [&](const std::string& line) { console.say(line); };
     // Robot experiments (HyperGP, gait) have a best gait to export and show.
-    const bool hypergp = s.experiment.type != io::ExperimentType::Symreg;
+    const bool hypergp = io::family_of(s) != io::ExperimentFamily::Symreg;
     auto attempt = [&](const char* what, auto&& action) {
         try {
             action();

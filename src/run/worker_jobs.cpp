@@ -1,27 +1,12 @@
-// The table of worker job kinds (see worker_jobs.hpp).
+// The job kinds of a worker process (see worker_jobs.hpp).
 #include "cic/run/worker_jobs.hpp"
 
-#include <memory>
 #include <stdexcept>
-
-#include "cic/io/settings_io.hpp"
-#include "cic/sim/job_text.hpp"
-#include "cic/experiments/hypergp/model.hpp"
 
 namespace cic::app {
 
 std::map<std::string, JobHandler> make_worker_job_kinds(const WorkerContext& context) {
-    std::map<std::string, JobHandler> kinds;
-    // genotype -> fitness
-    kinds["hypergp"] = hypergp::make_job_handler([context]() {
-        if (!context.settings_text.empty()) return io::read_settings_string(context.settings_text, "settings from rank 0");
-        if (context.settings_file.empty()) throw std::invalid_argument("hypergp jobs need `cic worker --settings FILE`");
-        return io::read_settings(context.settings_file);
-    });
-    kinds["sine"] = &sim::run_sine_job;   // robot + SimConfig + sine joints -> fitness reply
-    kinds["gait"] = &sim::run_gait_job;   // robot + SimConfig + gait spec -> fitness reply
-    kinds["cpg"] = &sim::run_cpg_job;     // robot + SimConfig + CPG weights -> fitness reply
-    return kinds;
+    return experiments::make_job_handlers(context);
 }
 
 std::string dispatch_worker_job(const std::map<std::string, JobHandler>& kinds, const std::string& job) {

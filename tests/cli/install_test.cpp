@@ -4,6 +4,7 @@
 // without warnings and the completion script is valid bash. Also find_settings_file.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -11,6 +12,7 @@
 #include "cic/run/settings_lookup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 #include "cic/core/error.hpp"
+#include "cic/io/population_xml.hpp"
 #include "cic/io/settings_table.hpp"
 #include "support/run_helpers.hpp"
 
@@ -145,7 +147,7 @@ TEST(Install, LibraryPackageBuildsAnOutOfTreeProject) {
                           "lib/libcic_experiments.a", "include/cic/sim/cpg.hpp",
                           "include/cic/experiments/hypergp/model.hpp"})
         EXPECT_TRUE(fs::is_regular_file(p / f)) << f;
-    EXPECT_FALSE(fs::exists(p / "include/cic/cli")) << "the command line is not part of the library";
+    EXPECT_TRUE(fs::is_regular_file(p / "include/cic/cli/cli.hpp")) << "an own type runs through cic's command line";
     const ScratchDir scratch("install-library");
     const fs::path build = scratch.path / "build";
     const Shell made = sh(q(CIC_CMAKE_COMMAND) + " -S " + q(fs::path(CIC_SOURCE_DIR) / "examples/library") + " -B " +
@@ -161,6 +163,45 @@ TEST(Install, LibraryPackageBuildsAnOutOfTreeProject) {
     const auto outcome = cic::hypergp::run(cic::hypergp::Model::from_settings(settings),
                                            cic::tree::Forest{cic::tree::Tree::parse(tree)});
     EXPECT_EQ(std::stod(ran.out), outcome.fitness) << ran.out;
+}
+
+// examples/plugin: an experiment type of its own (`straight`, with a settings
+// section of its own), built against the installed package, run through cic's
+// command line; its stored fitness is its own score of the replayed genotype.
+TEST(Install, PluginTypeBuildsAndRunsThroughCicsCommandLine) {
+    const fs::path& p = installed_prefix();
+    const ScratchDir scratch("install-plugin");
+    const fs::path build = scratch.path / "build";
+    const fs::path example = fs::path(CIC_SOURCE_DIR) / "examples/plugin";
+    const Shell made = sh(q(CIC_CMAKE_COMMAND) + " -S " + q(example) + " -B " + q(build) +
+                          " -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=" + q(p) + " '-DCMAKE_CXX_FLAGS=" +
+                          CIC_EXAMPLE_CXX_FLAGS + "' && " + q(CIC_CMAKE_COMMAND) + " --build " + q(build));
+    ASSERT_EQ(made.rc, 0) << made.out;
+    const std::string cic = q(build / "straight-cic");
+
+    // Its own key is as strict as any other: out of range, exit 2.
+    const Shell bad = sh(cic + " settings " + q(example / "straight_r1.xml") + " --set StraightWalk.driftWeight=-1");
+    EXPECT_EQ(bad.rc, 2) << bad.out;
+    EXPECT_HAS(bad.out, "<StraightWalk> driftWeight");
+
+    const fs::path runs = scratch.path / "runs";
+    const Shell ran = sh("cd " + q(scratch.path) + " && " + cic + " --quiet --settings " + q(example / "straight_r1.xml") +
+                         " --set Control.maximumIterations=2 --set GP.generatedPopulationSize=6 --set Experiment.workers=2" +
+                         " --output " + q(runs));
+    ASSERT_EQ(ran.rc, 0) << ran.out;
+    const fs::path run = runs / "straight_r1-001";
+    EXPECT_HAS(read_text(run / "settings.xml"), "<driftWeight>2</driftWeight>");
+    const cic::io::PopulationFile pop = cic::io::load_population(run / "population.xml");
+    EXPECT_EQ(pop.experiment, "straight");
+    const cic::gp::Individual& best = pop.population.best();
+    // The plugin's model is HyperGP's default (R1); its score: along - 2 * across.
+    const auto model = cic::hypergp::Model::from_settings(cic::io::Settings{});
+    const auto o = cic::hypergp::run(model, best.genotype);
+    const std::size_t a = model.robot.preferred == cic::sim::Axis::X ? 0 : 1;
+    const double along = std::fabs(o.result.end[a] - o.result.start[a]);
+    const double across = std::fabs(o.result.end[1 - a] - o.result.start[1 - a]);
+    EXPECT_EQ(best.fitness, along - 2.0 * across);
+    EXPECT_NE(best.fitness, o.fitness) << "scored as eq. 7.1, not by the plugin";
 }
 
 TEST(Install, DebianPackage) {

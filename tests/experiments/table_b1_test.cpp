@@ -16,7 +16,7 @@ const fs::path kTableB1 = fs::path(CIC_SOURCE_DIR) / "tests" / "data" / "table_b
 
 TEST(TableB1, ReadsAsHyperGpWithTheThesisValues) {
     const io::Settings s = io::read_settings(kTableB1);
-    EXPECT_EQ(s.experiment.type, io::ExperimentType::HyperGP);
+    EXPECT_EQ(s.experiment.type, "hypergp");
     EXPECT_EQ(s.robot.robot_type, 1);
     // Every value the table gives is also cic's default: nothing else is needed.
     const io::Settings defaults;
@@ -28,7 +28,7 @@ TEST(TableB1, ReadsAsHyperGpWithTheThesisValues) {
     // A symbolic-regression file without a type is still symbolic regression.
     const io::Settings sr = io::read_settings_string(
         "<settings><SymbolicRegression><target>koza-1</target></SymbolicRegression></settings>", "sr.xml");
-    EXPECT_EQ(sr.experiment.type, io::ExperimentType::Symreg);
+    EXPECT_EQ(sr.experiment.type, "symreg");
 }
 
 TEST(TableB1, RunsHyperGpOnR1) {

@@ -107,12 +107,12 @@ TEST(GaitXml, RestartsRoundTripAndAreChecked) {
 
 TEST(GaitXml, ACheckpointOfOtherSettingsIsRefused) {
     Settings s;
-    s.experiment.type = ExperimentType::Gait;
+    s.experiment.type = "gait";
     EXPECT_NO_THROW(check_compatible(sample(), s, 3, "g.xml"));
     EXPECT_THROW(check_compatible(sample(), s, 5, "g.xml"), InputError);       // another robot
     s.gait.optimizer = GaitOptimizer::Sade;
     EXPECT_THROW(check_compatible(sample(), s, 3, "g.xml"), InputError);       // another optimiser
-    s.experiment.type = ExperimentType::HyperGP;
+    s.experiment.type = "hypergp";
     EXPECT_THROW(check_compatible(sample(), s, 3, "g.xml"), InputError);
 }
 

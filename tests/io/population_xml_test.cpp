@@ -147,7 +147,7 @@ TEST(PopulationXml, SaveIsAtomicAndLeavesNoTemporaries) {
 
 TEST(PopulationXml, IncompatibleSettingsAreRefused) {
     Settings s;
-    s.experiment.type = ExperimentType::Symreg;
+    s.experiment.type = "symreg";
     s.gp.primitives.variable_count = 4;
     auto p = describe(s);
     p.population = sample().population;

@@ -3,6 +3,7 @@
 // layer plus the experiment and control sections. Read, written, schema'd and
 // documented from one table (settings_table.hpp).
 #include <cstdint>
+#include <map>
 #include <string>
 
 #include "cic/gp/config.hpp"
@@ -11,10 +12,9 @@
 
 namespace cic::io {
 
-enum class ExperimentType { Symreg, HyperGP, Gait };
-
 struct ExperimentConfig {
-    ExperimentType type = ExperimentType::HyperGP;   // see the inference in settings_read
+    // An experiment type's name (experiment_types.hpp); see the inference in settings_read.
+    std::string type = "hypergp";
     std::uint64_t seed = 1;
     std::string output_directory = "runs";
     int workers = 0;                 // 0 = one per core
@@ -88,6 +88,9 @@ struct Settings {
     nn::NeuralConfig neural;
     SymregConfig symreg;
     GaitConfig gait;
+    // The keys of sections that registered experiment types bring
+    // (settings_extension.hpp): "Section.key" -> canonical text, absent = default.
+    std::map<std::string, std::string> extra;
     std::string source_file;             // where they were read from (empty = defaults)
 };
 

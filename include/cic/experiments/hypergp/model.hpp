@@ -50,9 +50,16 @@ std::string job_body(const tree::Forest& genotype);
 tree::Forest parse_job_body(const std::string& body);
 sim::EvalReply to_reply(const Outcome& o);
 
-// The "hypergp" job kind of a worker: `settings` is called once, on the first
-// job (a worker reads the run's settings.xml; an MPI rank parses rank 0's text),
-// then each job's genotype is evaluated.
-std::function<std::string(const std::string&)> make_job_handler(std::function<io::Settings()> settings);
+// A fitness other than eq. 7.1 for the same simulation (a registered type's
+// own, examples/plugin): called for each evaluation that did not fail, with
+// the run's model and settings; a non-finite value scores the evaluation as failed.
+using Score = std::function<double(const Model&, const io::Settings&, const Outcome&)>;
+
+// The "hypergp" job kind of a worker (and a registered type's, with its own
+// `score`): `settings` is called once, on the first job (a worker reads the
+// run's settings.xml; an MPI rank parses rank 0's text), then each job's
+// genotype is evaluated.
+std::function<std::string(const std::string&)> make_job_handler(std::function<io::Settings()> settings,
+                                                                 Score score = {});
 
 } // namespace cic::hypergp

@@ -1,0 +1,153 @@
+// The open registry of experiment types (experiments/registry.hpp) and the
+// settings keys a registered type brings (io/settings_extension.hpp).
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "cic/core/error.hpp"
+#include "cic/experiments/registry.hpp"
+#include "cic/io/population_xml.hpp"
+#include "cic/io/settings_extension.hpp"
+#include "cic/io/settings_io.hpp"
+
+namespace {
+
+using namespace cic;
+using experiments::ExperimentKind;
+using experiments::JobHandler;
+using experiments::WorkerContext;
+
+// A symreg-family type with a section of its own, registered once for this
+// test program (registrations are for the life of the process).
+std::unique_ptr<experiments::Experiment> no_experiment(const experiments::Context&) { return nullptr; }
+
+ExperimentKind test_kind() {
+    ExperimentKind k;
+    k.type = {"registry-test", io::ExperimentFamily::Symreg, "RegistryTest", "a type made by registry_test.cpp"};
+    k.keys = {io::extra_number_key("RegistryTest", "weight", 1.5, 0.0, 10.0, "A weight"),
+              io::extra_integer_key("RegistryTest", "rounds", 3, 1, 9, "Rounds"),
+              io::extra_choice_key("RegistryTest", "mode", {"fast", "slow"}, "fast", "A mode")};
+    k.make = &no_experiment;
+    k.job_kinds = {{"registry-echo", [](const WorkerContext&) -> JobHandler {
+                        return [](const std::string& body) { return "echo " + body; };
+                    }}};
+    return k;
+}
+
+const experiments::Registrar registrar{test_kind()};
+
+const char* kFile = R"(<settings>
+  <RegistryTest>
+    <weight>2.25</weight>
+  </RegistryTest>
+</settings>
+)";
+
+TEST(Registry, TheBuiltInTypesRegisterThemselves) {
+    for (const char* name : {"hypergp", "symreg", "gait"}) {
+        const ExperimentKind& k = experiments::experiment_kind(name);
+        EXPECT_EQ(k.type.name, name);
+        EXPECT_TRUE(k.check_inputs) << name;
+    }
+    EXPECT_TRUE(experiments::experiment_kind("hypergp").make);
+    EXPECT_FALSE(experiments::experiment_kind("gait").make) << "the gait loop is the run layer's";
+    const auto handlers = experiments::make_job_handlers(WorkerContext{});
+    for (const char* job : {"sine", "hypergp", "gait", "cpg", "registry-echo"}) EXPECT_TRUE(handlers.count(job)) << job;
+    EXPECT_EQ(handlers.at("registry-echo")("x"), "echo x");
+}
+
+TEST(Registry, BadRegistrationsThrow) {
+    auto twice = test_kind();
+    EXPECT_THROW(experiments::register_experiment(twice), std::invalid_argument);   // name taken
+
+    auto same_job = test_kind();
+    same_job.type.name = "registry-other";
+    same_job.type.section = "";
+    same_job.keys.clear();
+    EXPECT_THROW(experiments::register_experiment(same_job), std::invalid_argument);   // job kind served
+
+    auto no_make = same_job;
+    no_make.job_kinds.clear();
+    no_make.make = nullptr;
+    EXPECT_THROW(experiments::register_experiment(no_make), std::invalid_argument);    // GP family needs make
+
+    auto sine = same_job;
+    sine.job_kinds = {{"sine", [](const WorkerContext&) -> JobHandler { return {}; }}};
+    EXPECT_THROW(experiments::register_experiment(sine), std::invalid_argument);       // the simulator's own
+
+    auto bad_name = same_job;
+    bad_name.job_kinds.clear();
+    bad_name.type.name = "Bad Name";
+    EXPECT_THROW(experiments::register_experiment(bad_name), std::invalid_argument);
+
+    auto builtin = same_job;
+    builtin.job_kinds.clear();
+    builtin.type.name = "gait";
+    builtin.type.family = io::ExperimentFamily::HyperGP;
+    EXPECT_THROW(experiments::register_experiment(builtin), std::invalid_argument);   // a built-in's shape
+
+    EXPECT_THROW(io::register_settings_keys({io::extra_number_key("GP", "weight", 1, 0, 2, "x")}),
+                 std::invalid_argument);   // a built-in section
+    EXPECT_THROW(io::register_settings_keys({io::extra_number_key("RegistryTest", "weight", 1, 0, 2, "x")}),
+                 std::invalid_argument);   // registered twice
+    EXPECT_THROW(io::extra_choice_key("RegistryTest", "m", {"a", "b"}, "c", "x"), std::invalid_argument);
+    EXPECT_THROW(experiments::experiment_kind("nothing"), std::logic_error);
+    EXPECT_THROW((void)io::extra_number(io::Settings{}, "RegistryTest", "rounds"), std::invalid_argument);   // not a number key
+}
+
+TEST(Registry, ItsSectionSelectsTheTypeAndItsKeysReadTyped) {
+    const io::Settings s = io::read_settings_string(kFile, "test.xml");
+    EXPECT_EQ(s.experiment.type, "registry-test");
+    EXPECT_EQ(io::family_of(s), io::ExperimentFamily::Symreg);
+    EXPECT_EQ(io::extra_number(s, "RegistryTest", "weight"), 2.25);
+    EXPECT_EQ(io::extra_integer(s, "RegistryTest", "rounds"), 3);   // default
+    EXPECT_EQ(io::extra_choice(s, "RegistryTest", "mode"), "fast");
+}
+
+TEST(Registry, ItsKeysAreAsStrictAsAnyOther) {
+    const std::string out_of_range = R"(<settings>
+  <RegistryTest>
+    <rounds>12</rounds>
+  </RegistryTest>
+</settings>
+)";
+    try {
+        (void)io::read_settings_string(out_of_range, "bad.xml");
+        FAIL() << "accepted rounds = 12";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.line(), 3);
+        EXPECT_NE(std::string(e.what()).find("integer in [1, 9]"), std::string::npos) << e.what();
+    }
+    const std::string misspelt = R"(<settings>
+  <RegistryTest>
+    <weigth>1</weigth>
+  </RegistryTest>
+</settings>
+)";
+    try {
+        (void)io::read_settings_string(misspelt, "bad.xml");
+        FAIL() << "accepted a misspelt key";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("did you mean weight?"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW((void)io::read_settings_string("<settings><Experiment><type>registry-tset</type></Experiment></settings>"),
+                 InputError);
+}
+
+TEST(Registry, ItsSettingsRoundTripAndShapeTheDigestOnlyOffTheirDefault) {
+    const io::Settings s = io::read_settings_string(kFile, "test.xml");
+    const io::Settings again = io::read_settings_string(io::write_settings(s), "written.xml");
+    for (const char* key : {"weight", "rounds", "mode"})
+        EXPECT_EQ(io::find_setting("RegistryTest", key)->get(again), io::find_setting("RegistryTest", key)->get(s)) << key;
+    EXPECT_EQ(io::extra_number(again, "RegistryTest", "weight"), 2.25);
+    EXPECT_EQ(io::settings_digest(again), io::settings_digest(s));
+
+    io::Settings at_default = s;
+    at_default.extra.clear();
+    io::Settings written_default = at_default;
+    written_default.extra["RegistryTest.weight"] = "1.5";
+    EXPECT_EQ(io::settings_digest(written_default), io::settings_digest(at_default)) << "a default leaves the digest";
+    EXPECT_NE(io::settings_digest(s), io::settings_digest(at_default));
+}
+
+} // namespace
