@@ -65,15 +65,22 @@ summarise() {   # STUDY
     echo "== $1: no finished run yet, nothing to summarise" >&2
     return 0
   fi
+  # The comparison's studies span sittings: their tables come from results/walk-runs.csv
+  # (walk-report.py ledger), so each study's own summary of the runs at hand stays beside them.
+  local dest="$HERE/results/$1"
+  if [[ "$1" =~ ^walk-[0-9]+- ]]; then
+    mkdir -p "$output/$1/summary"
+    dest="$output/$1/summary/$1"
+  fi
   # best_ever: CMA-ES keeps its best, HyperGP at Table B.1 values (no elitism) may lose it.
-  "$CIC" compare "$output/$1" --metric best_ever --out "$HERE/results/$1" > /dev/null
-  "$CIC" plot "$output/$1" --title "$1 (median, Q1..Q3)" --median --out "$HERE/results/$1.svg"
+  "$CIC" compare "$output/$1" --metric best_ever --out "$dest" > /dev/null
+  "$CIC" plot "$output/$1" --title "$1 (median, Q1..Q3)" --median --out "$dest.svg"
   # Walking or shaking (thesis 7.3.2.1): each finished run's best, replayed.
   mapfile -t done_runs < <(awk -F, -v s="$output/$1" 'NR > 1 && $0 ~ /,done,/ {print s "/" $1}' "$output/$1/index.csv")
   local inputs=() run
   for run in "${done_runs[@]}"; do inputs+=("$(best_ever_input "$run")"); done
   if [ ${#inputs[@]} -gt 0 ]; then
-    "$CIC" --quiet assess "${inputs[@]}" --out "$HERE/results/$1-gaits.csv"
+    "$CIC" --quiet assess "${inputs[@]}" --out "$dest-gaits.csv"
   fi
 }
 # What to replay for a run's best_ever: a HyperGP run without elitism may have
@@ -185,6 +192,7 @@ for stage in "${stages[@]}"; do
       done
       for r in $robots; do curves walk- "$budget" "$r" "${walk_studies[@]}"; done
       strips "${walk_studies[@]}"
+      "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" ledger
       "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" compare > "$HERE/results/walk.md"
       ;;
   esac

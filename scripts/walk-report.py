@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The tables of docs/baselines.md, "Walking like the best" (issue 21).
 
-    scripts/walk-report.py [--studies DIR] [--results DIR] tune|compare
+    scripts/walk-report.py [--studies DIR] [--results DIR] tune|ledger|compare
 
 DIR (default runs/baselines) holds the study folders that scripts/baselines.sh
 writes; --results (default experiments/baselines/results) holds each study's
@@ -13,11 +13,17 @@ replayed (column raw_fitness: without HyperGP's oscillation penalty, which
 best_ever includes). A run without an assessment row is scored by best_ever and
 marked with *. Evaluations are the counts index.csv records.
 
+  ledger   merges the comparison's finished runs found in DIR into
+           results/walk-runs.csv, one row per run (study, config, seed, best_ever,
+           evaluations, wall seconds and its gait assessment). A run whose folder
+           is gone keeps its row: the study spans sittings and machines, and run
+           folders are never committed. A run found again replaces its row.
   tune     the tuning studies (walk-tune-*.xml, tuning seeds 101..105): per
            configuration n, median, IQR, evaluations, and how its best gait
            moves; the winner of each method is the highest median whose best
            gait neither shakes nor flipped, decided before the comparison runs.
-  compare  the comparison (walk-2500-*.xml, walk-15000-*.xml, seeds 1..10): per
+  compare  the comparison (walk-2500-*.xml, walk-15000-*.xml, seeds 1..10), from
+           results/walk-runs.csv merged with the runs found in DIR: per
            budget and robot, each method's median and IQR; every HyperGP method
            against the best CMA-ES of the cell (the higher median of the two):
            two-sided Mann-Whitney p (scipy, method auto, as `cic compare`), Holm
@@ -36,7 +42,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 ap.add_argument("--studies", default="runs/baselines")
 ap.add_argument("--results", default=str(ROOT / "experiments" / "baselines" / "results"))
-ap.add_argument("mode", choices=["tune", "compare"])
+ap.add_argument("mode", choices=["tune", "ledger", "compare"])
 args = ap.parse_args()
 STUDIES, RESULTS = pathlib.Path(args.studies), pathlib.Path(args.results)
 
@@ -102,6 +108,103 @@ def runs(study):
     return out
 
 
+LEDGER_FIELDS = ["study", "run_dir", "config", "seed", "best_ever", "evaluations", "wall_seconds", "fitness",
+                 "dominant_hz", "mean_height", "min_height", "final_up", "flipped", "shaking", "raw_fitness"]
+GAIT_FIELDS = LEDGER_FIELDS[7:]
+
+
+def found_rows(study):
+    """Ledger rows of the study's finished runs in --studies (none when the study folder is absent)."""
+    index = STUDIES / study / "index.csv"
+    if not index.exists():
+        return []
+    gaits = {}
+    # baselines.sh leaves a comparison study's assessments beside its runs (summary/);
+    # --results holds those of sittings before it did.
+    gfile = STUDIES / study / "summary" / f"{study}-gaits.csv"
+    if not gfile.exists():
+        gfile = RESULTS / f"{study}-gaits.csv"
+    if gfile.exists():
+        with open(gfile, newline="") as f:
+            reader = csv.DictReader(f)
+            if "raw_fitness" not in (reader.fieldnames or []):
+                fail(f"{gfile}:1: no column raw_fitness (made by an older cic assess; rerun the summary)")
+            for r in reader:
+                gaits[run_of(r["input"])] = r
+    rows = []
+    with open(index, newline="") as f:
+        reader = csv.DictReader(f)
+        missing = {"run_dir", "config", "seed", "status", "best_ever", "evaluations", "wall_seconds"} - \
+            set(reader.fieldnames or [])
+        if missing:
+            fail(f"{index}:1: header has no column {', '.join(sorted(missing))}")
+        for r in reader:
+            if r["status"] != "done" or not r["best_ever"]:
+                continue
+            where = f"{index}:{reader.line_num}"
+            for column in ("best_ever", "evaluations"):
+                number(r[column], where, column)
+            g = gaits.get((STUDIES / study / r["run_dir"]).resolve())
+            row = {"study": study, "run_dir": r["run_dir"], "config": r["config"], "seed": r["seed"],
+                   "best_ever": r["best_ever"], "evaluations": r["evaluations"], "wall_seconds": r["wall_seconds"]}
+            row.update({k: (g[k] if g else "") for k in GAIT_FIELDS})
+            rows.append(row)
+    return rows
+
+
+def comparison_studies():
+    return [f"walk-{budget}-{suffix}" for budget in (2500, 15000) for _, suffix, _ in METHODS]
+
+
+def merged_ledger():
+    """The committed ledger with every run found in --studies put in (a run found replaces its row)."""
+    ledger = {}
+    path = RESULTS / "walk-runs.csv"
+    if path.exists():
+        with open(path, newline="") as f:
+            reader = csv.DictReader(f)
+            if reader.fieldnames != LEDGER_FIELDS:
+                fail(f"{path}:1: the header is not {','.join(LEDGER_FIELDS)}")
+            for r in reader:
+                where = f"{path}:{reader.line_num}"
+                number(r["best_ever"], where, "best_ever")
+                for column in ("raw_fitness", "evaluations"):
+                    if r[column]:
+                        number(r[column], where, column)
+                ledger[(r["study"], r["run_dir"])] = r
+    for study in comparison_studies():
+        for row in found_rows(study):
+            ledger[(row["study"], row["run_dir"])] = row
+    order = {s: i for i, s in enumerate(comparison_studies())}
+    return sorted(ledger.values(), key=lambda r: (order.get(r["study"], len(order)), r["study"], r["config"],
+                                                  int(r["seed"])))
+
+
+def write_ledger():
+    rows = merged_ledger()
+    path = RESULTS / "walk-runs.csv"
+    tmp = path.with_suffix(".csv.tmp")
+    with open(tmp, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=LEDGER_FIELDS, lineterminator="\n")
+        w.writeheader()
+        w.writerows(rows)
+    tmp.replace(path)
+    print(f"walk-report.py: {len(rows)} runs in {path}", file=sys.stderr)
+
+
+def ledger_runs(ledger, study):
+    """{config: [run]} of one comparison study, from the merged ledger."""
+    out = {}
+    for r in ledger:
+        if r["study"] != study:
+            continue
+        g = r if r["raw_fitness"] else None
+        score = float(r["raw_fitness"]) if g else float(r["best_ever"])
+        out.setdefault(r["config"], []).append({"score": score, "star": g is None, "gait": g,
+                                                "evaluations": int(float(r["evaluations"])) if r["evaluations"] else None})
+    return out or None
+
+
 def quartiles(v):
     q = st.quantiles(v, n=4, method="inclusive") if len(v) > 1 else [v[0]] * 3
     return q[0], q[2]
@@ -151,10 +254,15 @@ def walks(best_run):
 def describe(v):
     scores = [r["score"] for r in v]
     q1, q3 = quartiles(scores)
-    evals = [r["evaluations"] for r in v]
+    evals = [r["evaluations"] for r in v if r["evaluations"] is not None]
     star = "*" if any(r["star"] for r in v) else ""
     best = max(v, key=lambda r: r["score"])
-    ev = f"{min(evals)}" if min(evals) == max(evals) else f"{min(evals)}–{max(evals)}"
+    if not evals:
+        ev = "not recorded"
+    else:
+        ev = f"{min(evals)}" if min(evals) == max(evals) else f"{min(evals)}–{max(evals)}"
+        if len(evals) < len(v):
+            ev += f" ({len(v) - len(evals)} not recorded)"
     return scores, f"{len(v)} | {st.median(scores):.2f}{star} | [{q1:.2f}, {q3:.2f}] | {ev} | {gait_text(best)}"
 
 
@@ -194,14 +302,16 @@ def tune():
 
 def compare():
     print("# Walking like the best: the comparison\n")
-    print(f"Made by `scripts/walk-report.py compare` from `{STUDIES}`: seeds 1..10; score = raw eq. 7.1 of each "
+    print(f"Made by `scripts/walk-report.py compare` from `results/walk-runs.csv` (one row per finished run, kept "
+          f"across sittings) merged with the runs in `{STUDIES}`: seeds 1..10; score = raw eq. 7.1 of each "
           "run's best individual, replayed (* = best_ever, not assessed). Holm over every comparison below.\n")
+    ledger = merged_ledger()
     table, tests = [], []   # tests: (budget, robot, method, p, A12, interval, hgp median, cma median, cma label)
     for budget in (2500, 15000):
         for robot in ROBOTS:
             cell = {}
             for label, suffix, is_hgp in METHODS:
-                found = runs(f"walk-{budget}-{suffix}")
+                found = ledger_runs(ledger, f"walk-{budget}-{suffix}")
                 if found and robot in found:
                     cell[label] = (found[robot], is_hgp)
             if not cell:
@@ -247,6 +357,10 @@ def compare():
             print(f"| {robot} | {label} | {mx:.2f} | {cma} | {my:.2f} | {ptext} | {htext} | {a:.2f} [{lo:.2f}, {hi:.2f}] "
                   f"| {reading} |")
         print()
+    if any(r["evaluations"] is None for _, _, cell in table for v, _ in cell.values() for r in v):
+        print("Evaluations \"not recorded\": runs made before `results/walk-runs.csv` kept one row per run "
+              "(R1 and R2 at 2,500, HyperGP's best at 15,000 on R1); their ranges are in the first table "
+              "(`git show 075acaa:experiments/baselines/results/walk.md`).\n")
     print("## The goal, cell by cell\n")
     print("Some HyperGP method beats the best CMA-ES median with p (Holm) < 0.05 at 15,000 evaluations, and is not "
           "significantly worse at 2,500.\n")
@@ -265,5 +379,7 @@ def compare():
 
 if args.mode == "tune":
     tune()
+elif args.mode == "ledger":
+    write_ledger()
 else:
     compare()
