@@ -13,7 +13,7 @@
 int main(int argc, char** argv) {
     try {
         cic::io::Settings settings;   // every default: HyperGP on R1
-        settings.neural.substrate = cic::nn::Substrate::Cpg;
+        settings.neural.substrate = "cpg";
         const cic::hypergp::Model model = cic::hypergp::Model::from_settings(settings);
         const cic::tree::Forest genotype{cic::tree::Tree::parse(argc > 1 ? argv[1] : "(sin (sub x0 x2))")};
         const cic::hypergp::Outcome outcome = cic::hypergp::run(model, genotype);

@@ -8,6 +8,7 @@
 #include "cic/experiments/hypergp/cpg_substrate.hpp"
 #include "cic/experiments/hypergp/gait_substrate.hpp"
 #include "cic/experiments/hypergp/neural_controller.hpp"
+#include "cic/io/substrate_names.hpp"
 
 namespace cic::hypergp {
 
@@ -31,27 +32,60 @@ void RecordedController::step(double t, std::span<const double> angles, std::spa
     record_.commands.insert(record_.commands.end(), desired.begin(), desired.end());
 }
 
-std::unique_ptr<Controller> make_controller(const sim::RobotSpec& robot, const tree::Forest& genotype,
-                                            const nn::NeuralConfig& cfg, double control_step) {
-    constexpr double half_pi = std::numbers::pi / 2;
-    switch (cfg.substrate) {
-    case nn::Substrate::Network:
-        return std::make_unique<NeuralController>(make_neural_controller(robot, genotype, cfg));
-    case nn::Substrate::Cpg: {
-        sim::CpgSpec spec = cpg_spec(robot, genotype, cfg, control_step);
+namespace {
+
+std::vector<ControllerKind>& kinds() {
+    static std::vector<ControllerKind> k;
+    return k;
+}
+
+constexpr double kHalfPi = std::numbers::pi / 2;
+
+// The built-in substrates (docs/hypergp.md).
+const ControllerRegistrar network{{"network", "the thesis's recurrent network",
+    [](const sim::RobotSpec& robot, const tree::Forest& genotype, const nn::NeuralConfig& cfg, double) {
+        return std::unique_ptr<Controller>(
+            std::make_unique<NeuralController>(make_neural_controller(robot, genotype, cfg)));
+    }}};
+
+const ControllerRegistrar cpg{{"cpg", "coupled oscillators, one per joint",
+    [](const sim::RobotSpec& robot, const tree::Forest& genotype, const nn::NeuralConfig& cfg, double step) {
+        sim::CpgSpec spec = cpg_spec(robot, genotype, cfg, step);
         const std::size_t pairs = spec.edges.size();
         const double range = spec.range;
-        return std::make_unique<RecordedController>(std::make_unique<sim::CpgController>(std::move(spec)), range,
-                                                    pairs);
-    }
-    case nn::Substrate::Gait: {
+        return std::unique_ptr<Controller>(
+            std::make_unique<RecordedController>(std::make_unique<sim::CpgController>(std::move(spec)), range, pairs));
+    }}};
+
+const ControllerRegistrar gait{{"gait", "each joint's amplitude, phase and offset, one evolved frequency",
+    [](const sim::RobotSpec& robot, const tree::Forest& genotype, const nn::NeuralConfig& cfg, double) {
         sim::GaitSpec spec = gait_spec(robot, genotype, cfg);
         const std::size_t joints = spec.joints.size();
-        return std::make_unique<RecordedController>(std::make_unique<sim::GaitController>(std::move(spec)), half_pi,
-                                                    joints);
-    }
-    }
-    throw std::invalid_argument("make_controller: unknown substrate");
+        return std::unique_ptr<Controller>(std::make_unique<RecordedController>(
+            std::make_unique<sim::GaitController>(std::move(spec)), kHalfPi, joints));
+    }}};
+
+} // namespace
+
+void register_controller(ControllerKind kind) {
+    if (!kind.make) throw std::invalid_argument("controller '" + kind.name + "' has no factory");
+    if (find_controller(kind.name)) throw std::invalid_argument("controller '" + kind.name + "' is registered twice");
+    // The settings know the built-ins' names already; a new one joins the key's choices.
+    if (!io::is_substrate_name(kind.name)) io::register_substrate_name({kind.name, kind.doc});
+    kinds().push_back(std::move(kind));
+}
+
+const ControllerKind* find_controller(std::string_view name) {
+    for (const auto& k : kinds())
+        if (k.name == name) return &k;
+    return nullptr;
+}
+
+std::unique_ptr<Controller> make_controller(const sim::RobotSpec& robot, const tree::Forest& genotype,
+                                            const nn::NeuralConfig& cfg, double control_step) {
+    const ControllerKind* kind = find_controller(cfg.substrate);
+    if (!kind) throw std::invalid_argument("make_controller: no controller is registered as '" + cfg.substrate + "'");
+    return kind->make(robot, genotype, cfg, control_step);
 }
 
 } // namespace cic::hypergp

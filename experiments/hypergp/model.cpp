@@ -40,7 +40,7 @@ void check_inputs(const io::Settings& s) {
     if (m.robot.actuated().empty())
         throw InputError("robot '" + m.robot.name + "' has no joint (every module is fixed): HyperGP needs at "
                          "least one module with axis x, y or z", where);
-    if (m.neural.substrate != nn::Substrate::Network) return;   // the limits below are the network's
+    if (m.neural.substrate != "network") return;   // the limits below are the network's
     const nn::NeuronLayout layout = nn::make_neuron_layout(substrate_geometry(m.robot), m.neural);
     const std::size_t in = layout.input.size(), hidden = layout.hidden.size(), out = layout.output.size();
     if (in + hidden + out > limits::kMaxNeurons)

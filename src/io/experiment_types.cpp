@@ -20,12 +20,6 @@ std::vector<ExperimentType>& types() {
     return t;
 }
 
-bool valid_name(std::string_view n) {
-    if (n.empty() || n.size() > 40 || !(n[0] >= 'a' && n[0] <= 'z')) return false;
-    return std::all_of(n.begin(), n.end(),
-                       [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_'; });
-}
-
 std::string type_doc() {
     std::string doc = "Which experiment runs: HyperGP robot control, symbolic regression, or an optimised open-loop "
                       "gait (the baseline of docs/baselines.md). Not given: symreg when the file has a "
@@ -61,7 +55,7 @@ const ExperimentType* find_experiment_type(std::string_view name) {
 }
 
 void register_experiment_type(ExperimentType type) {
-    if (!valid_name(type.name))
+    if (!detail::valid_registered_name(type.name))
         throw std::invalid_argument("experiment type name '" + type.name +
                                     "': use 1 to 40 of a-z, 0-9, '-' and '_', starting with a letter");
     if (find_experiment_type(type.name))
@@ -96,6 +90,12 @@ std::string_view to_string(ExperimentFamily f) {
 }
 
 namespace detail {
+
+bool valid_registered_name(std::string_view n) {
+    if (n.empty() || n.size() > 40 || !(n[0] >= 'a' && n[0] <= 'z')) return false;
+    return std::all_of(n.begin(), n.end(),
+                       [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_'; });
+}
 
 SettingKey experiment_type_row() {
     SettingKey k{};

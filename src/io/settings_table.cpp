@@ -324,14 +324,7 @@ void bloat_rows(std::vector<SettingKey>& t) {
 // thesis's network, and they stay out of the digest at their defaults.
 void beyond_thesis_neural_rows(std::vector<SettingKey>& t) {
     const std::size_t first = t.size();
-    t.push_back(enum_row<nn::Substrate>("Neural", "substrate",
-                                        {{nn::Substrate::Network, {"network"}},
-                                         {nn::Substrate::Cpg, {"cpg"}},
-                                         {nn::Substrate::Gait, {"gait"}}},
-                                        "What the genotype is queried to build: network (the thesis's recurrent "
-                                        "network), cpg (coupled oscillators, one per joint) or gait (each joint's "
-                                        "amplitude, phase and offset, one evolved frequency)",
-                                        FIELD(neural.substrate)));
+    t.push_back(detail::substrate_row());
     t.push_back(bool_row("Neural", "evolveClock",
                          "network: the clock inputs' frequency is read from the genotype, in "
                          "[frequencyMin, frequencyMax], instead of clockPeriod",

@@ -100,18 +100,18 @@ void validate(const Settings& s, const Locations& locs) {
     c.require(nn.frequency_min <= nn.frequency_max, {"Neural.frequencyMin", "Neural.frequencyMax"},
               "the frequency range is empty");
     if (family_of(s) == ExperimentFamily::HyperGP) {
-        c.require(!nn.evolve_clock || (nn.substrate == nn::Substrate::Network && nn.clock_inputs),
+        c.require(!nn.evolve_clock || (nn.substrate == "network" && nn.clock_inputs),
                   {"Neural.evolveClock", "Neural.clockInputs", "Neural.substrate"},
                   "an evolved clock needs the network substrate with clock inputs (clockInputs = 1)");
         // The network's inputs and averaging do not exist in the other substrates: refuse
         // them rather than ignore them.
-        const bool network = nn.substrate == nn::Substrate::Network;
+        const bool network = nn.substrate == "network";
         c.require(network || (!nn.clock_inputs && !nn.bias_input),
                   {"Neural.clockInputs", "Neural.biasInput", "Neural.substrate"},
                   "clock and bias inputs belong to the network substrate; cpg and gait keep their own rhythm");
         c.require(network || nn.sample_average_count == 1, {"Neural.sampleAverageCount", "Neural.substrate"},
                   "sample averaging belongs to the network substrate");
-        c.require(nn.substrate == nn::Substrate::Cpg || nn.cpg_feedback == 0.0, {"Neural.cpgFeedback", "Neural.substrate"},
+        c.require(nn.substrate == "cpg" || nn.cpg_feedback == 0.0, {"Neural.cpgFeedback", "Neural.substrate"},
                   "feedback gains belong to the cpg substrate");
     }
 

@@ -32,6 +32,10 @@ std::vector<std::string>& mutable_settings_sections();
 const std::vector<std::string>& builtin_settings_sections();
 // The Experiment.type row: one of experiment_types() (experiment_types.cpp).
 SettingKey experiment_type_row();
+// The Neural.substrate row: one of substrate_names() (substrate_names.cpp).
+SettingKey substrate_row();
+// A name a registration may take: 1 to 40 of a-z, 0-9, '-' and '_', starting with a letter.
+bool valid_registered_name(std::string_view name);
 
 // Where each key got its value ("Section.key" -> file, line), so cross-field
 // errors can point at the line the user wrote.

@@ -159,7 +159,7 @@ TEST(Install, LibraryPackageBuildsAnOutOfTreeProject) {
     const Shell ran = sh(q(build / "cpg-walk") + " '" + tree + "'");
     ASSERT_EQ(ran.rc, 0) << ran.out;
     cic::io::Settings settings;
-    settings.neural.substrate = cic::nn::Substrate::Cpg;
+    settings.neural.substrate = "cpg";
     const auto outcome = cic::hypergp::run(cic::hypergp::Model::from_settings(settings),
                                            cic::tree::Forest{cic::tree::Tree::parse(tree)});
     EXPECT_EQ(std::stod(ran.out), outcome.fitness) << ran.out;
@@ -202,6 +202,27 @@ TEST(Install, PluginTypeBuildsAndRunsThroughCicsCommandLine) {
     const double across = std::fabs(o.result.end[1 - a] - o.result.start[1 - a]);
     EXPECT_EQ(best.fitness, along - 2.0 * across);
     EXPECT_NE(best.fitness, o.fitness) << "scored as eq. 7.1, not by the plugin";
+
+    // Its controller, `square`, with the built-in type: the run's best replays
+    // (`assess`, through make_controller) to its stored fitness, which the
+    // built-in gait substrate would not give.
+    const fs::path square_runs = scratch.path / "square";
+    const Shell sq = sh(cic + " --quiet --settings " + q(example / "straight_r1.xml") +
+                        " --set Experiment.type=hypergp --set Neural.substrate=square --set Control.maximumIterations=2" +
+                        " --set GP.generatedPopulationSize=6 --set Experiment.workers=2 --output " + q(square_runs));
+    ASSERT_EQ(sq.rc, 0) << sq.out;
+    const fs::path square_run = square_runs / "straight_r1-001";
+    const cic::io::PopulationFile square_pop = cic::io::load_population(square_run / "population.xml");
+    const Shell assessed = sh(cic + " --quiet assess " + q(square_run) + " --out " + q(scratch.path / "gaits.csv"));
+    ASSERT_EQ(assessed.rc, 0) << assessed.out;
+    const std::string gaits = read_text(scratch.path / "gaits.csv");
+    const std::string row = gaits.substr(gaits.find('\n') + 1);
+    const std::string replayed = row.substr(row.find(',') + 1, row.find(',', row.find(',') + 1) - row.find(',') - 1);
+    EXPECT_EQ(std::stod(replayed), square_pop.population.best().fitness) << gaits;
+    cic::io::Settings as_gait;
+    as_gait.neural.substrate = "gait";
+    const auto g = cic::hypergp::run(cic::hypergp::Model::from_settings(as_gait), square_pop.population.best().genotype);
+    EXPECT_NE(g.fitness, square_pop.population.best().fitness) << "the square wave was not used";
 }
 
 TEST(Install, DebianPackage) {

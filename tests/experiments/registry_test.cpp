@@ -5,7 +5,11 @@
 #include <stdexcept>
 
 #include "cic/core/error.hpp"
+#include "cic/experiments/hypergp/controller.hpp"
+#include "cic/experiments/hypergp/gait_substrate.hpp"
 #include "cic/experiments/registry.hpp"
+#include "cic/sim/robot.hpp"
+#include "cic/tree/tree.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_extension.hpp"
 #include "cic/io/settings_io.hpp"
@@ -148,6 +152,56 @@ TEST(Registry, ItsSettingsRoundTripAndShapeTheDigestOnlyOffTheirDefault) {
     written_default.extra["RegistryTest.weight"] = "1.5";
     EXPECT_EQ(io::settings_digest(written_default), io::settings_digest(at_default)) << "a default leaves the digest";
     EXPECT_NE(io::settings_digest(s), io::settings_digest(at_default));
+}
+
+// A controller registered by name: the gait substrate's spec, amplitudes halved.
+std::unique_ptr<hypergp::Controller> half_gait(const sim::RobotSpec& robot, const tree::Forest& genotype,
+                                               const nn::NeuralConfig& cfg, double) {
+    sim::GaitSpec spec = hypergp::gait_spec(robot, genotype, cfg);
+    for (auto& j : spec.joints) j.amplitude /= 2;
+    const std::size_t joints = spec.joints.size();
+    return std::make_unique<hypergp::RecordedController>(std::make_unique<sim::GaitController>(std::move(spec)), 1.0,
+                                                          joints);
+}
+
+const hypergp::ControllerRegistrar controller_registrar{{"registry-half-gait", "half the gait's amplitudes", &half_gait}};
+
+std::vector<double> commands(const char* substrate) {
+    nn::NeuralConfig cfg;
+    cfg.substrate = substrate;
+    const auto robot = sim::preset(1, false);
+    auto c = hypergp::make_controller(robot, {tree::Tree::parse("(sin (add x0 x1))")}, cfg, 0.0125);
+    c->set_recording(true);
+    const std::size_t n = robot.actuated().size();
+    c->reset(n);
+    std::vector<double> angles(n, 0.0), desired(n);
+    for (int s = 0; s < 40; ++s) c->step(s * 0.0125, angles, desired);
+    return c->record().commands;
+}
+
+TEST(ControllerRegistry, ARegisteredControllerIsBuiltByName) {
+    ASSERT_NE(hypergp::find_controller("registry-half-gait"), nullptr);
+    for (const char* builtin : {"network", "cpg", "gait"}) EXPECT_NE(hypergp::find_controller(builtin), nullptr);
+    const auto half = commands("registry-half-gait");
+    EXPECT_EQ(half, commands("registry-half-gait")) << "the same genotype gives the same commands";
+    EXPECT_NE(half, commands("gait"));
+    const io::Settings s = io::read_settings_string(
+        "<settings><Neural><substrate>registry-half-gait</substrate></Neural></settings>", "s.xml");
+    EXPECT_EQ(s.neural.substrate, "registry-half-gait");
+    EXPECT_EQ(io::read_settings_string(io::write_settings(s), "w.xml").neural.substrate, "registry-half-gait");
+}
+
+TEST(ControllerRegistry, BadRegistrationsAndUnknownNamesThrow) {
+    EXPECT_THROW(hypergp::register_controller({"registry-half-gait", "again", &half_gait}), std::invalid_argument);
+    EXPECT_THROW(hypergp::register_controller({"registry-no-make", "none", {}}), std::invalid_argument);
+    EXPECT_THROW(hypergp::register_controller({"Bad Name", "bad", &half_gait}), std::invalid_argument);
+    EXPECT_EQ(hypergp::find_controller("nothing"), nullptr);
+    nn::NeuralConfig cfg;
+    cfg.substrate = "nothing";
+    EXPECT_THROW(hypergp::make_controller(sim::preset(1, false), {tree::Tree::parse("x0")}, cfg, 0.0125),
+                 std::invalid_argument);
+    EXPECT_THROW((void)io::read_settings_string("<settings><Neural><substrate>nothing</substrate></Neural></settings>"),
+                 InputError);
 }
 
 } // namespace

@@ -54,7 +54,7 @@ TEST(CpgSubstrate, WeightsAreTheScaledTreeAtTheJointsAndTheirPairs) {
     const auto robot = cic::sim::preset(1, false);
     const auto g = cic::hypergp::substrate_geometry(robot);
     NeuralConfig cfg;
-    cfg.substrate = cic::nn::Substrate::Cpg;
+    cfg.substrate = "cpg";
     const Forest f = forest({"(sub x0 x2)"});   // 0 on the diagonal: no own rotation
     const cic::sim::CpgSpec s = cic::hypergp::cpg_spec(robot, f, cfg, 0.0125);
     ASSERT_EQ(s.self.size(), g.joints.size());
@@ -79,7 +79,7 @@ TEST(CpgSubstrate, WeightsAreTheScaledTreeAtTheJointsAndTheirPairs) {
 TEST(GaitSubstrate, OneTreeTellsTheParametersApartByTheirPoint) {
     const auto robot = cic::sim::preset(1, false);
     NeuralConfig cfg;
-    cfg.substrate = cic::nn::Substrate::Gait;
+    cfg.substrate = "gait";
     // x2 is the parameter point's x: A = -0.5, P = 0, O = 0.5.
     const cic::sim::GaitSpec s = cic::hypergp::gait_spec(robot, forest({"x2"}), cfg);
     ASSERT_EQ(s.joints.size(), robot.actuated().size());
@@ -114,7 +114,7 @@ TEST(EvolvedClock, ThePeriodIsOneOverTheEvolvedFrequency) {
 TEST(MakeController, EverySubstrateDrivesTheRobotAndRecordsItsCommands) {
     const auto robot = cic::sim::preset(1, false);
     const Forest f = forest({"(sin (add (mul x0 x3) (gauss (sub x1 x2))))"});
-    for (auto sub : {cic::nn::Substrate::Network, cic::nn::Substrate::Cpg, cic::nn::Substrate::Gait}) {
+    for (auto sub : {"network", "cpg", "gait"}) {
         NeuralConfig cfg;
         cfg.substrate = sub;
         auto a = cic::hypergp::make_controller(robot, f, cfg, 0.0125);

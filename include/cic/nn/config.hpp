@@ -12,9 +12,6 @@ inline constexpr int kSynapseTypes = 5;
 enum class WeightRule { Raw, Scaled };          // raw CPPF value, or SharpNEAT-style rescale to +-max_weight
 enum class NeuronModel { Tanh, Integrating };   // thesis eq. 7.2-7.3
 enum class OscillationPenalty { None, Frequency, CommandChange };
-// What the HyperGP genotype is queried to build (docs/hypergp.md): the thesis's
-// recurrent network, a CPG of coupled oscillators, or an open-loop gait.
-enum class Substrate { Network, Cpg, Gait };
 
 struct NeuralConfig {
     double threshold = 0.2;                 // synopsisThreshold: |w| < threshold -> no synapse
@@ -35,7 +32,11 @@ struct NeuralConfig {
     double penalty_max_frequency = 2.0;     // Hz, for Frequency
     double penalty_weight = 1.0;            // for CommandChange
     // Beyond the thesis (docs/hypergp.md); the defaults are the thesis's network.
-    Substrate substrate = Substrate::Network;
+    // What the HyperGP genotype is queried to build (docs/hypergp.md): "network"
+    // (the thesis's recurrent network), "cpg" (coupled oscillators), "gait" (an
+    // open-loop gait), or a controller registered by name
+    // (experiments/hypergp/controller.hpp, io/substrate_names.hpp).
+    std::string substrate = "network";
     bool evolve_clock = false;              // network: the clock's frequency comes from the genotype
     double frequency_min = 0.1;             // Hz: range of an evolved frequency (evolved clock, gait)
     double frequency_max = 3.0;

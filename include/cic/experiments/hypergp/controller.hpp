@@ -4,8 +4,11 @@
 // gait. Every one records what it commanded, for the oscillation penalty,
 // traces and replays, and counts its connections for summaries.
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "cic/nn/config.hpp"
@@ -33,12 +36,37 @@ public:
     virtual std::size_t connections() const = 0;
 };
 
-// The controller the genotype describes for this robot. `control_step` is the
-// simulator's sample step (the CPG integrates over it). Throws like the
-// substrate it builds (cic::InputError for a bad config, std::invalid_argument
-// for a genotype that does not fit).
+// The controller the genotype describes for this robot: the one registered
+// under cfg.substrate. `control_step` is the simulator's sample step (the CPG
+// integrates over it). Throws like the substrate it builds (cic::InputError
+// for a bad config, std::invalid_argument for a genotype that does not fit or
+// a substrate nothing registered).
 std::unique_ptr<Controller> make_controller(const sim::RobotSpec& robot, const tree::Forest& genotype,
                                             const nn::NeuralConfig& cfg, double control_step);
+
+// The open registry of controllers (docs/extending.md). A controller is one
+// file with a static ControllerRegistrar: its Neural.substrate name and how a
+// genotype builds it. Runs, worker processes, `view`, `trace`, `assess` and
+// `render` all build controllers through make_controller, so a registered one
+// is replayed as it was evaluated. The built-ins (network, cpg, gait) register
+// in controller.cpp.
+using ControllerFactory = std::function<std::unique_ptr<Controller>(
+    const sim::RobotSpec& robot, const tree::Forest& genotype, const nn::NeuralConfig& cfg, double control_step)>;
+
+struct ControllerKind {
+    std::string name;   // the Neural.substrate value
+    std::string doc;    // one line, for the key's documentation
+    ControllerFactory make;
+};
+
+// Throws std::invalid_argument for a name registered twice or a kind without `make`.
+void register_controller(ControllerKind kind);
+// nullptr when nothing registered this name.
+const ControllerKind* find_controller(std::string_view name);
+
+struct ControllerRegistrar {
+    explicit ControllerRegistrar(ControllerKind kind) { register_controller(std::move(kind)); }
+};
 
 // A sim controller with a record of its commands: outputs = command / scale.
 // For the controllers whose commands are their outputs times a range.
