@@ -160,4 +160,9 @@ inline SettingKey sim_row(const sim::FieldSpec& f) {
                           sim_member<T>(f.name));
 }
 
+// The rows of the Neural, SymbolicRegression and Gait sections (settings_rows_neural.cpp).
+void neural_rows(std::vector<SettingKey>& t);
+void symreg_rows(std::vector<SettingKey>& t);
+void gait_rows(std::vector<SettingKey>& t);
+
 } // namespace cic::io::rows
