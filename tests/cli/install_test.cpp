@@ -110,6 +110,22 @@ TEST(Install, LaysOutEveryFile) {
     EXPECT_TRUE(fs::is_regular_file(p / "share/cic/examples/../settings/r1_settings.xml"));
 }
 
+// The thesis released cic under the Lesser GPL (chapter 8): the licence says
+// which version, and a citation file cites the thesis and the software.
+TEST(Install, LicenceAndCitationAreInstalled) {
+    const fs::path doc = installed_prefix() / "share/doc/cic";
+    const std::string licence = read_text(doc / "LICENSE");
+    EXPECT_HAS(licence, "GNU Lesser General Public License as published by the Free Software\nFoundation, either version 3");
+    EXPECT_HAS(licence, "GNU LESSER GENERAL PUBLIC LICENSE\n                       Version 3, 29 June 2007");
+    EXPECT_HAS(read_text(doc / "COPYING"), "GNU GENERAL PUBLIC LICENSE\n                       Version 3, 29 June 2007");
+    const std::string cff = read_text(doc / "CITATION.cff");
+    for (const char* line : {"cff-version: 1.2.0\n", "license: LGPL-3.0-or-later\n", "  type: thesis\n",
+                             "  title: \"Neuroevolutionary Design of Control Strategy of a Multi-Legged Robot\"\n",
+                             "  year: 2013\n"})
+        EXPECT_HAS(cff, line);
+    EXPECT_HAS(cff, std::string("version: ") + CIC_VERSION + "\n");
+}
+
 TEST(Install, InstalledBinaryFindsItsSettingsFromAnyFolder) {
     const fs::path& p = installed_prefix();
     ASSERT_TRUE(fs::is_regular_file(p / "bin/cic"));
