@@ -187,6 +187,16 @@ std::string_view to_string(EffectMagnitude m) {
     return "?";
 }
 
+double smallest_attainable_p(std::size_t na, std::size_t nb) {
+    if (na == 0 || nb == 0) throw std::invalid_argument("smallest_attainable_p: a group is empty");
+    // C(na + nb, na) as a product that stays exact while it is small and
+    // finite-and-large (p ~ 0) when it is not.
+    double orderings = 1.0;
+    const std::size_t k = std::min(na, nb), n = na + nb;
+    for (std::size_t i = 1; i <= k; ++i) orderings = orderings * static_cast<double>(n - k + i) / static_cast<double>(i);
+    return std::min(1.0, 2.0 / orderings);
+}
+
 std::vector<double> holm_adjust(std::span<const double> p_values) {
     for (double p : p_values)
         if (std::isnan(p) || p < 0.0 || p > 1.0)

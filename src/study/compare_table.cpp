@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <vector>
@@ -54,6 +55,18 @@ std::optional<double> metric_of(const StudyRun& run, const std::string& metric) 
 std::optional<double> median_of(const std::vector<double>& v) {
     if (v.empty()) return std::nullopt;
     return stats::quantile(v, 0.5);
+}
+
+// The median over every run, a run that never reached the threshold counting
+// as infinitely late: infinite when half the runs or more never reached it.
+std::optional<double> median_with_unreached(std::vector<double> reached, std::size_t runs) {
+    if (runs == 0) return std::nullopt;
+    std::sort(reached.begin(), reached.end());
+    reached.resize(runs, std::numeric_limits<double>::infinity());
+    const std::size_t n = reached.size();
+    if (n % 2) return reached[n / 2];
+    const double a = reached[n / 2 - 1], b = reached[n / 2];
+    return std::isinf(a) || std::isinf(b) ? std::numeric_limits<double>::infinity() : (a + b) / 2;
 }
 
 // Numbers for people: whole numbers in full, others to 4 significant digits
@@ -119,8 +132,10 @@ std::vector<ConfigResult> summarise_configs(const StudyIndex& index, const Compa
             }
         }
         if (!c.sample.empty()) c.desc = stats::describe(c.sample);
-        c.gens_median = median_of(gens);
-        c.evals_median = median_of(evals);
+        if (o.has_threshold) {
+            c.gens_median = median_with_unreached(gens, c.runs);
+            c.evals_median = median_with_unreached(evals, c.runs);
+        }
         if (!walls.empty()) c.wall_mean = stats::describe(walls).mean;
         out.push_back(std::move(c));
     }
@@ -154,7 +169,12 @@ std::vector<PairResult> compare_pairs(const std::vector<ConfigResult>& configs, 
         r.p_holm = adjusted[k++];
         r.significant = r.p_holm < alpha;
         if (!r.significant) {
-            r.verdict = "no significant difference";
+            const std::size_t na = configs[r.a].sample.size(), nb = configs[r.b].sample.size();
+            const double smallest = stats::smallest_attainable_p(na, nb);
+            r.verdict = smallest >= alpha
+                ? fmt::format("cannot be significant: with n = {} and {} the smallest attainable p is {:.3g} (alpha {})",
+                              na, nb, smallest, alpha)
+                : "no significant difference";
             continue;
         }
         const bool a_wins = r.a12 > 0.5;
@@ -204,7 +224,8 @@ std::string markdown(const StudyIndex& index, const std::vector<ConfigResult>& c
     for (const auto& k : index.varied_keys) head.push_back(md_cell(k));
     for (const auto& h :
          {std::string("n"), o.metric + " mean ± sd", std::string("median"), std::string("IQR [Q1, Q3]"),
-          "generations to " + th + " (median)", "evaluations to " + th + " (median)", std::string("reached"),
+          "generations to " + th + " (median of all runs)", "evaluations to " + th + " (median of all runs)",
+          std::string("reached"),
           std::string("wall s (mean)")})
         head.push_back(h);
     md += md_row(head);
@@ -224,8 +245,12 @@ std::string markdown(const StudyIndex& index, const std::vector<ConfigResult>& c
             row.insert(row.end(), {"-", "-", "-"});
         }
         if (o.has_threshold) {
-            row.push_back(num(c.gens_median));
-            row.push_back(num(c.evals_median));
+            // never: half the runs or more did not reach it (median over every run).
+            const auto when = [](const std::optional<double>& v) {
+                return v && std::isinf(*v) ? std::string("never") : num(v);
+            };
+            row.push_back(when(c.gens_median));
+            row.push_back(when(c.evals_median));
             row.push_back(fmt::format("{}/{}", c.reached, c.runs));
         } else {
             row.insert(row.end(), {"-", "-", "-"});

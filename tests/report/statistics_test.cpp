@@ -23,6 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace cic::app::stats;
+namespace stats = cic::app::stats;
 
 struct MwuReference {
     const char* name;
@@ -242,6 +243,20 @@ TEST(StatisticsA12, MagnitudeLabelsAreSymmetricAroundOneHalf) {
     EXPECT_EQ(a12_magnitude(0.0), EffectMagnitude::Large);
     EXPECT_EQ(to_string(EffectMagnitude::Medium), "medium");
     EXPECT_THROW(a12_magnitude(1.5), std::invalid_argument);
+}
+
+TEST(StatisticsSmallestP, WhatEachGroupSizeCanShow) {
+    EXPECT_DOUBLE_EQ(stats::smallest_attainable_p(3, 3), 0.1);          // 2 / C(6, 3)
+    EXPECT_DOUBLE_EQ(stats::smallest_attainable_p(4, 4), 2.0 / 70);     // below 0.05
+    EXPECT_DOUBLE_EQ(stats::smallest_attainable_p(2, 5), 2.0 / 21);
+    EXPECT_DOUBLE_EQ(stats::smallest_attainable_p(5, 2), 2.0 / 21);     // symmetric
+    EXPECT_DOUBLE_EQ(stats::smallest_attainable_p(1, 1), 1.0);
+    EXPECT_DOUBLE_EQ(stats::smallest_attainable_p(10, 10), 2.0 / 184756);
+    EXPECT_EQ(stats::smallest_attainable_p(2000, 2000), 0.0);   // below any double: no limit
+    EXPECT_THROW(stats::smallest_attainable_p(0, 3), std::invalid_argument);
+    // It is what the exact test gives for complete separation.
+    const std::vector<double> low{1, 2, 3}, high{4, 5, 6};
+    EXPECT_DOUBLE_EQ(stats::mann_whitney_u(low, high, stats::MwuMethod::Exact).p, stats::smallest_attainable_p(3, 3));
 }
 
 TEST(StatisticsHolm, HandComputedExamples) {

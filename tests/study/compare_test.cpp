@@ -185,20 +185,22 @@ TEST(CompareCommand, MarkdownReportsConfigurationsAndPairs) {
     const std::string& md = r.out;
     EXPECT_NE(md.find("14 of 15 runs used (status done; left out: 1 failed)"), std::string::npos) << md;
     EXPECT_NE(md.find("| config | GP.tournament_size | GP.functions | n | final_best mean ± sd | median | IQR [Q1, Q3] |"
-                      " generations to best >= 0.9 (median) | evaluations to best >= 0.9 (median) | reached |"
+                      " generations to best >= 0.9 (median of all runs) | evaluations to best >= 0.9 (median of all runs) |"
+                      " reached |"
                       " wall s (mean) |"),
               std::string::npos)
         << md;
     // tour3: mean 0.928, sd 0.03493 (n-1), median 0.93, Q1 0.91, Q3 0.95; best >= 0.9 first at
-    // generations 2, 1, -, 1, 2 (evaluations 30, 20, -, 20, 30); wall 62.5 s each.
-    EXPECT_NE(md.find("| tour3 | 3 | add,mul | 5 | 0.928 ± 0.03493 | 0.93 | 0.04 [0.91, 0.95] | 1.5 | 25 | 4/5 | "
+    // generations 2, 1, never, 1, 2: the median of all five runs is 2 (evaluations 30); wall 62.5 s each.
+    EXPECT_NE(md.find("| tour3 | 3 | add,mul | 5 | 0.928 ± 0.03493 | 0.93 | 0.04 [0.91, 0.95] | 2 | 30 | 4/5 | "
                       "62.5 |"),
               std::string::npos)
         << md;
-    EXPECT_NE(md.find("| tour5 | 5 | add,mul | 5 | 0.672 ± 0.04324 | 0.68 | 0.05 [0.65, 0.7] | - | - | 0/5 | 37.5 |"),
+    // Half the runs or more never reached it: the median over all runs is "never".
+    EXPECT_NE(md.find("| tour5 | 5 | add,mul | 5 | 0.672 ± 0.04324 | 0.68 | 0.05 [0.65, 0.7] | never | never | 0/5 | 37.5 |"),
               std::string::npos)
         << md;
-    EXPECT_NE(md.find("| tour7 | 7 | add,mul | 4 | 0.8975 ± 0.03304 | 0.895 | 0.0275 [0.8825, 0.91] | 1 | 20 | 2/4 |"
+    EXPECT_NE(md.find("| tour7 | 7 | add,mul | 4 | 0.8975 ± 0.03304 | 0.895 | 0.0275 [0.8825, 0.91] | never | never | 2/4 |"
                       " 25 |"),
               std::string::npos)
         << md;
@@ -258,7 +260,8 @@ TEST(CompareCommand, OutWritesMarkdownAndCsvFiles) {
               "threshold,reached,generations_to_threshold_median,evaluations_to_threshold_median,wall_seconds_mean");
     EXPECT_NE(configs.find("\ntour3,3,\"add,mul\",5,0,5,final_best,0.92799999999999"), std::string::npos)
         << configs;
-    EXPECT_NE(configs.find(",0.9,4,1.5,25,62.5\n"), std::string::npos) << configs;
+    EXPECT_NE(configs.find(",0.9,4,2,30,62.5\n"), std::string::npos) << configs;
+    EXPECT_NE(configs.find(",0.9,2,inf,inf,25\n"), std::string::npos) << configs;   // tour7: 2 of 4
     EXPECT_NE(configs.find("\ntour5,5,\"add,mul\",5,0,5,final_best,"), std::string::npos) << configs;
     const std::string pairs = read_text(prefix.string() + "-pairs.csv");
     EXPECT_EQ(pairs.substr(0, pairs.find('\n')), "a,b,metric,n_a,n_b,u,p,exact,a12,effect,p_holm,significant,verdict");
@@ -270,6 +273,26 @@ TEST(CompareCommand, OutWritesMarkdownAndCsvFiles) {
     EXPECT_NE(pairs.find(",large,0.2857142857142857,false,no significant difference\n"), std::string::npos) << pairs;
     for (const auto& e : fs::directory_iterator(study.parent_path()))
         EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+// Three runs a side cannot give p < 0.05 whatever they hold (2 / C(6, 3) = 0.1):
+// the verdict says so instead of "no significant difference".
+TEST(CompareCommand, SaysWhenTheSampleCannotShowADifference) {
+    const fs::path study = temp_dir("compare-small") / "study";
+    std::string index = kIndexHeader;
+    for (int seed = 1; seed <= 3; ++seed)
+        for (const char* config : {"tour3", "tour5"}) {
+            const std::string run_dir = fmt::format("runs/{}/s{}", config, seed);
+            const double best = std::string(config) == "tour3" ? 0.9 + seed / 100.0 : 0.5 + seed / 100.0;
+            write_run(study, run_dir, {best});
+            index += fmt::format("{},{},{},\"add,mul\",{},done,{},1,10,1\n", run_dir, config, config[4] - '0', seed, best);
+        }
+    write_text(study / "index.csv", index);
+    const Result r = cic("compare " + study.string());
+    ASSERT_EQ(r.rc, 0) << r.err;
+    EXPECT_NE(r.out.find("| cannot be significant: with n = 3 and 3 the smallest attainable p is 0.1 (alpha 0.05) |"),
+              std::string::npos)
+        << r.out;
 }
 
 TEST(CompareCommand, BadInputExitsWithTwo) {

@@ -65,6 +65,13 @@ enum class EffectMagnitude { Negligible, Small, Medium, Large };
 EffectMagnitude a12_magnitude(double a12);
 std::string_view to_string(EffectMagnitude m);
 
+// The smallest two-sided p-value the exact Mann-Whitney test can give for groups
+// of na and nb values (no ties): the two most extreme orderings of C(na + nb, na),
+// min(1, 2 / C(na + nb, na)). When it is not below alpha, no outcome of that
+// comparison can be significant (3 and 3 runs: 0.1). Throws
+// std::invalid_argument when a group is empty.
+double smallest_attainable_p(std::size_t na, std::size_t nb);
+
 // Holm's step-down adjustment of a family of p-values: sort them ascending
 // p(1) <= ... <= p(m); adjusted p(i) = max over j <= i of min(1, (m - j + 1) p(j)).
 // Returned in the order given. Rejecting where adjusted p < alpha controls the
