@@ -10,6 +10,7 @@
 #include "cic/cli/commands.hpp"
 #ifdef CIC_HAVE_MPI
 #include "cic/run/mpi_pool.hpp"
+#include "cic/run/provenance.hpp"
 #endif
 #include "cic/core/error.hpp"
 #include "cic/io/settings_io.hpp"
@@ -26,7 +27,8 @@ int main(int argc, char** argv) {
                  "Runs the experiment a settings file describes; each run gets a fresh folder OUTPUT/NAME-NNN "
                  "with the effective settings, a log, statistics and populations.",
                  "cic"};
-    app.set_version_flag("--version", std::string("cic ") + CIC_VERSION);
+    // Where this binary came from: version, commit, compiler, flags, libraries (provenance.hpp).
+    app.set_version_flag("--version", build_text());
     app.add_option("--settings", o.settings_file, "settings XML file (see `cic settings --defaults`)");
     app.add_option("--set", o.sets, "override one setting, Section.key=value (repeatable), e.g. GP.tournament_size=7")
         ->allow_extra_args(false);

@@ -9,6 +9,7 @@
 #include "cic/io/settings_io.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/run/run.hpp"
+#include "cic/run/provenance.hpp"
 #include "cic/run/run_folder.hpp"
 #include "cic/run/self_path.hpp"
 
@@ -60,8 +61,8 @@ int run_one(const MainJob& o, const std::string& seed) {
     io::xml::write_file_atomically(run_dir / "settings.xml", effective);
     {
         std::ofstream log(run_dir / "run.log");
-        log << "cic " << CIC_VERSION << "\ncommand: " << o.command_line << "\nsettings: "
-            << o.settings_file << " (effective settings in settings.xml)\n";
+        log << run_log_head(o.command_line, std::chrono::system_clock::now()) << "settings: " << o.settings_file
+            << " (effective settings in settings.xml)\n";
         if (!log) throw std::runtime_error("cannot write " + (run_dir / "run.log").string());
     }
     if (!o.quiet) std::cerr << "cic: run folder " << run_dir.string() << '\n';

@@ -7,7 +7,10 @@
 #include <functional>
 #include <string>
 
+#include <chrono>
+
 #include "cic/run/progress.hpp"
+#include "cic/run/provenance.hpp"
 #include "cic/run/run.hpp"
 #include "cic/experiments/experiment.hpp"
 #include "cic/io/settings.hpp"
@@ -51,6 +54,7 @@ public:
 
 private:
     const RunOptions& opt_;
+    std::chrono::system_clock::time_point started_ = std::chrono::system_clock::now();
     std::ofstream log_;
     ProgressPrinter progress_;
 };

@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "cic/run/provenance.hpp"
 #include "cic/run/run.hpp"
 #include "cic/study/sweep.hpp"
 #include "cic/core/error.hpp"
@@ -232,14 +233,15 @@ void write_index(const SweepPlan& plan) {
     std::string text = "run_dir,config";
     for (const auto& k : plan.varied_keys) text += "," + csv_cell(k);
     // best_ever last: it came after the others, and readers find columns by name.
-    text += ",seed,status,final_best,generations,evaluations,wall_seconds,best_ever\n";
+    text += ",seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit\n";
     for (const SweepTask& t : plan.tasks()) {
         const TaskState st = task_state(plan, t);
         const SweepConfig& cfg = plan.configs[t.config];
         text += csv_cell(t.run_dir.string()) + "," + csv_cell(cfg.name);
         for (const auto& [key, value] : cfg.varied) text += "," + csv_cell(value);
-        text += fmt::format(",{},{},{},{},{},{:.3f},{}\n", t.seed, to_string(st.status), st.final_best, st.generations,
-                            st.evaluations, st.wall_seconds, st.best_ever);
+        text += fmt::format(",{},{},{},{},{},{:.3f},{},{}\n", t.seed, to_string(st.status), st.final_best,
+                            st.generations, st.evaluations, st.wall_seconds, st.best_ever,
+                            csv_cell(recorded_commit(plan.study / t.run_dir)));
     }
     io::xml::write_file_atomically(plan.study / "index.csv", text);
 }
@@ -339,11 +341,12 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
         io::Settings stored = prepared.settings;
         stored.control.population_load_from.clear();
         io::xml::write_file_atomically(dir / "settings.xml", io::write_settings(stored));
-        std::ofstream(dir / "run.log") << "cic " << CIC_VERSION << "\nsweep " << plan.file.string() << " task "
-                                       << task.index << " (" << plan.configs[task.config].name << ", seed " << task.seed
-                                       << ")\n";
-    } else {
-        std::ofstream(dir / "run.log", std::ios::app) << "resumed in place from population.xml\n";
+    }
+    {   // Each session of the run (a fresh start or a resume, on whichever node) says where it came from.
+        const std::string command = fmt::format("cic sweep {} --task {} ({}, seed {})", plan.file.string(), task.index,
+                                                plan.configs[task.config].name, task.seed);
+        std::ofstream(dir / "run.log", resume ? std::ios::app : std::ios::trunc)
+            << (resume ? "resumed in place from population.xml\n" : "") << run_log_head(command, std::chrono::system_clock::now());
     }
     RunOptions opt;
     opt.run_dir = dir;

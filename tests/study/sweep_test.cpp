@@ -185,10 +185,19 @@ TEST(Sweep, RunsEveryTaskInItsFolderAndMatchesAPlainRun) {
     ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "log"), 0) << read_text(dir / "log");
     const std::string index = read_text(dir / "study" / "index.csv");
     EXPECT_EQ(index.rfind("run_dir,config,GP.elitism,Neural.sampleAverageCount,seed,status,final_best,generations,"
-                          "evaluations,wall_seconds,best_ever\n",
+                          "evaluations,wall_seconds,best_ever,commit\n",
                           0),
               0u)
         << index;
+    // Every run records the commit of the cic that made it (`cic --version`'s second line).
+    ASSERT_EQ(run_command("--version", dir / "version"), 0);
+    const std::string version = read_text(dir / "version");
+    const auto at = version.find("commit: ") + 8;
+    const std::string commit = version.substr(at, version.find('\n', at) - at);
+    ASSERT_FALSE(commit.empty()) << version;
+    std::size_t rows = 0;
+    for (std::size_t p = index.find('\n'); (p = index.find("," + commit + "\n", p)) != std::string::npos; ++p) ++rows;
+    EXPECT_EQ(rows, 12u) << index;
     // best_ever is the largest best of the run's generations, as stats.csv writes it.
     {
         const app::StudyIndex study = app::read_study_index(dir / "study");

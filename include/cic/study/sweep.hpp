@@ -80,7 +80,8 @@ void refuse_mismatched_runs(const SweepPlan& plan);
 TaskState task_state(const SweepPlan& plan, const SweepTask& task);
 
 // Rewrites STUDY/index.csv (atomically, under a lock shared by every task):
-// run_dir,config,<varied keys>,seed,status,final_best,generations,evaluations,wall_seconds,best_ever
+// run_dir,config,<varied keys>,seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit
+// (commit: the cic build of the run's last session, from its run.log; provenance.hpp)
 void write_index(const SweepPlan& plan);
 
 // The run store folder of a task (plan.store must be set): STORE/KEY, KEY the
