@@ -8,10 +8,11 @@
 #include <optional>
 
 #include "cic/cli/commands.hpp"
+#include "help.hpp"
 #ifdef CIC_HAVE_MPI
 #include "cic/run/mpi_pool.hpp"
-#include "cic/run/provenance.hpp"
 #endif
+#include "cic/run/provenance.hpp"
 #include "cic/core/error.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/run/main_job.hpp"
@@ -40,7 +41,6 @@ int main(int argc, char** argv) {
     app.add_option("--output", o.output, "shortcut for --set Experiment.outputDirectory=DIR");
     auto quiet = app.add_flag("--quiet,-q", ctx.quiet, "no progress output");
     app.add_flag("--verbose,-v", ctx.verbose, "more progress output")->excludes(quiet);
-    app.footer(io::settings_key_listing());
     app.require_subcommand(0, 1);
     app.fallthrough();
 
@@ -57,7 +57,10 @@ int main(int argc, char** argv) {
 #ifdef CIC_HAVE_VIEWER
     add_view_command(root, ctx);
 #endif
+    add_help_command(app, ctx);
     add_docs_commands(root, ctx);   // last: `cic man` / `cic completion` document every subcommand
+    // The settings keys: the main job's help only (a subcommand lists its own options).
+    app.footer(io::settings_key_listing());
 
     try {
         app.parse(argc, argv);
@@ -68,7 +71,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::cerr << "cic: error: " << e.what() << "\nRun `cic --help` for the options.\n";
+        std::cerr << "cic: error: " << e.what() << near_misses(app, argc, argv) << "\nRun `cic --help` for the options.\n";
         return 2;
     } catch (const InputError& e) {   // thrown by a subcommand outside its guard
         std::cerr << "cic: error: " << e.what() << '\n';

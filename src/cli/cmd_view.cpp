@@ -84,6 +84,9 @@ void add_view_command(Command& app, CommandContext& ctx) {
     cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "view", [&] {
             if (!opts->screenshot.empty()) reexec_under_xvfb();
+            else if (const char* d = std::getenv("DISPLAY"); !d || !*d)   // before the replays: they take seconds each
+                throw std::runtime_error("no X display (DISPLAY is unset or empty): the window cannot open; "
+                                         "use --screenshot FILE.png to render offscreen");
             const int count = opts->screenshot.empty() ? opts->count : 1;
             auto items = load_replay(opts->source, count, opts->fps, false);
             std::vector<viz::ViewEntry> entries;
@@ -103,9 +106,6 @@ void add_view_command(Command& app, CommandContext& ctx) {
                 if (!ctx.quiet) std::cerr << "wrote " << opts->screenshot << '\n';
                 return 0;
             }
-            if (!std::getenv("DISPLAY"))
-                throw std::runtime_error("no X display (DISPLAY is unset): the window cannot open; "
-                                         "use --screenshot FILE.png to render offscreen");
             viz::ViewerOptions view;
             if (opts->width > 0) view.width = opts->width;
             if (opts->height > 0) view.height = opts->height;

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <charconv>
+#include <filesystem>
 #include <map>
 
+#include "cic/core/error.hpp"
 #include "cic/io/xml.hpp"
 
 namespace cic::io {
@@ -134,6 +136,9 @@ sim::RobotSpec load_robot(const std::string& preset_or_file, bool middle_legs) {
     const std::string& s = preset_or_file;
     if (s.size() == 2 && (s[0] == 'R' || s[0] == 'r') && s[1] >= '0' && s[1] <= '2')
         return sim::preset(s[1] - '0', middle_legs);
+    // Not a preset: a file. One that cannot be read at all may be a misspelt preset.
+    if (!std::filesystem::is_regular_file(s))
+        throw InputError("robot '" + s + "' is not R0, R1, R2 or a readable file");
     return read_robot_file(s);
 }
 

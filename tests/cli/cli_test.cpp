@@ -83,6 +83,61 @@ TEST_F(Cli, VersionAndHelp) {
     EXPECT_HAS(h.out, "generatedPopulationSize");
 }
 
+// A subcommand's help lists its own options, the main help the settings keys;
+// `cic help [COMMAND]` prints the same; man and completion are listed.
+TEST_F(Cli, EachCommandsHelpIsItsOwn) {
+    const auto main_help = run("--help", true);
+    EXPECT_EQ(run("help", true).out, main_help.out);
+    for (const char* listed : {"\n  help ", "\n  man ", "\n  completion "}) EXPECT_HAS(main_help.out, listed);
+    const auto sweep_help = run("sweep --help", true);
+    EXPECT_EQ(sweep_help.code, 0);
+    EXPECT_HAS(sweep_help.out, "Usage: cic sweep [OPTIONS] file");
+    EXPECT_HAS(sweep_help.out, "--jobs");
+    EXPECT_EQ(sweep_help.out.find("generatedPopulationSize"), std::string::npos) << "the settings keys belong to cic --help";
+    EXPECT_EQ(run("help sweep", true).out, sweep_help.out);
+    const auto unknown = run("help swep");
+    EXPECT_EQ(unknown.code, 2);
+    EXPECT_HAS(unknown.out, "no command 'swep'; did you mean sweep?");
+}
+
+// A slip of the keys gets the near option or command, under the parser's own line.
+TEST_F(Cli, MisspeltOptionsAndCommandsGetTheNearOne) {
+    auto r = run("--sed 3");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_HAS(r.out, "unknown option --sed; did you mean --seed?");
+    r = run("sweep some.xml --job 2");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_HAS(r.out, "unknown option --job; did you mean --jobs?");
+    r = run("swep some.xml");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_HAS(r.out, "unknown command swep; did you mean sweep?");
+    r = run("--zzzzzz");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.out.find("did you mean"), std::string::npos) << "nothing is near";
+}
+
+TEST_F(Cli, AnUnknownRobotNamesWhatItCouldBe) {
+    const auto r = run("simulate --robot R4");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_HAS(r.out, "robot 'R4' is not R0, R1, R2 or a readable file");
+}
+
+#ifdef CIC_HAVE_VIEWER
+// Before any replay (which takes seconds): the source need not even exist.
+TEST_F(Cli, ViewWithoutADisplaySaysSoFirst) {
+    const std::string cmd = "env -u DISPLAY '" + binary() + "' view /no/such/run 2>&1";
+    FILE* p = ::popen(cmd.c_str(), "r");
+    ASSERT_NE(p, nullptr);
+    std::string out;
+    char buf[4096];
+    while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+    const int status = ::pclose(p);
+    EXPECT_EQ(WEXITSTATUS(status), 1);
+    EXPECT_HAS(out, "no X display (DISPLAY is unset or empty)");
+    EXPECT_EQ(out.find("no such run folder"), std::string::npos) << out;
+}
+#endif
+
 TEST_F(Cli, UsageErrorsExitWithTwo) {
     auto r = run("");
     EXPECT_EQ(r.code, 2);

@@ -292,7 +292,8 @@ TEST(Install, ManPageIsMadeFromTheCliAndRendersCleanly) {
                              ".SS settings", ".SS sweep", ".SS compare", ".B 130", ".B 143", "\\-\\-settings"})
         EXPECT_HAS(man.out, part);
     for (const auto& k : cic::io::settings_table()) EXPECT_HAS(man.out, "\\fB" + k.section + "." + k.key + "\\fR");
-    EXPECT_EQ(man.out.find(".SS man"), std::string::npos);   // the hidden commands stay hidden
+    for (const char* listed : {".SS help", ".SS man", ".SS completion"}) EXPECT_HAS(man.out, listed);
+    EXPECT_EQ(man.out.find(".SS worker"), std::string::npos);   // the hidden command stays hidden
 
     if (!have("groff")) GTEST_SKIP() << "groff missing: rendering not checked";
     const ScratchDir scratch("install-man");
@@ -323,8 +324,9 @@ printf '%s\n' "${COMPREPLY[@]}"
         return sh("cd " + q(dir) + " && bash complete.sh cic " + q(line)).out;
     };
     const std::string commands = complete("cic ");
-    for (const char* c : {"settings\n", "simulate\n", "plot\n", "compare\n", "sweep\n"}) EXPECT_HAS(commands, c);
-    EXPECT_EQ(commands.find("man\n"), std::string::npos);
+    for (const char* c : {"settings\n", "simulate\n", "plot\n", "compare\n", "sweep\n", "help\n", "man\n"})
+        EXPECT_HAS(commands, c);
+    EXPECT_EQ(commands.find("worker\n"), std::string::npos);   // internal
     EXPECT_HAS(complete("cic --se"), "--settings\n");
     EXPECT_HAS(complete("cic sweep --"), "--dry-run\n");
     EXPECT_HAS(complete("cic --set GP.tour"), "GP.tournament_size=\n");

@@ -1,0 +1,97 @@
+// `cic help [COMMAND]`, and suggestions for a mistyped option or subcommand.
+#include "help.hpp"
+
+#include <iostream>
+
+#include "cic/cli/command_guard.hpp"
+#include "cic/io/settings_table.hpp"
+
+namespace cic::app {
+namespace {
+
+bool is_subsequence(const std::string& part, const std::string& whole) {
+    std::size_t i = 0;
+    for (char c : whole)
+        if (i < part.size() && part[i] == c) ++i;
+    return i == part.size();
+}
+
+// The closest of `names` to `given`, when it is close enough to be a slip of
+// the keys; of two as close, the one `given` is a subsequence of (a letter left
+// out is the commonest slip: --sed is --seed rather than --set).
+std::string nearest(const std::string& given, const std::vector<std::string>& names) {
+    std::string best;
+    std::size_t best_d = std::string::npos;
+    for (const auto& n : names) {
+        const std::size_t d = io::edit_distance(given, n);
+        if (d < best_d || (d == best_d && is_subsequence(given, n) && !is_subsequence(given, best)))
+            best_d = d, best = n;
+    }
+    return best_d > 0 && best_d <= std::max<std::size_t>(1, given.size() / 3) ? best : std::string();
+}
+
+std::vector<std::string> option_names(const CLI::App& app) {
+    std::vector<std::string> out;
+    for (const CLI::Option* o : app.get_options()) {
+        for (const auto& l : o->get_lnames()) out.push_back("--" + l);
+        for (const auto& s : o->get_snames()) out.push_back("-" + s);
+    }
+    return out;
+}
+
+} // namespace
+
+void add_help_command(CLI::App& app, CommandContext& ctx) {
+    auto topic = std::make_shared<std::string>();
+    CLI::App* help = app.add_subcommand("help", "Print the help of cic, or of one command: cic help sweep");
+    help->add_option("command", *topic, "the command to explain (default: cic itself)");
+    help->callback([&app, &ctx, topic] {
+        run_guarded(ctx, "help", [&] {
+            if (topic->empty()) {   // App::help() would describe the subcommand selected: this one
+                std::cout << app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
+                return 0;
+            }
+            for (const CLI::App* sub : app.get_subcommands({}))
+                if (sub->get_name() == *topic) {
+                    std::cout << sub->help(app.get_name());
+                    return 0;
+                }
+            std::vector<std::string> names;
+            for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+            const std::string near = nearest(*topic, names);
+            throw InputError("no command '" + *topic + "'" + (near.empty() ? "" : "; did you mean " + near + "?") +
+                             " (cic --help lists them)");
+        });
+    });
+}
+
+std::string near_misses(const CLI::App& app, int argc, char** argv) {
+    // The subcommand named on the line, if any: its options are the ones meant.
+    const CLI::App* command = &app;
+    std::vector<std::string> commands;
+    for (const CLI::App* sub : app.get_subcommands({})) commands.push_back(sub->get_name());
+    std::string text;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (command == &app)
+            for (const CLI::App* sub : app.get_subcommands({}))
+                if (sub->get_name() == arg) command = sub;
+        if (arg.size() > 1 && arg[0] == '-') {
+            const std::string name = arg.substr(0, arg.find('='));
+            std::vector<std::string> names = option_names(*command);
+            if (command->get_fallthrough() || command == &app) {
+                const auto main = option_names(app);
+                names.insert(names.end(), main.begin(), main.end());
+            }
+            if (std::find(names.begin(), names.end(), name) != names.end()) continue;
+            if (const std::string near = nearest(name, names); !near.empty())
+                text += "\nunknown option " + name + "; did you mean " + near + "?";
+        } else if (i == 1 && command == &app && arg.find('.') == std::string::npos) {
+            if (const std::string near = nearest(arg, commands); !near.empty())
+                text += "\nunknown command " + arg + "; did you mean " + near + "?";
+        }
+    }
+    return text;
+}
+
+} // namespace cic::app
