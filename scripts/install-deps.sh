@@ -1,24 +1,40 @@
 #!/usr/bin/env bash
-# Installs every build, run and test dependency of cic with apt-get (Debian 12).
-# Non-interactive and idempotent: does nothing when all packages are present.
-# Runs as root, or through sudo when available.
+# scripts/install-deps.sh [run|all]
+# Installs cic's dependencies with apt-get (Debian 12): `run`, what building
+# cic and running experiments needs (scripts/run.sh); `all` (the default), also
+# what the tests, benchmarks, videos, fuzzing and the DEAP comparison use
+# (scripts/test.sh, CI). Non-interactive and idempotent: does nothing when all
+# packages are present. Runs as root, or through sudo when available.
 set -euo pipefail
 
-PACKAGES=(
+profile="${1:-all}"
+case "$profile" in
+  run|all) ;;
+  *) echo "install-deps.sh: unknown profile '$profile' (allowed: run, all)" >&2; exit 2 ;;
+esac
+
+RUN_PACKAGES=(
   # build
   build-essential cmake ninja-build pkg-config dpkg-dev
   # libraries
   libode-dev libeigen3-dev libxml2-dev libcli11-dev libfmt-dev libpagmo-dev
   libopenscenegraph-dev libopenmpi-dev openmpi-bin
+  # the plots a run draws (Control.useMatlabPlot)
+  gnuplot-nox
+)
+MORE_PACKAGES=(
   # tests and benchmarks
   libgtest-dev libgmock-dev googletest libbenchmark-dev libxml2-utils valgrind python3-scipy
-  # plots, POV-Ray scenes and videos, offscreen viewer screenshots
-  gnuplot-nox povray ffmpeg xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0
+  # POV-Ray scenes and videos, offscreen viewer screenshots
+  povray ffmpeg xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0
   # fuzzing (scripts/fuzz.sh): clang's libFuzzer runtime and a symbolizer for reports
   clang libclang-rt-14-dev llvm
   # DEAP comparison (scripts/compare-deap.sh)
   python3 python3-deap
 )
+
+PACKAGES=("${RUN_PACKAGES[@]}")
+[ "$profile" = all ] && PACKAGES+=("${MORE_PACKAGES[@]}")
 
 missing=()
 for p in "${PACKAGES[@]}"; do

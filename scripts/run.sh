@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # scripts/run.sh [SETTINGS] [more cic options...]
-# Installs missing dependencies, builds Release into build/ when needed
-# (incremental), then runs the main job: cic --settings SETTINGS.
+# Installs what building and running cic needs (install-deps.sh run: no test,
+# fuzzing or video tools), builds Release into build/ when needed (incremental,
+# without the tests), then runs the main job: cic --settings SETTINGS.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # shellcheck source=scripts/setup.sh
@@ -9,5 +10,5 @@ source "$ROOT/scripts/setup.sh"
 
 SETTINGS="${1:-$ROOT/settings/r1_settings.xml}"
 [ $# -gt 0 ] && shift
-cic_setup release "$ROOT/build" cic
+CIC_DEPS=run cic_setup release "$ROOT/build" cic
 exec "$ROOT/build/cic" --settings "$SETTINGS" "$@"
