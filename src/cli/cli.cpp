@@ -22,6 +22,7 @@ namespace cic::app {
 
 int main(int argc, char** argv) {
     CommandContext ctx;
+    for (int i = 0; i < argc; ++i) ctx.command_line += (i ? " " : "") + std::string(argv[i]);
     MainJob o;
     CLI::App app{"cic: evolutionary robotics with HyperGP (hypercube-encoded genetic programming evolving "
                  "recurrent neural controllers for simulated modular robots), and symbolic regression.\n"
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
     add_trace_command(root, ctx);
     add_sweep_command(root, ctx);
     add_assess_command(root, ctx);
+    add_resume_command(root, ctx);
 #ifdef CIC_HAVE_VIEWER
     add_view_command(root, ctx);
 #endif
@@ -102,7 +104,7 @@ int main(int argc, char** argv) {
     try {
         // NAME.xml not found as given: the installed (or source-tree) settings folder.
         o.settings_file = find_settings_file(o.settings_file).string();
-        for (int i = 0; i < argc; ++i) o.command_line += (i ? " " : "") + std::string(argv[i]);
+        o.command_line = ctx.command_line;
         o.quiet = ctx.quiet;
         o.verbose = ctx.verbose;
         return run_main_job(o);

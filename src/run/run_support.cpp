@@ -87,8 +87,10 @@ void RunConsole::summary(const std::string& result) {
 
 int RunConsole::interrupted() {
     const bool term = stop_signal() == SIGTERM;
+    const std::string go_on =
+        opt_.resume_command.empty() ? "cic resume " + opt_.run_dir.string() : opt_.resume_command;
     warn(std::string("interrupted by ") + (term ? "SIGTERM" : "SIGINT") + ": state saved to " +
-         (opt_.run_dir / "population.xml").string() + "; resume with Control.populationXmlLoadFrom");
+         (opt_.run_dir / "population.xml").string() + "; continue with: " + go_on);
     return term ? 143 : 130;
 }
 

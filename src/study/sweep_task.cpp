@@ -15,6 +15,7 @@
 
 #include "cic/run/provenance.hpp"
 #include "cic/run/run.hpp"
+#include "cic/run/settings_diff.hpp"
 #include "cic/study/sweep.hpp"
 #include "cic/core/error.hpp"
 #include "cic/core/hash.hpp"
@@ -118,43 +119,6 @@ std::string to_string(TaskStatus s) {
     return "?";
 }
 
-namespace {
-
-// The settings less the keys that change no result: the run's name, output
-// folder, worker count and resume file. What a run store fingerprints and what
-// a run folder is checked against.
-io::Settings result_settings(io::Settings s) {
-    s.experiment.name.clear();
-    s.experiment.output_directory.clear();
-    s.experiment.workers = 0;
-    s.control.population_load_from.clear();
-    return s;
-}
-
-bool same_file_contents(const fs::path& a, const fs::path& b) {
-    std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
-    if (!fa || !fb) return false;
-    return std::string(std::istreambuf_iterator<char>(fa), {}) == std::string(std::istreambuf_iterator<char>(fb), {});
-}
-
-// The keys whose values differ between the settings a run folder ran and those
-// the sweep asks of it, as "Section.key: ran A, the sweep asks B". Keys that
-// change no result (name, output folder, workers, resume file) are left out; a
-// path counts as the same when both name files of identical contents (a copy
-// elsewhere). A path whose file is gone is compared as written: refused, loudly.
-std::vector<std::string> settings_differences(const io::Settings& ran_settings, const io::Settings& asked_settings) {
-    const io::Settings ran = result_settings(ran_settings), asked = result_settings(asked_settings);
-    std::vector<std::string> out;
-    for (const auto& k : io::settings_table()) {
-        const std::string a = k.get(ran), b = k.get(asked);
-        if (a == b || (k.type == io::ValueType::Path && same_file_contents(a, b))) continue;
-        out.push_back(fmt::format("{}.{}: ran '{}', the sweep asks '{}'", k.section, k.key, a, b));
-    }
-    return out;
-}
-
-} // namespace
-
 TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
     // A stored task is read from the store folder of its settings, whatever the link
     // says: before the link is made (dry runs), or while it still names the run of
@@ -178,7 +142,7 @@ TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
             st.mismatch = {std::string("its settings.xml cannot be read: ") + e.what()};
             return st;
         }
-        st.mismatch = settings_differences(ran, io::load_settings(plan.base, plan.overrides(task)));
+        st.mismatch = settings_differences(ran, io::load_settings(plan.base, plan.overrides(task)), "the sweep");
         if (!st.mismatch.empty()) {
             st.status = TaskStatus::Mismatched;
             return st;
@@ -353,6 +317,7 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
     opt.quiet = quiet;
     opt.worker_executable = executable;
     opt.continue_in_place = resume;
+    opt.resume_command = "cic sweep " + plan.file.string() + " (the task goes on from its checkpoint)";
     int rc = 1;
     try {
         rc = run_experiment(std::move(prepared), opt);

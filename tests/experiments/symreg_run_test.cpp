@@ -114,6 +114,10 @@ void interrupt_writes_a_checkpoint(int sig, int expected_rc) {
     EXPECT_EQ(WEXITSTATUS(status), expected_rc) << read_text(dir / "long.log");
     EXPECT_NE(read_text(dir / "long.log").find(std::string("interrupted by ") + (sig == SIGTERM ? "SIGTERM" : "SIGINT")),
               std::string::npos);
+    // The exact command that goes on.
+    EXPECT_NE(read_text(dir / "long.log").find("; continue with: cic resume " + population.parent_path().string()),
+              std::string::npos)
+        << read_text(dir / "long.log");
     const std::string text = read_text(population);
     EXPECT_NE(text.find("</population>"), std::string::npos);   // complete, not half-written
     EXPECT_TRUE(fs::exists(population.parent_path() / "summary.txt"));

@@ -1,6 +1,8 @@
 #pragma once
 // Each subcommand lives in its own file and registers itself on the command
 // line (command_line.hpp). The action it sets stores the exit code in `exit_code`.
+#include <string>
+
 #include "cic/cli/command_line.hpp"
 
 namespace cic::app {
@@ -9,6 +11,7 @@ struct CommandContext {
     int exit_code = 0;
     bool quiet = false;
     bool verbose = false;
+    std::string command_line;   // the whole command, for run.log
 };
 
 void add_settings_command(Command& app, CommandContext& ctx);   // cmd_settings.cpp
@@ -20,10 +23,11 @@ void add_compare_command(Command& app, CommandContext& ctx);    // cmd_compare.c
 void add_trace_command(Command& app, CommandContext& ctx);      // cmd_trace.cpp
 void add_sweep_command(Command& app, CommandContext& ctx);      // cmd_sweep.cpp
 void add_assess_command(Command& app, CommandContext& ctx);     // cmd_assess.cpp
+void add_resume_command(Command& app, CommandContext& ctx);     // cmd_resume.cpp
 #ifdef CIC_HAVE_VIEWER
 void add_view_command(Command& app, CommandContext& ctx);       // cmd_view.cpp
 #endif
-// Hidden `cic man` and `cic completion`: register last, they document every other subcommand.
+// `cic man` and `cic completion`: register last, they document every other subcommand.
 void add_docs_commands(Command& app, CommandContext& ctx);      // cmd_docs.cpp
 
 } // namespace cic::app

@@ -19,6 +19,8 @@ struct RunOptions {
     // Resuming in the run's own folder (a sweep task): stats.csv keeps its rows up
     // to the checkpoint's generation and grows from there, instead of starting anew.
     bool continue_in_place = false;
+    // What an interrupted run tells the user to type to go on; empty: `cic resume RUN_DIR`.
+    std::string resume_command;
 };
 
 // Everything a run reads, loaded and checked before its folder exists.

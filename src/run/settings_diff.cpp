@@ -1,0 +1,43 @@
+// Which settings a run ran against those asked of it (settings_diff.hpp).
+#include "cic/run/settings_diff.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "cic/io/settings_table.hpp"
+
+namespace cic::app {
+namespace {
+
+bool same_file_contents(const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
+    if (!fa || !fb) return false;
+    return std::string(std::istreambuf_iterator<char>(fa), {}) == std::string(std::istreambuf_iterator<char>(fb), {});
+}
+
+} // namespace
+
+io::Settings result_settings(io::Settings s) {
+    s.experiment.name.clear();
+    s.experiment.output_directory.clear();
+    s.experiment.workers = 0;
+    s.control.population_load_from.clear();
+    return s;
+}
+
+std::vector<std::string> settings_differences(const io::Settings& ran_settings, const io::Settings& asked_settings,
+                                              std::string_view asker) {
+    const io::Settings ran = result_settings(ran_settings), asked = result_settings(asked_settings);
+    std::vector<std::string> out;
+    for (const auto& k : io::settings_table()) {
+        const std::string a = k.get(ran), b = k.get(asked);
+        if (a == b || (k.type == io::ValueType::Path && same_file_contents(a, b))) continue;
+        out.push_back(fmt::format("{}.{}: ran '{}', {} asks '{}'", k.section, k.key, a, asker, b));
+    }
+    return out;
+}
+
+} // namespace cic::app
