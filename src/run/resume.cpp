@@ -22,13 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The keys a resume may change besides those that change no result: the budget.
-bool is_budget(const std::string& difference) {
-    for (const char* key : {"Control.maximumIterations:", "Control.minimumFitness:", "Gait.evaluations:"})
-        if (difference.rfind(key, 0) == 0) return true;
-    return false;
-}
-
 } // namespace
 
 int resume_run(const ResumeRequest& r) {
@@ -70,7 +63,7 @@ int resume_run(const ResumeRequest& r) {
 
     std::vector<std::string> refused;
     for (const auto& d : settings_differences(ran, asked, "the resume"))
-        if (!is_budget(d)) refused.push_back(d);
+        if (!is_budget_difference(d)) refused.push_back(d);
     if (!refused.empty()) {
         std::string text = fmt::format("cannot continue {} with other settings than it ran:", dir.string());
         for (const auto& d : refused) text += "\n  " + d;

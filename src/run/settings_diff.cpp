@@ -40,4 +40,19 @@ std::vector<std::string> settings_differences(const io::Settings& ran_settings, 
     return out;
 }
 
+bool is_budget_difference(const std::string& difference) {
+    for (const char* key : {"Control.maximumIterations:", "Control.minimumFitness:", "Gait.evaluations:"})
+        if (difference.rfind(key, 0) == 0) return true;
+    return false;
+}
+
+bool extends(const io::Settings& ran, const io::Settings& asked) {
+    const auto diffs = settings_differences(ran, asked, "");
+    if (diffs.empty()) return false;
+    for (const auto& d : diffs)
+        if (!is_budget_difference(d)) return false;
+    return asked.control.maximum_iterations >= ran.control.maximum_iterations &&
+           asked.control.minimum_fitness >= ran.control.minimum_fitness && asked.gait.evaluations >= ran.gait.evaluations;
+}
+
 } // namespace cic::app

@@ -115,6 +115,7 @@ std::string to_string(TaskStatus s) {
     case TaskStatus::Interrupted: return "interrupted";
     case TaskStatus::Failed: return "failed";
     case TaskStatus::Mismatched: return "mismatched";
+    case TaskStatus::Extend: return "extend";
     }
     return "?";
 }
@@ -127,6 +128,7 @@ TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
     const bool stored = !plan.store.empty() && (fs::is_symlink(dir) || !fs::exists(dir));
     if (stored) dir = store_dir(plan, task);
     TaskState st;
+    bool extend = false;
     if (!fs::exists(dir / "settings.xml")) {
         st.status = fs::exists(dir / "failed.txt") ? TaskStatus::Failed : TaskStatus::Pending;
         return st;
@@ -142,15 +144,21 @@ TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
             st.mismatch = {std::string("its settings.xml cannot be read: ") + e.what()};
             return st;
         }
-        st.mismatch = settings_differences(ran, io::load_settings(plan.base, plan.overrides(task)), "the sweep");
-        if (!st.mismatch.empty()) {
+        const io::Settings asked = io::load_settings(plan.base, plan.overrides(task));
+        st.mismatch = settings_differences(ran, asked, "the sweep");
+        if (!st.mismatch.empty() && !extends(ran, asked)) {
             st.status = TaskStatus::Mismatched;
             return st;
         }
+        extend = !st.mismatch.empty();   // a raised budget: the run goes on from its checkpoint
+        st.mismatch.clear();
     }
     read_progress(dir / "stats.csv", st);
     if (fs::exists(dir / "failed.txt")) {
         st.status = TaskStatus::Failed;
+    } else if (extend) {
+        const FileLock probe(dir / ".lock", false);
+        st.status = probe.held() ? TaskStatus::Extend : TaskStatus::Running;
     } else if (fs::exists(dir / "summary.txt")) {
         st.status = first_line(dir / "summary.txt").rfind("stopped: interrupted", 0) == 0 ? TaskStatus::Interrupted
                                                                                            : TaskStatus::Done;
@@ -275,6 +283,40 @@ void link_to_store(const SweepPlan& plan) {
     }
 }
 
+namespace {
+
+// A stored task whose budget the sweep has raised: its store folder (of the new
+// settings) starts as a copy of the longest stored run it extends, so that it
+// goes on from that run's checkpoint rather than from scratch. The shorter run
+// stays as it was, for the studies that link to it.
+void start_from_a_shorter_stored_run(const SweepPlan& plan, const SweepTask& task, const fs::path& target) {
+    if (plan.store.empty() || fs::exists(target / "settings.xml") || !fs::is_directory(plan.store)) return;
+    const io::Settings asked = io::load_settings(plan.base, plan.overrides(task));
+    fs::path longest;
+    std::pair<int, long> longest_budget{-1, -1};
+    for (const auto& e : fs::directory_iterator(plan.store)) {
+        const fs::path run = e.path();
+        if (fs::equivalent(run, target) || !fs::exists(run / "population.xml") || fs::exists(run / "failed.txt"))
+            continue;
+        io::Settings ran;
+        try {
+            ran = io::read_settings(run / "settings.xml");
+        } catch (const std::exception&) {
+            continue;
+        }
+        if (!extends(ran, asked)) continue;
+        const std::pair<int, long> budget{ran.control.maximum_iterations, ran.gait.evaluations};
+        if (budget > longest_budget) longest_budget = budget, longest = run;
+    }
+    if (longest.empty()) return;
+    for (const auto& e : fs::directory_iterator(longest))
+        if (e.path().filename() != ".lock")
+            fs::copy(e.path(), target / e.path().filename(),
+                     fs::copy_options::recursive | fs::copy_options::copy_symlinks | fs::copy_options::overwrite_existing);
+}
+
+} // namespace
+
 int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool quiet, const std::string& executable) {
     const fs::path dir = plan.study / task.run_dir;
     link_to_store(plan);
@@ -291,6 +333,7 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
                                      mismatch_text(plan, task, state), kMismatchAdvice),
                          plan.file.string());
 
+    if (!plan.store.empty()) start_from_a_shorter_stored_run(plan, task, fs::canonical(dir));
     std::vector<std::string> overrides = plan.overrides(task);
     if (workers > 0) overrides.push_back("Experiment.workers=" + std::to_string(workers));
     overrides.push_back("Experiment.name=s" + std::to_string(task.seed));
@@ -299,9 +342,10 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
 
     PreparedRun prepared = prepare_run(io::load_settings(plan.base, overrides));
     fs::remove(dir / "failed.txt");
-    if (!resume) {   // a fresh start: clear what a run killed before its first checkpoint left
+    if (!resume)   // a fresh start: clear what a run killed before its first checkpoint left
         for (const auto& e : fs::directory_iterator(dir))
             if (e.path().filename() != ".lock") fs::remove_all(e.path());
+    {   // The settings it runs with now (an extended task: the raised budget).
         io::Settings stored = prepared.settings;
         stored.control.population_load_from.clear();
         io::xml::write_file_atomically(dir / "settings.xml", io::write_settings(stored));

@@ -506,5 +506,58 @@ TEST(Sweep, ConfigSelectsOneConfigurationsRuns) {
     fs::remove_all(dir);
 }
 
+// A finished study whose budget is raised goes on: each run continues from its
+// checkpoint to the bytes of a study that had the larger budget from the start;
+// added seeds run alone; a shrunk budget or another key is still refused. With
+// and without a run store (where the shorter runs stay for the studies using them).
+void raised_budget_continues(bool store) {
+    const auto dir = temp_dir(store ? "sweep-extend-store" : "sweep-extend");
+    auto text = [&](const std::string& name, const fs::path& study, int generations, int repeats, int tournament = 3) {
+        std::string t = tiny_sweep_text(name, study, 6, generations, 2.0, "", repeats);
+        if (tournament != 3) t.replace(t.find("GP.tournament_size=3"), 20, "GP.tournament_size=" + std::to_string(tournament));
+        if (store) t.replace(t.find("</output>") + 9, 0, "\n  <store>" + (dir / "store").string() + "</store>");
+        return t;
+    };
+    const fs::path study = dir / "study", straight = dir / "straight";
+    write_text(dir / "s.xml", text("s", study, 2, 2));
+    ASSERT_EQ(run_command("--quiet sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "log"), 0) << read_text(dir / "log");
+    write_text(dir / "s.xml", text("s", study, 4, 3));   // two more generations, one more seed
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --dry-run", dir / "dry"), 0);
+    EXPECT_NE(read_text(dir / "dry").find("extend"), std::string::npos) << read_text(dir / "dry");
+    ASSERT_EQ(run_command("--quiet sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "log"), 0) << read_text(dir / "log");
+    write_text(dir / "t.xml", text("t", straight, 4, 3));
+    ASSERT_EQ(run_command("--quiet sweep " + (dir / "t.xml").string() + " --jobs 2", dir / "log"), 0) << read_text(dir / "log");
+    for (int seed = 1; seed <= 3; ++seed) {
+        const std::string run = "runs/base/s" + std::to_string(seed);
+        ASSERT_TRUE(fs::exists(study / run / "population.xml")) << run;
+        EXPECT_EQ(file_hash(study / run / "population.xml"), file_hash(straight / run / "population.xml")) << run;
+        EXPECT_EQ(file_hash(study / run / "populations/gen-0003.xml"), file_hash(straight / run / "populations/gen-0003.xml"));
+    }
+    // Continued, not run again: seeds 1 and 2 went on from their checkpoints; seed 3 is new.
+    for (int seed = 1; seed <= 3; ++seed) {
+        const std::string log = read_text(study / ("runs/base/s" + std::to_string(seed)) / "run.log");
+        EXPECT_EQ(log.find("resumed in place from population.xml") != std::string::npos, seed < 3) << seed << ":\n" << log;
+    }
+    const std::string index = read_text(study / "index.csv");
+    EXPECT_EQ(std::count(index.begin(), index.end(), '\n'), 4) << index;
+    if (store) {   // the two-generation runs are still in the store, beside their continuations
+        std::size_t runs = 0;
+        for (const auto& e : fs::directory_iterator(dir / "store")) runs += fs::exists(e.path() / "settings.xml");
+        EXPECT_EQ(runs, 5u);
+    } else {
+        for (const auto& [generations, tournament, why] :
+             {std::tuple{3, 3, "Control.maximumIterations: ran '4', the sweep asks '3'"},
+              std::tuple{6, 5, "GP.tournament_size: ran '3', the sweep asks '5'"}}) {
+            write_text(dir / "s.xml", text("s", study, generations, 3, tournament));
+            EXPECT_EQ(run_command("--quiet sweep " + (dir / "s.xml").string(), dir / "no"), 2);
+            EXPECT_NE(read_text(dir / "no").find(why), std::string::npos) << read_text(dir / "no");
+        }
+    }
+    fs::remove_all(dir);
+}
+
+TEST(Sweep, ARaisedBudgetContinuesEachRunExactly) { raised_budget_continues(false); }
+TEST(Sweep, ARaisedBudgetContinuesStoredRunsExactly) { raised_budget_continues(true); }
+
 } // namespace
 } // namespace cic

@@ -21,4 +21,14 @@ io::Settings result_settings(io::Settings s);
 std::vector<std::string> settings_differences(const io::Settings& ran, const io::Settings& asked,
                                               std::string_view asker);
 
+// Whether a difference (as settings_differences writes it) is of a key that
+// bounds a run's length: Control.maximumIterations, Control.minimumFitness or
+// Gait.evaluations.
+bool is_budget_difference(const std::string& difference);
+
+// Whether `asked` continues the run `ran` made: they differ (past the keys that
+// change no result) in the budget only, and no budget shrinks. A run so asked
+// goes on from its checkpoint (`cic resume`, an extended sweep).
+bool extends(const io::Settings& ran, const io::Settings& asked);
+
 } // namespace cic::app

@@ -62,7 +62,9 @@ SweepPlan read_sweep_file(const std::filesystem::path& file, const std::filesyst
 // run folder (not a store link) holds a run of other settings than the sweep
 // now asks of the task (an edited sweep or base file); never run over, never
 // counted as done.
-enum class TaskStatus { Pending, Running, Done, Interrupted, Failed, Mismatched };
+// Extend: a run of the study whose budget the sweep has since raised (only the
+// budget differs, and it grows): the task goes on from its checkpoint.
+enum class TaskStatus { Pending, Running, Done, Interrupted, Failed, Mismatched, Extend };
 std::string to_string(TaskStatus s);
 
 struct TaskState {
