@@ -33,13 +33,17 @@ void add_assess_command(Command& app, CommandContext& ctx) {
     cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "assess", [&] {
             std::ostringstream csv;
-            csv << "input,fitness,dominant_hz,mean_height,min_height,final_up,flipped,shaking,raw_fitness\n";
+            csv << "input,fitness,dominant_hz,mean_height,min_height,final_up,flipped,shaking,raw_fitness,distance,"
+                   "elevation,verdict,duty_factors\n";
             for (const std::string& input : opts->inputs) {
                 const auto items = replay(input, "best", 1, 10.0, true);
                 const GaitAssessment a = assess_gait(items.at(0), opts->shaking_above);
-                csv << fmt::format("{},{:.17g},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{:.17g}\n", input, a.fitness,
-                                   a.dominant_hz, a.mean_height, a.min_height, a.final_up, a.flipped ? 1 : 0,
-                                   a.shaking ? 1 : 0, a.raw_fitness);
+                std::string duty;   // "foot:fraction" per foot, space-separated
+                for (std::size_t f = 0; f < a.foot_names.size(); ++f)
+                    duty += fmt::format("{}{}:{:.3f}", f ? " " : "", a.foot_names[f], a.duty_factors[f]);
+                csv << fmt::format("{},{:.17g},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{:.17g},{:.4f},{:.4f},{},{}\n", input,
+                                   a.fitness, a.dominant_hz, a.mean_height, a.min_height, a.final_up, a.flipped ? 1 : 0,
+                                   a.shaking ? 1 : 0, a.raw_fitness, a.distance, a.elevation, a.verdict, duty);
             }
             if (opts->out.empty()) {
                 std::cout << csv.str();

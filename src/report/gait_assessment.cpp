@@ -40,6 +40,16 @@ GaitAssessment assess_gait(const ReplayItem& item, double shaking_above_hz) {
     a.final_up = sim::rotate(frames.back()[c].quat, local_up)[2];
     a.flipped = a.final_up < 0;
     a.shaking = a.dominant_hz > shaking_above_hz;
+    a.distance = item.distance;
+    a.elevation = item.elevation;
+    a.foot_names = item.foot_names;
+    a.duty_factors = item.duty_factors;
+    const bool stepping = a.dominant_hz >= kSteppingAboveHz;
+    a.verdict = a.flipped                      ? "flipped"
+                : a.shaking                    ? "shaking"
+                : stepping                     ? "walking"
+                : a.elevation >= a.distance    ? "standing up"
+                                               : "sliding";
     return a;
 }
 

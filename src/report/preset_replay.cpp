@@ -96,6 +96,7 @@ ReplayItem replay_preset(const PresetReplay& preset, double fps, bool trace) {
     sim::EvalOptions options;
     options.record_fps = fps;
     options.record_trace = trace;
+    options.record_ground = trace;
     sim::EvalResult result = sim::evaluate(robot, recorder, preset.sim, options);
     if (result.failed) throw std::runtime_error("simulation failed: " + result.failure);
 
@@ -112,6 +113,8 @@ ReplayItem replay_preset(const PresetReplay& preset, double fps, bool trace) {
         const std::string& name = robot.modules[static_cast<std::size_t>(m)].name;
         item.joint_names.push_back(name.empty() ? fmt::format("m{}", m) : name);
     }
+    item.raw_fitness = result.fitness;
+    fill_walk(item, robot, result);
     return item;
 }
 

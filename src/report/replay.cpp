@@ -4,6 +4,7 @@
 #include "cic/io/experiment_types.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -76,6 +77,7 @@ std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& setti
     sim::EvalOptions opt;
     opt.record_fps = fps;
     opt.record_trace = trace;
+    opt.record_ground = trace;
     sim::EvalResult r = sim::evaluate(setup.robot, *controller, setup.sim, opt);
     ReplayItem item;
     item.label = fmt::format("generation {}, best {} gait", g.generation, g.optimizer);
@@ -89,10 +91,26 @@ std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& setti
     item.raw_fitness = r.fitness;   // no penalty in the gait experiment
     item.centre_body = centre_body_of(setup.robot);
     item.joint_names = joint_names_of(setup.robot);
+    fill_walk(item, setup.robot, r);
     return {std::move(item)};
 }
 
 } // namespace
+
+// Eq. 7.1's terms and, when the ground was recorded, each foot's duty factor.
+void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalResult& r) {
+    const std::size_t p = robot.preferred == sim::Axis::X ? 0 : 1;
+    item.distance = std::fabs(r.end[p] - r.start[p]);
+    item.elevation = r.end[2] - r.start[2];
+    if (r.module_ground_steps.empty()) return;
+    for (int m : sim::branch_ends(robot)) {
+        const std::string& name = robot.modules[static_cast<std::size_t>(m)].name;
+        item.foot_names.push_back(name.empty() ? "m" + std::to_string(m) : name);
+        item.duty_factors.push_back(r.ground_steps > 0 ? static_cast<double>(r.module_ground_steps[static_cast<std::size_t>(m)]) /
+                                                             static_cast<double>(r.ground_steps)
+                                                       : 0.0);
+    }
+}
 
 std::vector<ReplayItem> replay(const std::string& source, const std::string& individual, int count, double fps,
                                bool trace) {
@@ -133,6 +151,7 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
         sim::EvalOptions opt;
         opt.record_fps = fps;
         opt.record_trace = trace;
+        opt.record_ground = trace;
         const hypergp::Outcome o = hypergp::run(model, ind->genotype, opt, trace);
         ReplayItem item;
         item.label = fmt::format("generation {}, individual {}", pop.population.generation, ind->id);
@@ -151,6 +170,7 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
         item.raw_fitness = o.distance_fitness;
         item.centre_body = centre_body;
         item.joint_names = joint_names;
+        fill_walk(item, model.robot, o.result);
         items.push_back(std::move(item));
     }
     return items;

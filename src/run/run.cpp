@@ -10,6 +10,7 @@
 #include "cic/io/population_xml.hpp"
 #include "cic/io/stats_csv.hpp"
 #include "cic/io/xml.hpp"
+#include "cic/report/replay.hpp"
 #include "cic/io/gait_xml.hpp"
 #include "cic/io/experiment_types.hpp"
 #include "cic/experiments/experiment.hpp"
@@ -180,7 +181,16 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
                                    experiment->evaluator(), start.state, std::move(start.population),
                                    observer.hooks());
     if (const std::string note = experiment->session_note(); !note.empty()) console.log(note);
-    console.summary(summary_of(result, *experiment, s));
+    std::string summary = summary_of(result, *experiment, s);
+    if (io::family_of(s) == io::ExperimentFamily::HyperGP && result.reason != gp::StopReason::Interrupted) {
+        try {   // the best of the final checkpoint, replayed: what its score is made of
+            const auto best = replay(opt.run_dir.string(), "best", 1, 0.0, false);
+            summary += detail::eq71_line(best.front().distance, best.front().elevation);
+        } catch (const std::exception& e) {
+            console.say(std::string("note: the best's replay failed: ") + e.what());
+        }
+    }
+    console.summary(summary);
     if (result.reason == gp::StopReason::Interrupted) return console.interrupted();
     finish_run(s, opt, console);
     return 0;

@@ -2,12 +2,15 @@
 // (experiments/gait/), one generation at a time, with the same run folder,
 // statistics, checkpoints, progress and stop signals as the GP experiments.
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "cic/run/progress.hpp"
 #include "cic/io/gait_xml.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/stats_csv.hpp"
+#include "cic/sim/evaluate.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/experiments/gait/restarts.hpp"
 #include "cic/experiments/gait/setup.hpp"
@@ -168,9 +171,17 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
         fmt::format("stopped: {} at generation {}\nbest: fitness {:.17g} ({}; robot {})\nevaluations: {}\nbest gait: {}\n",
                     reason, search.generation(), best.fitness, gait::to_string(setup.optimizer), setup.robot.name,
                     search.evaluations(), setup.describe(best.x));
-    console.summary(ipop ? summary + fmt::format("restarts: {} (population {})\n", search.restarts(),
-                                                 search.population_size())
-                         : summary);
+    std::string walk;
+    if (reason != "interrupted") {   // the champion again: what its score is made of
+        const auto controller = setup.controller(best.x);
+        const sim::EvalResult r = sim::evaluate(setup.robot, *controller, setup.sim);
+        const std::size_t p = setup.robot.preferred == sim::Axis::X ? 0 : 1;
+        walk = eq71_line(std::fabs(r.end[p] - r.start[p]), r.end[2] - r.start[2]);
+    }
+    console.summary((ipop ? summary + fmt::format("restarts: {} (population {})\n", search.restarts(),
+                                                  search.population_size())
+                          : summary) +
+                    walk);
     if (reason == "interrupted") {
         // The checkpoint of the last finished generation is on disk unless the interval skipped it.
         write_checkpoint(opt.run_dir, search.generation(), io::to_xml(checkpoint_of(search, s)));

@@ -146,6 +146,10 @@ void point_latest_at(const std::filesystem::path& checkpoint, const std::filesys
 // What the thesis did when a run ended (Appendix B): plots (useMatlabPlot, now
 // gnuplot), POV-Ray scenes of the best (generatePovrayFiles) and showing the best
 // (isAutonomousExperiment = 0). A failure here is reported, never loses the run.
+std::string eq71_line(double distance, double elevation) {
+    return fmt::format("best, eq. 7.1: distance {:.4f} m + elevation {:.4f} m\n", distance, elevation);
+}
+
 void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& console) {
     auto say = [&](const std::string& line) { console.say(line); };
     // Robot experiments (HyperGP, gait) have a best gait to export and show.

@@ -82,6 +82,9 @@ void write_checkpoint(const std::filesystem::path& run_dir, int generation, cons
 // (generatePovrayFiles) and showing the best (isAutonomousExperiment = 0).
 void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& console);
 
+// The summary line that splits the best's score into eq. 7.1's terms.
+std::string eq71_line(double distance, double elevation);
+
 // The gait experiment's loop (run_gait.cpp); run_experiment hands over to it.
 int run_gait(PreparedRun prepared, const RunOptions& opt);
 

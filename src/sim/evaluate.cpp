@@ -46,6 +46,10 @@ EvalResult evaluate(const RobotSpec& robot, Controller& controller, const SimCon
         r.recording->body_count = layout.body_count;
         r.recording->frame_dt = 1.0 / options.record_fps;
     }
+    if (options.record_ground) {
+        world.track_ground_geoms(true);
+        r.module_ground_steps.assign(robot.modules.size(), 0);
+    }
     long next_frame = 0;
     auto fail = [&](std::string why, double t) {
         r.failed = true;
@@ -88,6 +92,14 @@ EvalResult evaluate(const RobotSpec& robot, Controller& controller, const SimCon
             r.max_ground_contacts = std::max(r.max_ground_contacts, world.last_ground_contacts());
             r.max_self_contacts = std::max(r.max_self_contacts, world.last_self_contacts());
             r.max_ground_depth = std::max(r.max_ground_depth, world.last_ground_depth());
+            if (options.record_ground && k >= k_start) {
+                ++r.ground_steps;
+                const auto& touched = world.last_ground_geoms();
+                std::vector<char> module_touched(robot.modules.size(), 0);
+                for (std::size_t g = 0; g < touched.size(); ++g)
+                    if (touched[g]) module_touched[static_cast<std::size_t>(layout.geoms[g].module)] = 1;
+                for (std::size_t m = 0; m < module_touched.size(); ++m) r.module_ground_steps[m] += module_touched[m];
+            }
             double fastest = 0.0;
             const std::string why = world.check(cfg.blowup_bound, cfg.max_body_speed, fastest);
             if (std::isfinite(fastest)) r.max_body_speed = std::max(r.max_body_speed, fastest);
@@ -101,6 +113,22 @@ EvalResult evaluate(const RobotSpec& robot, Controller& controller, const SimCon
     r.fitness = std::fabs(r.end[p] - r.start[p]) + (r.end[2] - r.start[2]);
     if (!std::isfinite(r.fitness)) return fail("non-finite fitness", cfg.sample_to);
     return r;
+}
+
+std::vector<int> branch_ends(const RobotSpec& robot) {
+    const std::size_t n = robot.modules.size();
+    std::vector<char> carries(n, 0);   // some module attaches to it
+    for (std::size_t m = 0; m < n; ++m) {
+        const Module& mod = robot.modules[m];
+        if (mod.attach == Dir::None) continue;
+        const Cell next = neighbour(mod.cell, mod.attach);
+        for (std::size_t o = 0; o < n; ++o)
+            if (robot.modules[o].cell == next) carries[o] = 1;
+    }
+    std::vector<int> ends;
+    for (std::size_t m = 0; m < n; ++m)
+        if (!carries[m] && static_cast<int>(m) != robot.centre) ends.push_back(static_cast<int>(m));
+    return ends;
 }
 
 } // namespace cic::sim

@@ -2,6 +2,9 @@
 #include "world.hpp"
 
 #include <algorithm>
+#include <cstdint>
+
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
@@ -60,6 +63,7 @@ World::World(const BodyLayout& layout, const SimConfig& cfg) : layout_(layout) {
 
             dGeomID geom = dCreateBox(robot_space_, g.size[0], g.size[1], g.size[2]);
             geoms_.push_back(geom);
+            dGeomSetData(geom, reinterpret_cast<void*>(geoms_.size()));   // layout index + 1
             dGeomSetBody(geom, bodies_[g.body]);
             dGeomSetOffsetPosition(geom, g.centre[0] - c[0], g.centre[1] - c[1], g.centre[2] - c[2]);
         }
@@ -123,6 +127,16 @@ void World::ground_callback(void* data, dGeomID a, dGeomID b) {
     for (int i = 0; i < n; ++i)
         self->ground_depth_ = std::max(self->ground_depth_, self->scratch_[static_cast<std::size_t>(i)].geom.depth);
     self->ground_contacts_ += n;
+    if (self->track_ground_geoms_ && n > 0) {
+        const dGeomID robot = a == self->ground_ ? b : a;
+        const auto index = reinterpret_cast<std::uintptr_t>(dGeomGetData(robot));
+        if (index > 0 && index <= self->ground_geoms_.size()) self->ground_geoms_[index - 1] = 1;
+    }
+}
+
+void World::track_ground_geoms(bool on) {
+    track_ground_geoms_ = on;
+    ground_geoms_.assign(on ? geoms_.size() : 0, 0);
 }
 
 // A pair of robot geoms whose bounding boxes overlap. ODE's space never offers
@@ -138,6 +152,7 @@ void World::step(double dt) {
     ground_contacts_ = 0;
     self_contacts_ = 0;
     ground_depth_ = 0.0;
+    if (track_ground_geoms_) std::fill(ground_geoms_.begin(), ground_geoms_.end(), 0);
     // Ground contacts first, then the robot against itself: a fixed order, so
     // QuickStep sees the same constraint rows in every run.
     dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::ground_callback);

@@ -43,6 +43,11 @@ public:
     int last_ground_contacts() const { return ground_contacts_; }
     int last_self_contacts() const { return self_contacts_; }
     double last_ground_depth() const { return ground_depth_; }   // deepest ground contact, m
+    // Which layout geoms touched the ground in the last step (1 = touched), kept
+    // only once track_ground_geoms(true) asked for it: a replay's duty factors,
+    // never the plain evaluation's cost.
+    void track_ground_geoms(bool on);
+    const std::vector<char>& last_ground_geoms() const { return ground_geoms_; }
 
 private:
     void release();
@@ -57,6 +62,8 @@ private:
     int ground_contacts_ = 0;
     int self_contacts_ = 0;
     double ground_depth_ = 0.0;
+    bool track_ground_geoms_ = false;
+    std::vector<char> ground_geoms_;   // per layout geom, when tracked
 
     dThreadingImplementationID threading_ = nullptr;
     dWorldID world_ = nullptr;

@@ -3,6 +3,8 @@
 // its runs, and a checkpoint of another kind refused before a folder exists.
 #include <gtest/gtest.h>
 
+#include <regex>
+
 #include <chrono>
 #include <csignal>
 #include <thread>
@@ -201,6 +203,18 @@ TEST(GaitRun, ReplayCommandsWorkOnItsRuns) {
     const std::string summary = read_text(r.run / "summary.txt");
     const std::string stored = summary.substr(summary.find("fitness ") + 8, 10);
     EXPECT_NE(read_text(dir / "assess.log").find("," + stored), std::string::npos) << read_text(dir / "assess.log");
+    // Eq. 7.1 split into its terms, one verdict, and a duty factor per foot (four legs).
+    const std::string assess = read_text(dir / "assess.log");
+    EXPECT_NE(assess.find("raw_fitness,distance,elevation,verdict,duty_factors\n"), std::string::npos) << assess;
+    const std::string foot = "leg[-+]x[-+]y\\.[0-9]:[01]\\.[0-9]{3}";   // the end module of each of the four legs
+    EXPECT_TRUE(std::regex_search(
+        assess, std::regex(",(walking|standing up|sliding|shaking|flipped)," + foot + " " + foot + " " + foot + " " + foot + "\n")))
+        << assess;
+    // summary.txt splits the champion's score the same way.
+    const std::regex terms("\nbest, eq. 7.1: distance ([-0-9.]+) m \\+ elevation ([-0-9.]+) m\n");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(summary, m, terms)) << summary;
+    EXPECT_NEAR(std::stod(m[1]) + std::stod(m[2]), std::stod(stored), 1e-3);
     ASSERT_EQ(run_command("render " + r.run.string() + " --fps 2 --out " + (dir / "frames").string(), dir / "r.log"), 0)
         << read_text(dir / "r.log");
     EXPECT_TRUE(fs::exists(dir / "frames" / "frame_00000.pov"));

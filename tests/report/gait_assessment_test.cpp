@@ -47,9 +47,36 @@ TEST(GaitAssessment, UpsideDownAtTheEndIsFlipped) {
     const GaitAssessment a = assess_gait(item);
     EXPECT_NEAR(a.final_up, -1.0, 1e-12);
     EXPECT_TRUE(a.flipped);
+    EXPECT_EQ(a.verdict, "flipped");
     item.recording.frames.back().front().quat = {0.86602540378443865, 0.5, 0, 0};   // 60 degrees: tilted, not flipped
     EXPECT_NEAR(assess_gait(item).final_up, 0.5, 1e-12);
     EXPECT_FALSE(assess_gait(item).flipped);
+}
+
+// One verdict per gait, eq. 7.1 split into its terms, and a duty factor per foot.
+TEST(GaitAssessment, EachGaitGetsAVerdictItsTermsAndItsFeetsDutyFactors) {
+    const GaitAssessment slow = assess_gait(sine_replay("sine:0.6,0.5"));
+    EXPECT_EQ(slow.verdict, "walking");
+    EXPECT_DOUBLE_EQ(slow.distance + slow.elevation, slow.raw_fitness);
+    ASSERT_EQ(slow.foot_names.size(), 4u);   // R1's four feet, the ends of its legs
+    EXPECT_EQ(slow.foot_names.front(), "leg+x-y.2");
+    double touched = 0;
+    for (double d : slow.duty_factors) {
+        EXPECT_GE(d, 0.0);
+        EXPECT_LE(d, 1.0);
+        touched += d;
+    }
+    EXPECT_GT(touched, 0.5) << "a walking robot stands on its feet";
+    EXPECT_EQ(assess_gait(sine_replay("sine:0.6,8")).verdict, "shaking");
+    const GaitAssessment held = assess_gait(sine_replay("constant:0.3"));   // no stepping
+    EXPECT_EQ(held.verdict, held.elevation >= held.distance ? "standing up" : "sliding");
+    // A held pose that lifts the body scores by elevation alone: standing up, not "shaking 0".
+    ReplayItem stand = sine_replay("constant:0.3");
+    stand.distance = 0.1;
+    stand.elevation = 0.6;
+    EXPECT_EQ(assess_gait(stand).verdict, "standing up");
+    stand.distance = 2.0;
+    EXPECT_EQ(assess_gait(stand).verdict, "sliding");
 }
 
 TEST(GaitAssessment, BadArgumentsThrow) {

@@ -63,6 +63,35 @@ TEST(Evaluate, TunedSineGaitMovesR1Forward) {
     EXPECT_GT(r.fitness, 1.5);
 }
 
+// Each foot's ground contacts, counted only when asked, change nothing the
+// plain evaluation computes: the fitness has the same bits.
+TEST(Evaluate, GroundContactsPerModuleAreCountedOnlyWhenAskedAndChangeNothing) {
+    const RobotSpec robot = preset(1, true);
+    const SimConfig cfg = short_config(4.0);
+    SineController a(r1_gait()), b(r1_gait());
+    const EvalResult plain = evaluate(robot, a, cfg);
+    EXPECT_TRUE(plain.module_ground_steps.empty());
+    EXPECT_EQ(plain.ground_steps, 0);
+    EvalOptions opt;
+    opt.record_ground = true;
+    const EvalResult counted = evaluate(robot, b, cfg, opt);
+    EXPECT_EQ(bits(counted.fitness), bits(plain.fitness));
+    ASSERT_EQ(counted.module_ground_steps.size(), robot.modules.size());
+    // Physics steps from the delayed start (1 s) to the end (4 s).
+    EXPECT_EQ(counted.ground_steps, std::lround(3.0 / cfg.sample_step) * cfg.step_divider);
+    const std::vector<int> feet = branch_ends(robot);
+    ASSERT_EQ(feet.size(), 6u);   // the six legs' ends
+    long on_ground = 0;
+    for (int f : feet) {
+        EXPECT_EQ(robot.modules[static_cast<std::size_t>(f)].name.substr(robot.modules[static_cast<std::size_t>(f)].name.size() - 2), ".2");
+        EXPECT_LE(counted.module_ground_steps[static_cast<std::size_t>(f)], counted.ground_steps);
+        on_ground += counted.module_ground_steps[static_cast<std::size_t>(f)];
+    }
+    EXPECT_GT(on_ground, 0) << "a walking robot's feet touch the ground";
+    EXPECT_EQ(counted.module_ground_steps[static_cast<std::size_t>(robot.centre)] > counted.ground_steps / 2, false)
+        << "the torso is carried, not dragged";
+}
+
 TEST(Evaluate, MotorFollowsTheCommandWithTheThesisGain) {
     // A held command of 0.5 rad: with gain -1 the joints approach it.
     ConstantController hold(0.5);

@@ -9,6 +9,7 @@
 //     up in the first frame points down (world z < 0) in the last;
 // and marks the gait as shaking when its dominant frequency is above a bound.
 #include <string>
+#include <vector>
 
 #include "cic/report/replay.hpp"
 
@@ -26,7 +27,18 @@ struct GaitAssessment {
     double final_up = 1;             // world z of the body's initial up axis in the last frame
     bool flipped = false;            // final_up < 0
     bool shaking = false;            // dominant_hz > shaking_above_hz
+    double distance = 0;             // eq. 7.1's walk along the preferred axis, m
+    double elevation = 0;            // eq. 7.1's elevation gained, m
+    // One word for the gait, the first that holds: flipped; shaking; standing
+    // up (no cyclic stepping, the score mostly elevation); sliding (no cyclic
+    // stepping, the score mostly distance); walking.
+    std::string verdict;
+    std::vector<std::string> foot_names;   // the robot's branch ends (feet)
+    std::vector<double> duty_factors;      // per foot: the fraction of time it touched the ground
 };
+
+// Below this dominant command frequency a gait does not step cyclically.
+inline constexpr double kSteppingAboveHz = 0.2;
 
 // Throws std::invalid_argument when the item has no trace or no frames, or
 // shaking_above_hz <= 0.

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cic/sim/evaluate.hpp"
 #include "cic/sim/recording.hpp"
 
 namespace cic::app {
@@ -22,7 +23,17 @@ struct ReplayItem {
     double raw_fitness = 0.0;                        // eq. 7.1 alone: what every method is compared on
     int centre_body = 0;                             // body of the robot's centre module
     std::vector<std::string> joint_names;            // actuated joints in controller order; empty = "j0", "j1", ...
+    // Eq. 7.1's two terms, m: the walk along the preferred axis and the elevation gained.
+    double distance = 0.0, elevation = 0.0;
+    // With trace: each branch end (sim::branch_ends: the feet) and the fraction
+    // of the time from the delayed start on that it touched the ground.
+    std::vector<std::string> foot_names;
+    std::vector<double> duty_factors;
 };
+
+// Sets the item's distance and elevation from the evaluation, and with
+// recorded ground contacts (EvalOptions::record_ground) its feet's duty factors.
+void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalResult& result);
 
 // Individuals from a run folder (its latest population file) or a population
 // XML: `individual` is "best" (then the best `count`, best first) or an id.

@@ -16,6 +16,7 @@ namespace cic::sim {
 struct EvalOptions {
     double record_fps = 0.0;        // > 0: record frames at this rate
     bool record_trace = false;      // record a TraceRow per control step
+    bool record_ground = false;     // count, per module, the physics steps it touches the ground
 };
 
 struct EvalResult {
@@ -34,7 +35,16 @@ struct EvalResult {
     double max_body_speed = 0.0;    // fastest body at the end of any physics step, m/s
     std::optional<Recording> recording;
     std::vector<TraceRow> trace;
+    // With record_ground: per module, the physics steps from the delayed start
+    // on in which any of its parts touched the ground, out of `ground_steps`.
+    std::vector<long> module_ground_steps;
+    long ground_steps = 0;
 };
+
+// The end modules of the robot's branches (modules no other module attaches
+// to, the centre excepted), in module order: a legged robot's feet, a snake's
+// two ends. The duty factor of each is what its ground steps are counted for.
+std::vector<int> branch_ends(const RobotSpec& robot);
 
 // Deterministic: resets ODE's global random state (dRandSetSeed) before
 // building the world, and the world uses its own self-threaded implementation.
