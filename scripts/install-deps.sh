@@ -31,6 +31,8 @@ MORE_PACKAGES=(
   clang libclang-rt-14-dev llvm
   # DEAP comparison (scripts/compare-deap.sh)
   python3 python3-deap
+  # docs/analysis.md: a study read into pandas, a figure redrawn with matplotlib
+  python3-pandas python3-matplotlib
 )
 
 PACKAGES=("${RUN_PACKAGES[@]}")

@@ -1,0 +1,28 @@
+#pragma once
+// `cic export RUN|STUDY...`: every individual of every saved generation as one
+// CSV row, for pandas, R or a spreadsheet (docs/analysis.md):
+//   run,config,seed,generation,id,fitness,distance,elevation,depth,size,failed,tree
+// A study (a folder with index.csv) gives each of its runs, with the config and
+// seed the index names. distance and elevation are eq. 7.1's terms, from a
+// replay of each distinct genotype when asked (`terms`: one simulation each);
+// empty otherwise and for symbolic regression. A gait run's individuals are
+// its candidates: id is their place in the generation, tree their parameters.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace cic::app {
+
+struct ExportRequest {
+    std::vector<std::filesystem::path> inputs;   // run folders or study folders
+    bool terms = false;                          // replay for distance and elevation
+};
+
+inline constexpr const char* kExportHeader =
+    "run,config,seed,generation,id,fitness,distance,elevation,depth,size,failed,tree\n";
+
+// The CSV text, header first. Throws cic::InputError naming the input for a
+// folder that is neither a run (settings.xml and populations/) nor a study.
+std::string export_individuals(const ExportRequest& request);
+
+} // namespace cic::app

@@ -1,0 +1,124 @@
+// Every individual of every saved generation as CSV (export.hpp).
+#include "cic/report/export.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "cic/core/error.hpp"
+#include "cic/experiments/gait/setup.hpp"
+#include "cic/experiments/hypergp/model.hpp"
+#include "cic/io/experiment_types.hpp"
+#include "cic/io/gait_xml.hpp"
+#include "cic/io/population_xml.hpp"
+#include "cic/io/settings_io.hpp"
+#include "cic/report/plot.hpp"
+#include "cic/sim/evaluate.hpp"
+
+namespace cic::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string cell(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string out = "\"";
+    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string number(double v) { return fmt::format("{}", v); }
+
+// Eq. 7.1's terms of one evaluation.
+std::pair<double, double> terms_of(const sim::RobotSpec& robot, const sim::EvalResult& r) {
+    const std::size_t p = robot.preferred == sim::Axis::X ? 0 : 1;
+    return {std::fabs(r.end[p] - r.start[p]), r.end[2] - r.start[2]};
+}
+
+// A run's saved generations, oldest first.
+std::vector<fs::path> saved_generations(const fs::path& run) {
+    std::vector<fs::path> files;
+    if (fs::is_directory(run / "populations"))
+        for (const auto& e : fs::directory_iterator(run / "populations"))
+            if (e.path().extension() == ".xml" && e.path().filename().string().rfind("gen-", 0) == 0)
+                files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+void export_run(const fs::path& run, const std::string& label, const std::string& config, const std::string& seed,
+                bool terms, std::string& csv) {
+    if (!fs::is_regular_file(run / "settings.xml"))
+        throw InputError("not a run folder (no settings.xml) nor a study (no index.csv): " + run.string());
+    const io::Settings s = io::read_settings(run / "settings.xml");
+    const std::string prefix = cell(label) + "," + cell(config) + "," + seed + ",";
+    const io::ExperimentFamily family = io::family_of(s);
+    std::map<std::string, std::pair<double, double>> seen;   // genotype -> terms, once per run
+
+    if (family == io::ExperimentFamily::Gait) {
+        std::optional<gait::Setup> setup;
+        if (terms) setup = gait::Setup::from_settings(s);
+        for (const fs::path& file : saved_generations(run)) {
+            const io::GaitFile g = io::load_gait(file);
+            for (std::size_t i = 0; i < g.population.size(); ++i) {
+                const io::GaitPoint& point = g.population[i];
+                std::string params;
+                for (double x : point.x) params += (params.empty() ? "" : " ") + number(x);
+                std::string dist, elev;
+                if (setup) {
+                    auto [it, fresh] = seen.try_emplace(params);
+                    if (fresh) {
+                        const auto controller = setup->controller(point.x);
+                        it->second = terms_of(setup->robot, sim::evaluate(setup->robot, *controller, setup->sim));
+                    }
+                    dist = number(it->second.first), elev = number(it->second.second);
+                }
+                csv += prefix + fmt::format("{},{},{},{},{},,,0,{}\n", g.generation, i, number(point.fitness), dist,
+                                            elev, cell(params));
+            }
+        }
+        return;
+    }
+    std::optional<hypergp::Model> model;
+    if (terms && family == io::ExperimentFamily::HyperGP) model = hypergp::Model::from_settings(s);
+    for (const fs::path& file : saved_generations(run)) {
+        const io::PopulationFile pop = io::load_population(file);
+        for (const auto& ind : pop.population) {
+            std::string trees;
+            for (const auto& t : ind->genotype) trees += (trees.empty() ? "" : " | ") + t.to_string();
+            std::string dist, elev;
+            if (model) {
+                auto [it, fresh] = seen.try_emplace(trees);
+                if (fresh) it->second = terms_of(model->robot, hypergp::run(*model, ind->genotype).result);
+                dist = number(it->second.first), elev = number(it->second.second);
+            }
+            csv += prefix + fmt::format("{},{},{},{},{},{},{},{},{}\n", pop.population.generation, ind->id,
+                                        number(ind->fitness), dist, elev, ind->depth(s.gp.forest_depth), ind->size(),
+                                        ind->failed ? 1 : 0, cell(trees));
+        }
+    }
+}
+
+} // namespace
+
+std::string export_individuals(const ExportRequest& request) {
+    std::string csv = kExportHeader;
+    for (const fs::path& input : request.inputs) {
+        if (is_study_folder(input)) {
+            const StudyIndex index = read_study_index(input);
+            for (const StudyRun& r : index.runs)
+                if (fs::exists(index.run_path(r) / "settings.xml"))
+                    export_run(index.run_path(r), (input / r.run_dir).string(), r.config, r.seed, request.terms, csv);
+        } else {
+            const io::Settings s = fs::is_regular_file(input / "settings.xml") ? io::read_settings(input / "settings.xml")
+                                                                               : io::Settings{};
+            export_run(input, input.string(), s.experiment.name, std::to_string(s.experiment.seed), request.terms, csv);
+        }
+    }
+    return csv;
+}
+
+} // namespace cic::app
