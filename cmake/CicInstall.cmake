@@ -77,6 +77,10 @@ add_custom_target(cic_install_files ALL
 
 # --- install rules ------------------------------------------------------------
 install(TARGETS cic RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# Videos and screenshot strips from an installed cic: the two scripts, beside it.
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/render-video.sh DESTINATION ${CMAKE_INSTALL_BINDIR} RENAME cic-render-video)
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/screenshot-strip.sh DESTINATION ${CMAKE_INSTALL_BINDIR}
+        RENAME cic-screenshot-strip)
 
 file(GLOB _cic_settings CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/settings/*.xml)
 install(FILES ${_cic_settings}

@@ -7,6 +7,7 @@ set -euo pipefail
 usage() { sed -n '2,4p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
 [[ $# -ge 1 ]] || usage
+case $1 in -h|--help) sed -n '2,4p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;; esac
 dir=$1; shift
 width=640 height=480 fps=25 jobs=$(nproc 2>/dev/null || echo 1)
 while [[ $# -gt 0 ]]; do
@@ -34,7 +35,8 @@ echo "render-video.sh: rendering ${#scenes[@]} frames at ${width}x${height} with
 # One povray per frame; -D: no display window; +A: anti-aliasing. Runs inside DIR so the includes resolve.
 export width height
 printf '%s\n' "${scenes[@]##*/}" | (cd "$dir" && xargs -P "$jobs" -I{} sh -c \
-  'povray +I"$1" +O"${1%.pov}.png" +FN +W"$width" +H"$height" +A0.3 -D -V -GA 2>"${1%.pov}.log" || { cat "${1%.pov}.log" >&2; exit 255; }; rm -f "${1%.pov}.log"' _ {})
+  'povray +I"$1" +O"${1%.pov}.png" +FN +W"$width" +H"$height" +A0.3 -D -V -GA 2>"${1%.pov}.log" || { cat "${1%.pov}.log" >&2; exit 255; }; rm -f "${1%.pov}.log"; printf . >&2' _ {})
+echo >&2   # a dot per frame rendered, above: the progress
 
 ffmpeg -hide_banner -loglevel error -y -framerate "$fps" -i "$dir/frame_%05d.png" \
   -c:v libx264 -pix_fmt yuv420p -vf "pad=ceil(iw/2)*2:ceil(ih/2)*2" "$dir/out.mp4"

@@ -25,7 +25,11 @@ done
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 CIC=${CIC:-}
 if [ -z "$CIC" ]; then
-  if [ -x "$ROOT/build/cic" ]; then CIC="$ROOT/build/cic"; else CIC=$(command -v cic || true); fi
+  # Installed (cic-screenshot-strip beside bin/cic), then the source tree's build, then PATH.
+  HERE_BIN="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+  if [ -x "$HERE_BIN/cic" ]; then CIC="$HERE_BIN/cic"
+  elif [ -x "$ROOT/build/cic" ]; then CIC="$ROOT/build/cic"
+  else CIC=$(command -v cic || true); fi
 fi
 [ -n "$CIC" ] && [ -x "$CIC" ] || { echo "screenshot-strip.sh: no cic binary (set CIC)" >&2; exit 2; }
 INPUT=()

@@ -4,6 +4,7 @@
 
 #include "cic/run/self_path.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <system_error>
 
@@ -17,8 +18,12 @@ std::vector<fs::path> settings_search_folders() {
     std::vector<fs::path> out;
     if (const fs::path exe = self_path(); exe.has_parent_path())
         out.push_back((exe.parent_path() / ".." / "share" / "cic" / "settings").lexically_normal());
-#ifdef CIC_SOURCE_DIR
-    out.push_back(fs::path(CIC_SOURCE_DIR) / "settings");
+#if defined(CIC_SOURCE_DIR) && defined(CIC_BINARY_DIR)
+    // Only a binary still in its build folder looks in the source tree: an
+    // installed one (or a .deb's) never reads files of the machine it was built on.
+    const fs::path exe = self_path(), build = fs::path(CIC_BINARY_DIR);
+    if (!exe.empty() && std::mismatch(build.begin(), build.end(), exe.begin(), exe.end()).first == build.end())
+        out.push_back(fs::path(CIC_SOURCE_DIR) / "settings");
 #endif
     return out;
 }

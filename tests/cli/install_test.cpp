@@ -143,6 +143,26 @@ TEST(Install, InstalledBinaryFindsItsSettingsFromAnyFolder) {
     EXPECT_TRUE(fs::is_regular_file(run / "stats.csv")) << run;
 }
 
+// Videos and strips from an installed cic: the scripts are installed beside it
+// and use the cic next to them, not one of the build tree or PATH.
+TEST(Install, VideoAndStripScriptsWorkFromTheInstalledCic) {
+    const fs::path& p = installed_prefix();
+    for (const char* f : {"bin/cic-render-video", "bin/cic-screenshot-strip"}) {
+        ASSERT_TRUE(fs::is_regular_file(p / f)) << f;
+        EXPECT_EQ(fs::status(p / f).permissions() & fs::perms::owner_exec, fs::perms::owner_exec) << f;
+    }
+    EXPECT_HAS(sh(q(p / "bin/cic-render-video") + " --help").out, "Render the POV-Ray scenes");
+    if (!have("ffmpeg") || (!std::getenv("DISPLAY") && !have("xvfb-run"))) GTEST_SKIP() << "no ffmpeg or no X";
+    const ScratchDir scratch("install-strip");
+    const auto run = cic::testing::run_settings(scratch.path, "tiny", cic::testing::tiny_hypergp_settings(1, 1));
+    ASSERT_EQ(run.rc, 0) << run.log;
+    // PATH without the build folder, no CIC: the installed script must find the installed cic.
+    const Shell strip = sh("env -u CIC PATH=/usr/bin:/bin ASAN_OPTIONS=detect_leaks=0 " + q(p / "bin/cic-screenshot-strip") +
+                           " " + q(run.run) + " " + q(scratch.path / "strip.png") + " --at '0.5 1' --width 120 --height 90");
+    ASSERT_EQ(strip.rc, 0) << strip.out;
+    EXPECT_TRUE(fs::is_regular_file(scratch.path / "strip.png")) << strip.out;
+}
+
 TEST(Install, InstalledBinaryNamesThePlacesItLookedIn) {
     const fs::path& p = installed_prefix();
     const ScratchDir scratch("install-missing");
@@ -151,6 +171,8 @@ TEST(Install, InstalledBinaryNamesThePlacesItLookedIn) {
     EXPECT_EQ(r.rc, 2) << r.out;
     EXPECT_HAS(r.out, "no_such_settings.xml");
     EXPECT_HAS(r.out, (fs::canonical(p) / "share/cic/settings").string());
+    EXPECT_EQ(r.out.find(std::string(CIC_SOURCE_DIR) + "/settings"), std::string::npos)
+        << "an installed cic searched the source tree it was built from:\n" << r.out;
     EXPECT_FALSE(fs::exists(work / "runs"));
 }
 
