@@ -77,13 +77,9 @@ def number(text, where, column):
         fail(f"{where}: column '{column}': '{text}' is not a number")
 
 
-def runs(study):
-    """{config: [run]} of the finished runs, each a dict: score, scored_by_best_ever, evaluations, gait."""
-    index = STUDIES / study / "index.csv"
-    if not index.exists():
-        return None
+def read_gaits(gfile):
+    """{run folder: row} of a `cic assess` CSV; {} when the file is absent."""
     gaits = {}
-    gfile = RESULTS / f"{study}-gaits.csv"
     if gfile.exists():
         with open(gfile, newline="") as f:
             reader = csv.DictReader(f)
@@ -91,6 +87,16 @@ def runs(study):
                 fail(f"{gfile}:1: no column raw_fitness (made by an older cic assess; rerun the summary)")
             for r in reader:
                 gaits[run_of(r["input"])] = r
+    return gaits
+
+
+def runs(study):
+    """{config: [run]} of the finished runs, each a dict: score, scored_by_best_ever, evaluations, gait."""
+    index = STUDIES / study / "index.csv"
+    if not index.exists():
+        return None
+    gfile = RESULTS / f"{study}-gaits.csv"
+    gaits = read_gaits(gfile)
     out = {}
     with open(index, newline="") as f:
         reader = csv.DictReader(f)
@@ -118,19 +124,12 @@ def found_rows(study):
     index = STUDIES / study / "index.csv"
     if not index.exists():
         return []
-    gaits = {}
     # baselines.sh leaves a comparison study's assessments beside its runs (summary/);
     # --results holds those of sittings before it did.
     gfile = STUDIES / study / "summary" / f"{study}-gaits.csv"
     if not gfile.exists():
         gfile = RESULTS / f"{study}-gaits.csv"
-    if gfile.exists():
-        with open(gfile, newline="") as f:
-            reader = csv.DictReader(f)
-            if "raw_fitness" not in (reader.fieldnames or []):
-                fail(f"{gfile}:1: no column raw_fitness (made by an older cic assess; rerun the summary)")
-            for r in reader:
-                gaits[run_of(r["input"])] = r
+    gaits = read_gaits(gfile)
     rows = []
     with open(index, newline="") as f:
         reader = csv.DictReader(f)
