@@ -34,14 +34,10 @@ std::string type_doc() {
     return doc;
 }
 
-// Keeps the Experiment.type row's choices and doc in step with the types.
-void refresh_type_row() {
-    for (auto& k : detail::mutable_settings_table())
-        if (k.section == "Experiment" && k.key == "type") {
-            k.choices.clear();
-            for (const auto& t : types()) k.choices.push_back({t.name});
-            k.doc = type_doc();
-        }
+std::vector<std::string> type_names() {
+    std::vector<std::string> names;
+    for (const auto& t : types()) names.push_back(t.name);
+    return names;
 }
 
 } // namespace
@@ -71,7 +67,7 @@ void register_experiment_type(ExperimentType type) {
                                             "' are both selected by the section <" + type.section + ">");
     }
     types().push_back(std::move(type));
-    refresh_type_row();
+    detail::refresh_open_choice_row("Experiment", "type", type_names(), type_doc());
 }
 
 ExperimentFamily family_of(const Settings& s) {
@@ -97,21 +93,37 @@ bool valid_registered_name(std::string_view n) {
                        [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_'; });
 }
 
-SettingKey experiment_type_row() {
+SettingKey open_choice_row(std::string section, std::string key, const std::vector<std::string>& names,
+                           std::string doc, std::string& (*field)(Settings&), bool (*known)(std::string_view)) {
     SettingKey k{};
-    k.section = "Experiment";
-    k.key = "type";
+    k.section = std::move(section);
+    k.key = std::move(key);
     k.type = ValueType::Enum;
-    for (const auto& t : types()) k.choices.push_back({t.name});
-    k.doc = type_doc();
-    k.get = [](const Settings& s) { return s.experiment.type; };
-    // Checked against the types known when the value is read, registrations included.
-    k.set = [](Settings& s, std::string_view text) {
-        const ExperimentType* t = find_experiment_type(text);
-        if (!t) throw ValueError("not one of the allowed names");
-        s.experiment.type = t->name;
+    for (const auto& n : names) k.choices.push_back({n});
+    k.doc = std::move(doc);
+    k.get = [field](const Settings& s) { return field(const_cast<Settings&>(s)); };
+    // Checked against the names known when the value is read, registrations included.
+    k.set = [field, known](Settings& s, std::string_view text) {
+        if (!known(text)) throw ValueError("not one of the allowed names");
+        field(s) = std::string(text);
     };
     return k;
+}
+
+void refresh_open_choice_row(std::string_view section, std::string_view key, const std::vector<std::string>& names,
+                             const std::string& doc) {
+    for (auto& k : mutable_settings_table())
+        if (k.section == section && k.key == key) {
+            k.choices.clear();
+            for (const auto& n : names) k.choices.push_back({n});
+            k.doc = doc;
+        }
+}
+
+SettingKey experiment_type_row() {
+    return open_choice_row("Experiment", "type", type_names(), type_doc(),
+                           [](Settings& s) -> std::string& { return s.experiment.type; },
+                           [](std::string_view n) { return find_experiment_type(n) != nullptr; });
 }
 
 } // namespace detail

@@ -36,6 +36,14 @@ SettingKey experiment_type_row();
 SettingKey substrate_row();
 // A name a registration may take: 1 to 40 of a-z, 0-9, '-' and '_', starting with a letter.
 bool valid_registered_name(std::string_view name);
+// A key whose value is one of a list that registrations extend (Experiment.type,
+// Neural.substrate): `field` is the member it sets, `known` checks a name
+// against the list when the value is read.
+SettingKey open_choice_row(std::string section, std::string key, const std::vector<std::string>& names,
+                           std::string doc, std::string& (*field)(Settings&), bool (*known)(std::string_view));
+// The table's row of section.key, given the list's names and doc again (after a registration).
+void refresh_open_choice_row(std::string_view section, std::string_view key, const std::vector<std::string>& names,
+                             const std::string& doc);
 
 // Where each key got its value ("Section.key" -> file, line), so cross-field
 // errors can point at the line the user wrote.

@@ -29,6 +29,12 @@ std::string substrate_doc() {
     return doc;
 }
 
+std::vector<std::string> name_list() {
+    std::vector<std::string> out;
+    for (const auto& n : names()) out.push_back(n.name);
+    return out;
+}
+
 } // namespace
 
 const std::vector<SubstrateName>& substrate_names() { return names(); }
@@ -45,29 +51,15 @@ void register_substrate_name(SubstrateName name) {
                                     "': use 1 to 40 of a-z, 0-9, '-' and '_', starting with a letter");
     if (is_substrate_name(name.name)) throw std::invalid_argument("substrate '" + name.name + "' is registered twice");
     names().push_back(std::move(name));
-    for (auto& k : detail::mutable_settings_table())
-        if (k.section == "Neural" && k.key == "substrate") {
-            k.choices.push_back({names().back().name});
-            k.doc = substrate_doc();
-        }
+    detail::refresh_open_choice_row("Neural", "substrate", name_list(), substrate_doc());
 }
 
 namespace detail {
 
 SettingKey substrate_row() {
-    SettingKey k{};
-    k.section = "Neural";
-    k.key = "substrate";
-    k.type = ValueType::Enum;
-    for (const auto& n : names()) k.choices.push_back({n.name});
-    k.doc = substrate_doc();
+    SettingKey k = open_choice_row("Neural", "substrate", name_list(), substrate_doc(),
+                                   [](Settings& s) -> std::string& { return s.neural.substrate; }, &is_substrate_name);
     k.digest_at_default = false;   // beyond the thesis: out of the digest at its default
-    k.get = [](const Settings& s) { return s.neural.substrate; };
-    // Checked against the names known when the value is read, registrations included.
-    k.set = [](Settings& s, std::string_view text) {
-        if (!is_substrate_name(text)) throw ValueError("not one of the allowed names");
-        s.neural.substrate = std::string(text);
-    };
     return k;
 }
 
