@@ -1,6 +1,9 @@
 // gnuplot scripts for run statistics and network traces.
 #include "cic/report/plot.hpp"
 
+#include "cic/io/experiment_types.hpp"
+#include "cic/io/settings_io.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -65,6 +68,18 @@ std::string terminal_for(const fs::path& out_file, int width, int height, const 
     if (ext == ".svg")
         return fmt::format("set terminal svg size {},{} dynamic noenhanced font 'Sans,12' background rgb 'white'",
                            width, height);
+    if (ext == ".pdf") {   // for papers: vector, fonts embedded; 96 pixels to the inch
+        const fs::path probe = scratch / "probe.gp";
+        write_file(probe, "set terminal pdfcairo\n");
+        try {
+            run_gnuplot(gnuplot, probe);
+        } catch (const std::runtime_error&) {
+            throw InputError("this gnuplot has no pdfcairo terminal for a .pdf (Debian: gnuplot-nox has it)",
+                             out_file.string());
+        }
+        return fmt::format("set terminal pdfcairo size {:.3f}in,{:.3f}in noenhanced font 'Sans,9' background rgb 'white'",
+                           width / 96.0, height / 96.0);
+    }
     if (ext == ".png") {
         // pngcairo draws antialiased lines; plain png (libgd) is the fallback on minimal gnuplot builds.
         const fs::path probe = scratch / "probe.gp";
@@ -77,7 +92,25 @@ std::string terminal_for(const fs::path& out_file, int width, int height, const 
             return fmt::format("set terminal png size {},{} noenhanced background rgb 'white'", width, height);
         }
     }
-    throw InputError(fmt::format("unsupported plot format '{}' (use .svg or .png)", ext), out_file.string());
+    throw InputError(fmt::format("unsupported plot format '{}' (use .svg, .png or .pdf)", ext), out_file.string());
+}
+
+// Whole generations on the x axis: gnuplot's own step goes below 1 on short runs.
+std::string generation_ticks(const std::string& data_file) {
+    return fmt::format("stats {} using 1 nooutput\nif (STATS_max - STATS_min <= 10) {{ set xtics 1 }}\n"
+                       "set format x '%.0f'\n",
+                       data_file);
+}
+
+// The fitness axis with its unit: eq. 7.1 in metres for the robot experiments.
+std::string fitness_label(const fs::path& run_dir, const std::string& what = "fitness") {
+    try {
+        if (io::family_of(io::read_settings(run_dir / "settings.xml")) == io::ExperimentFamily::Symreg)
+            return what + " (-sum |error|)";
+        return what + " [m] (eq. 7.1)";
+    } catch (const std::exception&) {
+        return what;   // no readable settings: no unit to claim
+    }
 }
 
 void check_output_folder(const fs::path& out_file) {
@@ -181,7 +214,8 @@ void plot_runs(const std::vector<fs::path>& run_dirs, const fs::path& out_file, 
             items.push_back(fmt::format("{} using 1:{} with lines lw 2 lc {} title {}", data_files[g], col, colour(g),
                                         quote(label(g))));
         }
-        return fmt::format("set title {}\nset ylabel 'fitness'\nplot {}\n", quote(title), fmt::join(items, ", \\\n  "));
+        return fmt::format("set title {}\nset ylabel {}\nplot {}\n", quote(title), quote(fitness_label(run_dirs.front())),
+                           fmt::join(items, ", \\\n  "));
     };
     auto mean_max_panel = [&](const char* title, const char* what, int mean_col, int max_col) {
         std::vector<std::string> items;
@@ -202,6 +236,7 @@ void plot_runs(const std::vector<fs::path>& run_dirs, const fs::path& out_file, 
     script += fmt::format("set multiplot layout 2,2{}\n",
                           options.title.empty() ? "" : " title " + quote(options.title));
     script += "set grid\nset key left top box opaque\nset xlabel 'generation'\nset autoscale xfix\n";
+    script += generation_ticks(data_files.front());
     script += fitness_panel("best fitness", 3, 4);
     script += fitness_panel("mean fitness", 5, 6);
     script += mean_max_panel("depth (solid: max, dashed: mean)", "depth", 7, 8);
@@ -245,8 +280,10 @@ void plot_study(const fs::path& study, const fs::path& out_file, const StudyPlot
     script += fmt::format("set output {}\n", quote(out_file.string()));
     script += fmt::format("set multiplot layout 2,2 title {}\n", quote(title));
     script += "set grid\nset key left top box opaque\nset xlabel 'generation'\nset autoscale xfix\n";
-    script += panel("best fitness", "fitness", 3);
-    script += panel("mean fitness", "fitness", 6);
+    const std::string fitness = fitness_label(index.run_path(index.runs.front()));
+    script += generation_ticks(series.front().data);
+    script += panel("best fitness", fitness.c_str(), 3);
+    script += panel("mean fitness", fitness.c_str(), 6);
     script += panel("max depth", "depth", 12);
     script += panel("mean depth", "depth", 9);
     script += "unset multiplot\nset output\n";
@@ -258,10 +295,13 @@ void plot_studies_by_evaluations(const std::vector<fs::path>& studies, const fs:
     if (studies.empty()) throw InputError("plot: give at least one study folder");
     check_output_folder(out_file);
     const bool one_per_study = options.configs.size() == 1;
+    std::string by_evaluations_label;   // the first study's, with its unit
     std::vector<BandSeries> series;
     ScratchDir scratch;
     for (const auto& study : studies) {
         const StudyIndex index = read_study_index(study);
+        if (by_evaluations_label.empty() && !index.runs.empty())
+            by_evaluations_label = fitness_label(index.run_path(index.runs.front()), "best fitness so far");
         const auto groups = group_study(index, options.include_unfinished);
         std::vector<const StudyGroup*> chosen;
         if (options.configs.empty()) {
@@ -304,8 +344,8 @@ void plot_studies_by_evaluations(const std::vector<fs::path>& studies, const fs:
     std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
     script += fmt::format("set output {}\n", quote(out_file.string()));
     script += fmt::format("set title {}\n", quote(title + " (" + band_name + ")"));
-    script += "set grid\nset key left top box opaque\nset xlabel 'evaluations'\nset ylabel 'best fitness so far'\n"
-              "set autoscale xfix\n";
+    script += "set grid\nset key left top box opaque\nset xlabel 'evaluations'\nset autoscale xfix\n";
+    script += fmt::format("set ylabel {}\n", quote(by_evaluations_label.empty() ? "best fitness so far" : by_evaluations_label));
     script += band_plot_command(series, 3);
     script += "set output\n";
     render(options.gnuplot, scratch.path(), script, out_file);
@@ -352,14 +392,24 @@ void plot_trace(const fs::path& trace_csv, const fs::path& out_file, const Trace
     const int height = options.height > 0 ? options.height : 80 + 210 * rows;
     std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
     script += fmt::format("set output {}\n", quote(out_file.string()));
-    script += fmt::format("set multiplot layout {},{} columnsfirst{}\n", rows, columns,
-                          " title " + quote(options.title.empty() ? trace_csv.filename().string() : options.title));
-    script += "set grid\nset key outside right top\nset xlabel 't [s]'\nset ylabel 'rad'\nset autoscale xfix\n";
+    // The one legend of the figure is its title's second line: every panel draws the same three lines.
+    const std::string legend = "grey: raw output (right axis), blue: command, red dashed: angle";
+    std::string heading;   // in a gnuplot double-quoted string, where \n breaks the line
+    for (char c : options.title.empty() ? trace_csv.filename().string() : options.title) {
+        if (c == '\\' || c == '"') heading += '\\';
+        heading += c;
+    }
+    script += fmt::format("set multiplot layout {},{} columnsfirst title \"{}\\n{}\"\n", rows, columns, heading, legend);
+    // Commands and angles are angles (left axis, rad); the raw output is the
+    // controller's own unitless value in [-1, 1] (right axis).
+    script += "set grid\nunset key\nset xlabel 't [s]'\nset ylabel 'angle [rad]'\n"
+              "set y2label 'raw output'\nset y2range [-1.05:1.05]\nset y2tics -1,0.5,1\nset ytics nomirror\n"
+              "set autoscale xfix\n";
     for (std::size_t k = 0; k < chosen.size(); ++k) {
         const std::size_t base = 2 + 3 * k;
         script += fmt::format("set title {}\n", quote("joint " + table.joints[chosen[k]]));
         script += fmt::format(
-            "plot {0} using 1:{1} with lines lw 1 lc rgb '#999999' title 'raw output', \\\n"
+            "plot {0} using 1:{1} axes x1y2 with lines lw 1 lc rgb '#999999' title 'raw output', \\\n"
             "  {0} using 1:{2} with lines lw 2 lc rgb '#1f77b4' title 'command', \\\n"
             "  {0} using 1:{3} with lines lw 2 dt 2 lc rgb '#d62728' title 'angle'\n",
             quote(data.string()), base, base + 1, base + 2);

@@ -131,10 +131,22 @@ TEST(PlotRuns, DrawsAPngByExtension) {
     EXPECT_EQ(png.substr(1, 3), "PNG");
 }
 
+// For papers: a PDF beside SVG and PNG, whole generations on the x axis even
+// for a short run (no 0.5 ticks).
+TEST(PlotRuns, DrawsAPdfWithWholeGenerationTicks) {
+    const fs::path dir = scratch("pdf");
+    plot_runs({make_run(dir, "a-001", 3, 1.0)}, dir / "fitness.pdf");
+    EXPECT_EQ(read_text(dir / "fitness.pdf").substr(0, 5), "%PDF-");
+    plot_runs({make_run(dir, "b-001", 3, 1.0)}, dir / "fitness.svg");
+    const std::string svg = read_text(dir / "fitness.svg");
+    EXPECT_EQ(svg.find(">0.5<"), std::string::npos) << "a tick between two generations";
+    EXPECT_NE(svg.find(">1<"), std::string::npos);
+}
+
 TEST(PlotRuns, ReportsBadInputAndGnuplotFailures) {
     const fs::path dir = scratch("fail");
     const fs::path run = make_run(dir, "a-001", 3, 1.0);
-    EXPECT_NE(input_error([&] { plot_runs({run}, dir / "x.pdf"); }).find("unsupported plot format '.pdf'"),
+    EXPECT_NE(input_error([&] { plot_runs({run}, dir / "x.jpg"); }).find("unsupported plot format '.jpg' (use .svg, .png or .pdf)"),
               std::string::npos);
     EXPECT_NE(input_error([&] { plot_runs({dir / "nothing-001"}, dir / "x.svg"); }).find("stats.csv"),
               std::string::npos);
@@ -194,8 +206,11 @@ TEST(PlotTrace, DrawsOutputsCommandsAndAnglesPerJoint) {
     write_trace_csv(dir / "t.csv", sample_trace(), {"leg+x-y.0", "hip"});
     plot_trace(dir / "t.csv", dir / "t.svg");
     const std::string svg = read_text(dir / "t.svg");
-    for (const char* title : {"joint leg+x-y.0", "joint hip", "raw output", "command", "angle"})
+    for (const char* title : {"joint leg+x-y.0", "joint hip", "raw output", "angle [rad]",
+                              "grey: raw output (right axis), blue: command, red dashed: angle"})
         EXPECT_NE(svg.find(title), std::string::npos) << title;
+    // One legend for the figure (its title), none per panel.
+    EXPECT_EQ(svg.find(">command<"), std::string::npos) << "a legend inside a panel";
     TracePlotOptions only;
     only.joints = {"hip"};
     only.from = 0.5;
