@@ -1,5 +1,7 @@
 #include "hud.hpp"
 
+#include <algorithm>
+
 #include <osg/Geode>
 #include <osgText/Font>
 
@@ -49,7 +51,12 @@ void Hud::set_text(const std::string& text) { text_->setText(text, osgText::Stri
 
 void Hud::resize(int width, int height) {
     camera_->setProjectionMatrix(osg::Matrix::ortho2D(0, width, 0, height));
-    text_->setPosition(osg::Vec3(12.0f, static_cast<float>(height) - 12.0f, 0));
+    // Smaller letters in a small window (a screenshot strip's frames), and lines
+    // wrapped at its edge: the overlay is never cut off.
+    const float margin = 12.0f;
+    text_->setCharacterSize(std::clamp(static_cast<float>(width) / 48.0f, 9.0f, 16.0f));
+    text_->setMaximumWidth(std::max(1.0f, static_cast<float>(width) - 2 * margin));
+    text_->setPosition(osg::Vec3(margin, static_cast<float>(height) - margin, 0));
 }
 
 } // namespace cic::viz

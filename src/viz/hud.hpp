@@ -13,6 +13,8 @@ public:
     osg::Camera* camera() const { return camera_.get(); }
     void set_text(const std::string& text);
     void resize(int width, int height);
+    // The overlay's extent in window pixels (after set_text and resize).
+    osg::BoundingBox text_bounds() const { return text_->getBoundingBox(); }
 
 private:
     osg::ref_ptr<osg::Camera> camera_;

@@ -81,7 +81,8 @@ TEST(Screenshot, ShowsALitRobotOnTheGround) {
     EXPECT_GT(colours.size(), 50u) << "a blank or flat image";
     EXPECT_GT(orange, 200) << "no chassis pixels";
     EXPECT_GT(blue, 20) << "no panel pixels";
-    EXPECT_GT(ground, 320 * 240 / 4) << "no ground around the robot";
+    // A fifth at least: the overlay's lines (wrapped to fit the frame, hud_test.cpp) cover the top.
+    EXPECT_GT(ground, 320 * 240 / 5) << "no ground around the robot";
     fs::remove(png);
 }
 
