@@ -58,6 +58,31 @@ TEST(Povray, RenderScriptMakesFramesAndAVideo) {
     }
     EXPECT_GT(colours.size(), 20u) << "a flat image";
     EXPECT_GT(orange, 10) << "no robot (chassis) pixels";
+
+    // --overlay: the scenes' title and time written on the video: the first
+    // frame's top-left corner differs from the same video without it.
+    const auto first_frame = [&](const std::string& options) {
+        const std::string render = "'" + script + "' '" + dir.string() + "' --width 160 --height 120 --fps 10 --jobs 2 " +
+                                   options + " >/dev/null 2>&1";
+        if (std::system(render.c_str()) != 0) return std::string();
+        FILE* p = popen(("ffmpeg -loglevel error -i '" + (dir / "out.mp4").string() +
+                         "' -frames:v 1 -f rawvideo -pix_fmt gray -").c_str(), "r");
+        std::string out;
+        for (std::size_t got; p && (got = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, got);
+        if (p) pclose(p);
+        return out;
+    };
+    const std::string plain = first_frame(""), with_text = first_frame("--overlay");
+    ASSERT_EQ(plain.size(), 160u * 120u);
+    ASSERT_EQ(with_text.size(), 160u * 120u);
+    int changed = 0;   // in the top-left 100x30 pixels, where the two lines go
+    for (int y = 5; y < 35; ++y)
+        for (int x = 5; x < 105; ++x) {
+            const std::size_t k = static_cast<std::size_t>(y * 160 + x);
+            changed += std::abs(static_cast<int>(static_cast<unsigned char>(plain[k])) -
+                                static_cast<int>(static_cast<unsigned char>(with_text[k]))) > 24;
+        }
+    EXPECT_GT(changed, 150) << "no overlay text in the corner";
     fs::remove_all(dir);
 }
 
