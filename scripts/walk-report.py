@@ -91,27 +91,10 @@ def read_gaits(gfile):
 
 
 def runs(study):
-    """{config: [run]} of the finished runs, each a dict: score, scored_by_best_ever, evaluations, gait."""
-    index = STUDIES / study / "index.csv"
-    if not index.exists():
+    """{config: [run]} of the study's finished runs in --studies (None when it has no index)."""
+    if not (STUDIES / study / "index.csv").exists():
         return None
-    gfile = RESULTS / f"{study}-gaits.csv"
-    gaits = read_gaits(gfile)
-    out = {}
-    with open(index, newline="") as f:
-        reader = csv.DictReader(f)
-        missing = {"run_dir", "config", "status", "best_ever", "evaluations"} - set(reader.fieldnames or [])
-        if missing:
-            fail(f"{index}:1: header has no column {', '.join(sorted(missing))}")
-        for r in reader:
-            if r["status"] != "done" or not r["best_ever"]:
-                continue
-            where = f"{index}:{reader.line_num}"
-            g = gaits.get((STUDIES / study / r["run_dir"]).resolve())
-            score = number(g["raw_fitness"], f"{gfile}", "raw_fitness") if g else number(r["best_ever"], where, "best_ever")
-            out.setdefault(r["config"], []).append({"score": score, "star": g is None, "gait": g,
-                                                    "evaluations": int(number(r["evaluations"], where, "evaluations"))})
-    return out
+    return ledger_runs(found_rows(study), study) or {}
 
 
 LEDGER_FIELDS = ["study", "run_dir", "config", "seed", "best_ever", "evaluations", "wall_seconds", "fitness",
