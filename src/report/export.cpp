@@ -2,7 +2,6 @@
 #include "cic/report/export.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <map>
 #include <utility>
 
@@ -16,6 +15,7 @@
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/report/plot.hpp"
+#include "cic/report/replay.hpp"
 #include "cic/sim/evaluate.hpp"
 
 namespace cic::app {
@@ -31,12 +31,6 @@ std::string cell(const std::string& s) {
 }
 
 std::string number(double v) { return fmt::format("{}", v); }
-
-// Eq. 7.1's terms of one evaluation.
-std::pair<double, double> terms_of(const sim::RobotSpec& robot, const sim::EvalResult& r) {
-    const std::size_t p = robot.preferred == sim::Axis::X ? 0 : 1;
-    return {std::fabs(r.end[p] - r.start[p]), r.end[2] - r.start[2]};
-}
 
 // A run's saved generations, oldest first.
 std::vector<fs::path> saved_generations(const fs::path& run) {
@@ -72,7 +66,7 @@ void export_run(const fs::path& run, const std::string& label, const std::string
                     auto [it, fresh] = seen.try_emplace(params);
                     if (fresh) {
                         const auto controller = setup->controller(point.x);
-                        it->second = terms_of(setup->robot, sim::evaluate(setup->robot, *controller, setup->sim));
+                        it->second = eq71_terms(setup->robot, sim::evaluate(setup->robot, *controller, setup->sim));
                     }
                     dist = number(it->second.first), elev = number(it->second.second);
                 }
@@ -92,7 +86,7 @@ void export_run(const fs::path& run, const std::string& label, const std::string
             std::string dist, elev;
             if (model) {
                 auto [it, fresh] = seen.try_emplace(trees);
-                if (fresh) it->second = terms_of(model->robot, hypergp::run(*model, ind->genotype).result);
+                if (fresh) it->second = eq71_terms(model->robot, hypergp::run(*model, ind->genotype).result);
                 dist = number(it->second.first), elev = number(it->second.second);
             }
             csv += prefix + fmt::format("{},{},{},{},{},{},{},{},{}\n", pop.population.generation, ind->id,

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -97,11 +98,14 @@ std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& setti
 
 } // namespace
 
+std::pair<double, double> eq71_terms(const sim::RobotSpec& robot, const sim::EvalResult& r) {
+    const std::size_t p = robot.preferred == sim::Axis::X ? 0 : 1;
+    return {std::fabs(r.end[p] - r.start[p]), r.end[2] - r.start[2]};
+}
+
 // Eq. 7.1's terms and, when the ground was recorded, each foot's duty factor.
 void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalResult& r) {
-    const std::size_t p = robot.preferred == sim::Axis::X ? 0 : 1;
-    item.distance = std::fabs(r.end[p] - r.start[p]);
-    item.elevation = r.end[2] - r.start[2];
+    std::tie(item.distance, item.elevation) = eq71_terms(robot, r);
     if (r.module_ground_steps.empty()) return;
     for (int m : sim::branch_ends(robot)) {
         const std::string& name = robot.modules[static_cast<std::size_t>(m)].name;

@@ -2,7 +2,6 @@
 // (experiments/gait/), one generation at a time, with the same run folder,
 // statistics, checkpoints, progress and stop signals as the GP experiments.
 
-#include <cmath>
 
 #include <fmt/format.h>
 
@@ -10,6 +9,7 @@
 #include "cic/io/gait_xml.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/stats_csv.hpp"
+#include "cic/report/replay.hpp"
 #include "cic/sim/evaluate.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/experiments/gait/restarts.hpp"
@@ -175,8 +175,8 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
     if (reason != "interrupted") {   // the champion again: what its score is made of
         const auto controller = setup.controller(best.x);
         const sim::EvalResult r = sim::evaluate(setup.robot, *controller, setup.sim);
-        const std::size_t p = setup.robot.preferred == sim::Axis::X ? 0 : 1;
-        walk = eq71_line(std::fabs(r.end[p] - r.start[p]), r.end[2] - r.start[2]);
+        const auto [distance, elevation] = eq71_terms(setup.robot, r);
+        walk = eq71_line(distance, elevation);
     }
     console.summary((ipop ? summary + fmt::format("restarts: {} (population {})\n", search.restarts(),
                                                   search.population_size())

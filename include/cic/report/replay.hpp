@@ -4,6 +4,7 @@
 // used, so the motion shown is the one that earned the fitness.
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cic/sim/evaluate.hpp"
@@ -30,6 +31,10 @@ struct ReplayItem {
     std::vector<std::string> foot_names;
     std::vector<double> duty_factors;
 };
+
+// Eq. 7.1's two terms of an evaluation, m: the walk along the robot's
+// preferred axis and the elevation gained by its centre module.
+std::pair<double, double> eq71_terms(const sim::RobotSpec& robot, const sim::EvalResult& result);
 
 // Sets the item's distance and elevation from the evaluation, and with
 // recorded ground contacts (EvalOptions::record_ground) its feet's duty factors.
