@@ -86,6 +86,9 @@ file(GLOB _cic_settings CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/settings/*.xml)
 install(FILES ${_cic_settings}
               ${PROJECT_SOURCE_DIR}/settings/cic-settings.xsd
               ${PROJECT_SOURCE_DIR}/settings/cic-sweep.xsd
+              ${PROJECT_SOURCE_DIR}/settings/cic-robot.xsd
+              ${PROJECT_SOURCE_DIR}/settings/cic-population.xsd
+              ${PROJECT_SOURCE_DIR}/settings/cic-gait.xsd
         DESTINATION ${CIC_INSTALL_SHAREDIR}/settings)
 file(GLOB _cic_robots CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/settings/robots/*.xml)
 install(FILES ${_cic_robots} DESTINATION ${CIC_INSTALL_SHAREDIR}/settings/robots)

@@ -4,31 +4,10 @@
 #include <iostream>
 
 #include "cic/cli/command_guard.hpp"
-#include "cic/io/settings_table.hpp"
+#include "cic/io/did_you_mean.hpp"
 
 namespace cic::app {
 namespace {
-
-bool is_subsequence(const std::string& part, const std::string& whole) {
-    std::size_t i = 0;
-    for (char c : whole)
-        if (i < part.size() && part[i] == c) ++i;
-    return i == part.size();
-}
-
-// The closest of `names` to `given`, when it is close enough to be a slip of
-// the keys; of two as close, the one `given` is a subsequence of (a letter left
-// out is the commonest slip: --sed is --seed rather than --set).
-std::string nearest(const std::string& given, const std::vector<std::string>& names) {
-    std::string best;
-    std::size_t best_d = std::string::npos;
-    for (const auto& n : names) {
-        const std::size_t d = io::edit_distance(given, n);
-        if (d < best_d || (d == best_d && is_subsequence(given, n) && !is_subsequence(given, best)))
-            best_d = d, best = n;
-    }
-    return best_d > 0 && best_d <= std::max<std::size_t>(1, given.size() / 3) ? best : std::string();
-}
 
 std::vector<std::string> option_names(const CLI::App& app) {
     std::vector<std::string> out;
@@ -58,7 +37,7 @@ void add_help_command(CLI::App& app, CommandContext& ctx) {
                 }
             std::vector<std::string> names;
             for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
-            const std::string near = nearest(*topic, names);
+            const std::string near = io::nearest_name(*topic, names);
             throw InputError("no command '" + *topic + "'" + (near.empty() ? "" : "; did you mean " + near + "?") +
                              " (cic --help lists them)");
         });
@@ -84,10 +63,10 @@ std::string near_misses(const CLI::App& app, int argc, char** argv) {
                 names.insert(names.end(), main.begin(), main.end());
             }
             if (std::find(names.begin(), names.end(), name) != names.end()) continue;
-            if (const std::string near = nearest(name, names); !near.empty())
+            if (const std::string near = io::nearest_name(name, names); !near.empty())
                 text += "\nunknown option " + name + "; did you mean " + near + "?";
         } else if (i == 1 && command == &app && arg.find('.') == std::string::npos) {
-            if (const std::string near = nearest(arg, commands); !near.empty())
+            if (const std::string near = io::nearest_name(arg, commands); !near.empty())
                 text += "\nunknown command " + arg + "; did you mean " + near + "?";
         }
     }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cic/core/error.hpp"
+#include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
 
 namespace cic::io {
@@ -91,8 +92,11 @@ std::string to_xml(const GaitFile& g) {
     return doc.to_string();
 }
 
-GaitFile parse_gait(std::string_view text, const std::string& name) {
-    auto doc = xml::Document::parse_string(text, name);
+namespace {
+
+// The document has passed the strict reader (elements and attributes known,
+// no stray text); these are the checkpoint's own rules.
+GaitFile read_gait(const xml::Document& doc) {
     const auto root = doc.root();
     if (root.name() != "gaitRun" || root.attribute("format").value_or("") != kFormat)
         throw root.error("not a cic gait checkpoint (expected <gaitRun format=\"cic-gait\">)");
@@ -165,6 +169,12 @@ GaitFile parse_gait(std::string_view text, const std::string& name) {
         throw root.error("<restarts populationSize=\"" + std::to_string(g.restarts->population_size) + "\"> but " +
                          std::to_string(g.population.size()) + " candidates");
     return g;
+}
+
+} // namespace
+
+GaitFile parse_gait(std::string_view text, const std::string& name) {
+    return xml::read_strict(text, name, xml::gait_format(), read_gait);
 }
 
 GaitFile load_gait(const std::filesystem::path& path) { return parse_gait(xml::read_file(path), path.string()); }

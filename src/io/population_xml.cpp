@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "cic/core/limits.hpp"
+#include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
 
 namespace cic::io {
@@ -192,12 +193,11 @@ void save_population(const std::filesystem::path& path, const PopulationFile& p)
     xml::write_file_atomically(path, to_xml(p));
 }
 
-PopulationFile load_population(const std::filesystem::path& path) {
-    return parse_population(xml::read_file(path), path.string());
-}
+namespace {
 
-PopulationFile parse_population(std::string_view text, const std::string& name) {
-    auto doc = xml::Document::parse_string(text, name);
+// The document has passed the strict reader (elements and attributes known,
+// no stray text); these are the population's own rules.
+PopulationFile read_population(const xml::Document& doc) {
     const auto root = doc.root();
     if (root.name() != "population" || root.attribute("format").value_or("") != kFormat)
         throw root.error("not a cic population file (expected <population format=\"cic-population\">)");
@@ -276,6 +276,17 @@ PopulationFile parse_population(std::string_view text, const std::string& name) 
     if (p.state.next_id <= max_id) p.state.next_id = max_id + 1;
     return p;
 }
+
+} // namespace
+
+PopulationFile load_population(const std::filesystem::path& path) {
+    return parse_population(xml::read_file(path), path.string());
+}
+
+PopulationFile parse_population(std::string_view text, const std::string& name) {
+    return xml::read_strict(text, name, xml::population_format(), read_population);
+}
+
 
 void check_compatible(const PopulationFile& loaded, const Settings& s, const std::string& file) {
     const PopulationFile want = describe(s);

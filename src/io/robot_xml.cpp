@@ -7,6 +7,7 @@
 #include <map>
 
 #include "cic/core/error.hpp"
+#include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
 
 namespace cic::io {
@@ -24,13 +25,19 @@ int int_attribute(const xml::Node& n, const char* attr) {
     return out;
 }
 
+std::string required(const xml::Node& n, const char* attr, const char* allowed) {
+    auto v = n.attribute(attr);
+    if (!v) throw n.error("<" + std::string(n.name()) + "> needs attribute " + attr + " (" + allowed + ")");
+    return *v;
+}
+
+// The document has passed the strict reader (its root is <robot>, it holds only
+// <module> elements and only known attributes); these are the robot's own rules.
 sim::RobotSpec read_robot(const xml::Document& doc) {
     const xml::Node root = doc.root();
-    if (root.name() != "robot")
-        throw root.error("expected root element <robot>, got <" + std::string(root.name()) + ">");
     sim::RobotSpec r;
     r.name = root.attribute("name").value_or("");
-    const std::string pref = xml::trim(root.attribute("preferred").value_or(""));
+    const std::string pref = xml::trim(required(root, "preferred", "x or y"));
     auto axis = sim::axis_from_name(pref);
     if (!axis || (*axis != sim::Axis::X && *axis != sim::Axis::Y))
         throw root.error("<robot> attribute preferred=\"" + pref + "\" must be x or y");
@@ -39,18 +46,16 @@ sim::RobotSpec read_robot(const xml::Document& doc) {
     std::vector<int> lines;
     std::map<std::string, int> by_name;
     for (const xml::Node& n : root.children()) {
-        if (n.name() != "module")
-            throw n.error("unexpected element <" + std::string(n.name()) + "> in <robot> (only <module>)");
         sim::Module m;
         m.name = n.attribute("name").value_or("");
         m.cell = {int_attribute(n, "x"), int_attribute(n, "y"), int_attribute(n, "z")};
-        const std::string a = xml::trim(n.attribute("axis").value_or(""));
+        const std::string a = xml::trim(required(n, "axis", "x, y, z or fixed"));
         auto ax = sim::axis_from_name(a);
-        if (!ax) throw n.error("unknown axis \"" + a + "\" (expected x, y, z or fixed)");
+        if (!ax) throw n.error("<module> axis=\"" + a + "\": expected x, y, z or fixed");
         m.axis = *ax;
-        const std::string d = xml::trim(n.attribute("attach").value_or(""));
+        const std::string d = xml::trim(required(n, "attach", "+x, -x, +y, -y, +z, -z or none"));
         auto dir = sim::dir_from_name(d);
-        if (!dir) throw n.error("unknown attach \"" + d + "\" (expected +x, -x, +y, -y, +z, -z or none)");
+        if (!dir) throw n.error("<module> attach=\"" + d + "\": expected +x, -x, +y, -y, +z, -z or none");
         m.attach = *dir;
         if (!m.name.empty() && !by_name.emplace(m.name, static_cast<int>(r.modules.size())).second)
             throw n.error("duplicate module name \"" + m.name + "\"");
@@ -72,6 +77,10 @@ sim::RobotSpec read_robot(const xml::Document& doc) {
         r.centre = idx;
     }
 
+    // Every experiment drives hinges; a robot of fixed modules only is a mistake,
+    // named here at its file's line rather than later by the experiment.
+    if (std::none_of(r.modules.begin(), r.modules.end(), [](const sim::Module& m) { return m.axis != sim::Axis::Fixed; }))
+        throw root.error("invalid robot: every module is fixed; give at least one module a hinge (axis x, y or z)");
     if (auto problem = r.find_problem()) {
         const bool at_module = problem->module >= 0 && problem->module < static_cast<int>(lines.size());
         throw InputError("invalid robot: " + problem->message, doc.file(),
@@ -102,11 +111,11 @@ std::string centre_reference(const sim::RobotSpec& robot) {
 } // namespace
 
 sim::RobotSpec read_robot_file(const std::filesystem::path& path) {
-    return read_robot(xml::Document::load_file(path));
+    return xml::load_strict(path, xml::robot_format(), read_robot);
 }
 
 sim::RobotSpec parse_robot_xml(std::string_view text, const std::string& name) {
-    return read_robot(xml::Document::parse_string(text, name));
+    return xml::read_strict(text, name, xml::robot_format(), read_robot);
 }
 
 std::string robot_to_xml(const sim::RobotSpec& robot) {

@@ -7,6 +7,7 @@
 #include "cic/io/settings_io.hpp"
 #include "cic/io/experiment_types.hpp"
 #include "cic/io/settings_table.hpp"
+#include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
 #include "settings_values.hpp"
 
@@ -86,25 +87,19 @@ InputError value_error(const Assignment& a, const std::string& why) {
                       a.file, a.line);
 }
 
+// Unknown sections and keys, nested elements and attributes were refused by the
+// strict reader (settings_format()); what is left is the file's own rules.
 std::vector<Assignment> gather_document(const xml::Document& doc) {
     std::vector<Assignment> out;
     std::map<std::string, int> seen_sections;
     std::map<std::string, std::size_t> seen_keys;   // "Section.key" -> index in out
     for (const auto& sec : doc.root().children()) {
         std::string section(sec.name());
-        if (std::find(settings_sections().begin(), settings_sections().end(), section) == settings_sections().end())
-            throw sec.error(unknown_section_message(section));
         if (auto [it, fresh] = seen_sections.emplace(section, sec.line()); !fresh)
             throw sec.error("section <" + section + "> appears twice (first at line " + std::to_string(it->second) + ")");
         for (const auto& node : sec.children()) {
             std::string key(node.name());
             const SettingKey* k = find_setting(section, key);
-            if (!k) throw node.error(unknown_key_message(section, key));
-            if (node.has_element_children())
-                throw node.error("<" + section + "> " + key + ": expected a value, found nested elements");
-            if (node.text().empty() && node.get()->properties != nullptr)
-                throw node.error("<" + section + "> " + key + ": write the value as the element's text, <" + key +
-                                 ">value</" + key + ">, not as an attribute");
             // A key repeated with the same value is harmless (thesis table B.1 itself
             // lists functionProbabilities twice); with another value it is a conflict.
             if (auto [it, fresh] = seen_keys.emplace(section + "." + key, out.size()); !fresh) {
@@ -205,14 +200,39 @@ void infer_experiment_type(Settings& s, const xml::Document& doc) {
 
 } // namespace
 
+const xml::Format& settings_format() {
+    static const xml::Format f{
+        "settings",
+        "settings file",
+        [] { return settings_schema(); },
+        [](const xml::Node& parent, std::string_view element) -> std::optional<std::string> {
+            const _xmlNode* up = parent.get()->parent;
+            if (up && up->type == XML_DOCUMENT_NODE) return unknown_section_message(element);
+            if (up && up->parent && up->parent->type == XML_DOCUMENT_NODE)
+                return unknown_key_message(parent.name(), element);
+            return "<" + std::string(reinterpret_cast<const char*>(up->name)) + "> " + std::string(parent.name()) +
+                   ": expected a value, found nested elements";
+        },
+        [](const xml::Node& element, std::string_view) -> std::optional<std::string> {
+            const _xmlNode* up = element.get()->parent;
+            if (!up || !up->parent || up->parent->type != XML_ELEMENT_NODE) return std::nullopt;
+            const std::string key(element.name());
+            return "<" + std::string(reinterpret_cast<const char*>(up->name)) + "> " + key +
+                   ": write the value as the element's text, <" + key + ">value</" + key + ">, not as an attribute";
+        }};
+    return f;
+}
+
 Settings load_settings(const fs::path& file, const std::vector<std::string>& overrides) {
     Settings s;
     detail::Locations locs;
     if (!file.empty()) {
-        auto doc = xml::Document::load_file(file);
-        fs::path base = fs::absolute(file).parent_path();
-        infer_experiment_type(s, doc);
-        apply_layer(s, gather_document(doc), locs, &base);
+        const fs::path base = fs::absolute(file).parent_path();
+        xml::load_strict(file, settings_format(), [&](const xml::Document& doc) {
+            infer_experiment_type(s, doc);
+            apply_layer(s, gather_document(doc), locs, &base);
+            return 0;
+        });
         s.source_file = file.string();
     }
     // Paths on the command line are relative to the current folder; every path is
@@ -228,9 +248,11 @@ Settings read_settings(const fs::path& file) { return load_settings(file, {}); }
 Settings read_settings_string(std::string_view text, const std::string& name) {
     Settings s;
     detail::Locations locs;
-    auto doc = xml::Document::parse_string(text, name);
-    infer_experiment_type(s, doc);
-    apply_layer(s, gather_document(doc), locs, nullptr);
+    xml::read_strict(text, name, settings_format(), [&](const xml::Document& doc) {
+        infer_experiment_type(s, doc);
+        apply_layer(s, gather_document(doc), locs, nullptr);
+        return 0;
+    });
     s.source_file = name;
     detail::validate(s, locs);
     return s;

@@ -102,7 +102,7 @@ std::string settings_schema() {
     auto schema = doc.root();
     schema.set_attribute("xmlns:xs", "http://www.w3.org/2001/XMLSchema");
     schema.add_comment(" Generated from the settings table (cic settings, option schema); do not edit by hand. ");
-    // The root is <settings>; <cic> is accepted too (the reader takes any root).
+    // The root is <settings>; <cic> is accepted too.
     for (const char* name : {"settings", "cic"}) {
         auto root = schema.add_element("xs:element");
         root.set_attribute("name", name);
@@ -115,9 +115,13 @@ std::string settings_schema() {
         auto sec = root_all.add_element("xs:element");
         sec.set_attribute("name", section);
         sec.set_attribute("minOccurs", "0");
-        auto all = sec.add_element("xs:complexType").add_element("xs:all");
+        // A choice, not xs:all: a key may repeat with the same value (thesis table
+        // B.1 lists functionProbabilities twice); the reader refuses another value.
+        auto keys = sec.add_element("xs:complexType").add_element("xs:choice");
+        keys.set_attribute("minOccurs", "0");
+        keys.set_attribute("maxOccurs", "unbounded");
         for (const auto& k : settings_table())
-            if (k.section == section) key_element(all, k);
+            if (k.section == section) key_element(keys, k);
     }
     return doc.to_string();
 }

@@ -36,7 +36,9 @@ void collect(void* user, xmlErrorPtr e) {
 #endif
     auto* sink = static_cast<ErrorSink*>(user);
     if (e == nullptr || e->level == XML_ERR_WARNING) return;
+    // One line: libxml2 gives some errors a second line (an encoding error's "Bytes: 0x..").
     std::string msg = e->message ? trim(e->message) : std::string("unknown XML error");
+    for (auto p = msg.find('\n'); p != std::string::npos; p = msg.find('\n', p)) msg.replace(p, 1, "; ");
     std::string file = e->file ? e->file : sink->fallback_file;
     if (sink->lines.empty()) sink->first_line = e->line;
     sink->lines.push_back(file + (e->line > 0 ? ":" + std::to_string(e->line) : std::string()) +
@@ -266,24 +268,35 @@ void Document::save_atomically(const std::filesystem::path& path) const {
 }
 
 std::vector<std::string> Document::validate(const std::filesystem::path& xsd) const {
-    std::string xsd_name = xsd.string();
-    ErrorSink sink{xsd_name, {}, 0};
+    return Schema(read_file(xsd), xsd.string()).validate(*this);
+}
+
+// ---------------------------------------------------------------- Schema
+
+Schema::Schema(std::string_view xsd_text, const std::string& name) {
+    ErrorSink sink{name, {}, 0};
     ScopedErrors guard(sink);
     std::unique_ptr<xmlSchemaParserCtxt, decltype(&xmlSchemaFreeParserCtxt)> pctx(
-        xmlSchemaNewParserCtxt(xsd_name.c_str()), xmlSchemaFreeParserCtxt);
-    std::unique_ptr<xmlSchema, decltype(&xmlSchemaFree)> schema(
-        pctx ? xmlSchemaParse(pctx.get()) : nullptr, xmlSchemaFree);
-    if (!schema) {
+        xmlSchemaNewMemParserCtxt(xsd_text.data(), static_cast<int>(xsd_text.size())), xmlSchemaFreeParserCtxt);
+    schema_ = pctx ? xmlSchemaParse(pctx.get()) : nullptr;
+    if (!schema_) {
         std::string why = sink.lines.empty() ? std::string("cannot load schema") : sink.lines.front();
-        throw InputError("invalid XML schema: " + why, xsd_name);
+        throw InputError("invalid XML schema: " + why, name);
     }
-    sink.lines.clear();
-    sink.fallback_file = file();
+}
+
+Schema::~Schema() {
+    if (schema_) xmlSchemaFree(schema_);
+}
+
+std::vector<std::string> Schema::validate(const Document& doc) const {
+    ErrorSink sink{doc.file(), {}, 0};
+    ScopedErrors guard(sink);
     std::unique_ptr<xmlSchemaValidCtxt, decltype(&xmlSchemaFreeValidCtxt)> vctx(
-        xmlSchemaNewValidCtxt(schema.get()), xmlSchemaFreeValidCtxt);
+        xmlSchemaNewValidCtxt(schema_), xmlSchemaFreeValidCtxt);
     xmlSchemaSetValidStructuredErrors(vctx.get(), collect, &sink);
-    int rc = xmlSchemaValidateDoc(vctx.get(), doc_);
-    if (rc != 0 && sink.lines.empty()) sink.lines.push_back(file() + ": does not match the schema");
+    int rc = xmlSchemaValidateDoc(vctx.get(), doc.doc_);
+    if (rc != 0 && sink.lines.empty()) sink.lines.push_back(doc.file() + ": does not match the schema");
     return sink.lines;
 }
 

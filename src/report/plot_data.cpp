@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <map>
 #include <regex>
 #include <stdexcept>
@@ -127,9 +128,9 @@ std::vector<StatsRow> read_stats_csv(const std::filesystem::path& path) {
         for (std::size_t c = 0; c < kStatsColumns.size(); ++c) {
             const std::string& cell = cells[where[c]];
             const auto res = std::from_chars(cell.data(), cell.data() + cell.size(), v[c]);
-            if (cell.empty() || res.ec != std::errc() || res.ptr != cell.data() + cell.size())
-                throw InputError(fmt::format("column '{}': '{}' is not a number", kStatsColumns[c], cell), file,
-                                 line_no);
+            if (cell.empty() || res.ec != std::errc() || res.ptr != cell.data() + cell.size() || !std::isfinite(v[c]))
+                throw InputError(fmt::format("column '{}': '{}' is not a finite number", kStatsColumns[c], cell),
+                                 file, line_no);
         }
         if (v[0] != std::floor(v[0]) || v[0] < 0)
             throw InputError(fmt::format("column 'generation': '{}' is not a generation number", cells[where[0]]),
@@ -172,12 +173,20 @@ bool is_study_folder(const std::filesystem::path& path) {
 }
 
 StudyIndex read_study_index(const std::filesystem::path& study) {
+    const auto file = study / "index.csv";
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw InputError("cannot read the study index (is this a study folder from cic sweep?)", file.string());
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_study_index(text.str(), study);
+}
+
+StudyIndex parse_study_index(std::string_view text, const std::filesystem::path& study) {
     StudyIndex index;
     index.folder = study;
     index.file = study / "index.csv";
     const std::string file = index.file.string();
-    std::ifstream in(index.file);
-    if (!in) throw InputError("cannot read the study index (is this a study folder from cic sweep?)", file);
+    std::istringstream in{std::string(text)};
     std::string line;
     if (!std::getline(in, line)) throw InputError("empty study index (expected a header line)", file, 1);
     const auto header = split_quoted_csv(line, file, 1);
@@ -240,8 +249,10 @@ StudyIndex read_study_index(const std::filesystem::path& study) {
             if (cell.empty()) return std::nullopt;
             double v = 0;
             const auto res = std::from_chars(cell.data(), cell.data() + cell.size(), v);
-            if (res.ec != std::errc() || res.ptr != cell.data() + cell.size() || std::isnan(v))
-                throw InputError(fmt::format("column '{}': '{}' is not a number", header[c], cell), file, line_no);
+            // A metric must be finite: inf would print as "inf ± -nan" and rank above every run.
+            if (res.ec != std::errc() || res.ptr != cell.data() + cell.size() || !std::isfinite(v))
+                throw InputError(fmt::format("column '{}': '{}' is not a finite number", header[c], cell), file,
+                                 line_no);
             return v;
         };
         run.final_best = number(c_best);

@@ -52,11 +52,6 @@ std::optional<double> metric_of(const StudyRun& run, const std::string& metric) 
     return run.wall_seconds;
 }
 
-std::optional<double> median_of(const std::vector<double>& v) {
-    if (v.empty()) return std::nullopt;
-    return stats::quantile(v, 0.5);
-}
-
 // The median over every run, a run that never reached the threshold counting
 // as infinitely late: infinite when half the runs or more never reached it.
 std::optional<double> median_with_unreached(std::vector<double> reached, std::size_t runs) {

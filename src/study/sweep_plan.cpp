@@ -8,6 +8,7 @@
 #include "cic/study/sweep.hpp"
 #include "cic/core/error.hpp"
 #include "cic/io/settings_table.hpp"
+#include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
 
 namespace cic::app {
@@ -22,15 +23,37 @@ std::string resolved_path(const std::string& value, const fs::path& folder) {
     return (folder / value).lexically_normal().string();
 }
 
-// "Section.key=value" naming a real key (the value is checked later, with the
-// settings, when every task's settings are loaded), a path value resolved.
-std::string checked_override(const io::xml::Node& n, const std::string& text, const fs::path& folder) {
+std::string xml_value(const std::string& v) { return io::xml::trim(v); }
+
+bool is_scalar(const io::SettingKey& k) {
+    return k.type != io::ValueType::NameList && k.type != io::ValueType::DoubleList && k.type != io::ValueType::IntList;
+}
+
+// "Section.key=value" naming a real key, a path value resolved. A scalar value
+// is checked here, so that a bad one is named at its line; lists and the rules
+// between keys are checked with the settings of each configuration.
+std::string checked_override(const io::xml::Node& n, const std::string& text, const fs::path& folder,
+                             bool check_value = true) {
+    const std::string element = "<" + std::string(n.name()) + ">";
     const auto eq = text.find('='), dot = text.find('.');
     if (eq == std::string::npos || dot == std::string::npos || dot > eq)
-        throw n.error("<set> expects Section.key=value, got \"" + text + "\"");
+        throw n.error(element + " expects Section.key=value, got \"" + text + "\"");
     const std::string section = text.substr(0, dot), key = text.substr(dot + 1, eq - dot - 1);
     const io::SettingKey* k = io::find_setting(section, key);
-    if (!k) throw n.error("<set> names no settings key: <" + section + "> " + key);
+    if (!k) throw n.error(element + " names no settings key: <" + section + "> " + key);
+    if (section == "Experiment" && key == "seed")
+        throw n.error(element + " sets Experiment.seed, which a sweep owns: each run's seed comes from <repeats "
+                      "firstSeed=\"S\" seeds=\"same|distinct\"/>; remove it here");
+    const std::string value = xml_value(text.substr(eq + 1));
+    if (check_value && is_scalar(*k)) {
+        io::Settings scratch;
+        try {
+            k->set(scratch, value);
+        } catch (const std::exception& e) {
+            throw n.error(element + " <" + section + "> " + key + " = \"" + value + "\": " + e.what() +
+                          " (allowed: " + io::describe_allowed(*k) + ")");
+        }
+    }
     if (k->type == io::ValueType::Path) return text.substr(0, eq + 1) + resolved_path(text.substr(eq + 1), folder);
     return text;
 }
@@ -73,14 +96,17 @@ struct Vary {
 struct Variant {
     std::string name;
     std::vector<std::string> overrides;
+    int line = 0;
 };
 
 } // namespace
 
-SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
-    const io::xml::Document doc = io::xml::Document::load_file(file);
+namespace {
+
+// The document has passed the strict reader (elements and attributes known,
+// no stray text); these are the sweep's own rules.
+SweepPlan read_sweep(const io::xml::Document& doc, const fs::path& file, const fs::path& output) {
     const io::xml::Node root = doc.root();
-    if (root.name() != "sweep") throw root.error("not a sweep file: the root element must be <sweep>");
     SweepPlan plan;
     plan.file = fs::absolute(file).lexically_normal();
     plan.name = root.attribute("name").value_or(file.stem().string());
@@ -89,6 +115,7 @@ SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
     std::vector<Vary> grid;
     std::vector<Variant> variants;
     bool have_repeats = false;
+    int grid_line = 0;
     std::string out_text, store_text;
     for (const auto& c : root.children()) {
         const std::string_view nm = c.name();
@@ -107,10 +134,12 @@ SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
         } else if (nm == "set") {
             plan.common.push_back(checked_override(c, c.text(), plan.file.parent_path()));
         } else if (nm == "grid") {
+            grid_line = c.line();
             for (const auto& v : c.children()) {
                 if (v.name() != "vary") throw v.error("unknown element <" + std::string(v.name()) + "> in <grid>; allowed: vary");
-                Vary vary{v.attribute("key").value_or(""), words(v.text())};
-                checked_override(v, vary.key + "=x", plan.file.parent_path());
+                if (!v.attribute("key")) throw v.error("<vary> needs attribute key=\"Section.key\"");
+                Vary vary{*v.attribute("key"), words(v.text())};
+                checked_override(v, vary.key + "=", plan.file.parent_path(), false);   // the key alone
                 for (auto& value : vary.values)
                     value = checked_override(v, vary.key + "=" + value, plan.file.parent_path()).substr(vary.key.size() + 1);
                 if (vary.values.empty()) throw v.error("<vary key=\"" + vary.key + "\"> has no values");
@@ -121,7 +150,7 @@ SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
                 grid.push_back(std::move(vary));
             }
         } else if (nm == "variant") {
-            Variant v{c.attribute("name").value_or(""), {}};
+            Variant v{c.attribute("name").value_or(""), {}, c.line()};
             if (v.name.empty() || folder_safe(v.name) != v.name)
                 throw c.error("<variant name=\"" + v.name + "\">: give a name of letters, digits and _ . = + -");
             for (const auto& o : variants)
@@ -155,10 +184,15 @@ SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
     std::size_t points = 1;
     for (const auto& g : grid) points *= g.values.size();
     if (points * variants.size() > 100000) throw root.error("more than 100000 configurations");
+    // Each run is a folder and a line of index.csv: a study past a million is a typo.
+    if (points * variants.size() * static_cast<std::size_t>(plan.repeats) > 1000000)
+        throw root.error(fmt::format("{} configurations x {} repeats is more than 1000000 runs",
+                                     points * variants.size(), plan.repeats));
     std::set<std::string> names;
     for (const auto& v : variants)
         for (std::size_t p = 0; p < points; ++p) {
             SweepConfig cfg;
+            cfg.line = v.line > 0 ? v.line : grid_line > 0 ? grid_line : root.line();
             std::string name = v.name;
             std::size_t rest = p;
             std::vector<std::size_t> pick(grid.size());
@@ -185,6 +219,18 @@ SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
     if (!store_text.empty()) plan.store = (plan.study / store_text).lexically_normal();
     return plan;
 }
+
+} // namespace
+
+SweepPlan read_sweep_file(const fs::path& file, const fs::path& output) {
+    return parse_sweep(io::xml::read_file(file), file, output);
+}
+
+SweepPlan parse_sweep(std::string_view text, const fs::path& file, const fs::path& output) {
+    return io::xml::read_strict(text, file.string(), io::xml::sweep_format(),
+                                [&](const io::xml::Document& doc) { return read_sweep(doc, file, output); });
+}
+
 
 std::vector<SweepTask> SweepPlan::tasks() const {
     std::vector<SweepTask> out;

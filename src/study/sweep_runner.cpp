@@ -16,6 +16,8 @@
 
 #include "cic/core/error.hpp"
 #include "cic/io/settings_io.hpp"
+#include "cic/io/settings_table.hpp"
+#include "cic/run/settings_diff.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/run/run.hpp"
 #include "cic/run/self_path.hpp"
@@ -51,17 +53,34 @@ std::string shell_words(const std::vector<std::string>& argv) {
 } // namespace
 
 // Loads and checks the settings of every configuration (seeds change no input)
-// before anything is written.
+// before anything is written; a refusal names the line that defines the
+// configuration. Two configurations that would run the same settings are
+// refused too, naming both: they would only repeat each other's runs.
 void check_every_configuration(const SweepPlan& plan) {
     std::vector<bool> seen(plan.configs.size());
+    std::map<std::string, std::size_t> by_settings;   // every key's value, seed aside -> configuration
     for (const SweepTask& t : plan.tasks()) {
         if (seen[t.config]) continue;
         seen[t.config] = true;
+        const SweepConfig& config = plan.configs[t.config];
+        io::Settings settings;
         try {
-            prepare_run(io::load_settings(plan.base, plan.overrides(t)));
+            settings = io::load_settings(plan.base, plan.overrides(t));
+            prepare_run(settings);
         } catch (const InputError& e) {
-            throw InputError(fmt::format("configuration {} of {}: {}", plan.configs[t.config].name,
-                                         plan.file.string(), e.what()));
+            throw InputError(fmt::format("configuration {}: {}", config.name, e.what()), plan.file.string(),
+                             config.line);
+        }
+        settings = result_settings(settings);
+        settings.experiment.seed = 0;
+        std::string text;
+        for (const auto& k : io::settings_table()) text += k.section + "." + k.key + "=" + k.get(settings) + "\n";
+        if (auto [it, fresh] = by_settings.emplace(text, t.config); !fresh) {
+            const SweepConfig& first = plan.configs[it->second];
+            throw InputError(fmt::format("configurations {} (line {}) and {} would run the same settings; remove "
+                                         "one, or make them differ",
+                                         first.name, first.line, config.name),
+                             plan.file.string(), config.line);
         }
     }
 }

@@ -107,6 +107,20 @@ TEST(FuzzRegressions, ReproducersAreHandledCleanly) {
         }
 }
 
+// The strictness classes of issue 24 (documents that are not what they claim,
+// entities, unknown or misspelt attributes, an all-fixed robot): each was
+// accepted, or refused without a line; each must now be refused.
+TEST(FuzzRegressions, Issue24InputsAreRefused) {
+    std::size_t seen = 0;
+    for (const auto& [target, check] : checks())
+        for (const auto& f : files_of("regressions", target)) {
+            if (f.filename().string().rfind("issue24-", 0) != 0) continue;
+            ++seen;
+            EXPECT_EQ(check(read_bytes(f)).verdict, fuzz::Verdict::Rejected) << f;
+        }
+    EXPECT_GE(seen, 8u);
+}
+
 // robot_to_xml wrote centre="0" for an unnamed centre module 0, but the reader
 // looks names up first and found the module named "0" (an attached module):
 // the written file did not read back. Fixed in robot_xml.cpp (centre_reference).

@@ -74,11 +74,11 @@ TEST(RobotXml, RoundTrips) {
 
 TEST(RobotXml, ErrorsNameFileAndLine) {
     const std::string a = "  <module name=\"a\" x=\"0\" y=\"0\" z=\"0\" axis=\"fixed\" attach=\"none\"/>\n";
-    EXPECT_EQ(error_of(kHeader + a + "</robot>"), "");
+    EXPECT_EQ(error_of(kHeader + a + "  <module name=\"b\" x=\"1\" y=\"0\" z=\"0\" axis=\"y\" attach=\"-x\"/>\n</robot>"), "");
     EXPECT_EQ(error_of(kHeader + a + "  <module name=\"b\" x=\"1\" y=\"0\" z=\"0\" axis=\"w\" attach=\"-x\"/>\n</robot>"),
-              "bad.xml:3: unknown axis \"w\" (expected x, y, z or fixed)");
+              "bad.xml:3: <module> axis=\"w\": expected x, y, z or fixed");
     EXPECT_EQ(error_of(kHeader + a + "  <module name=\"b\" x=\"1\" y=\"0\" z=\"0\" axis=\"y\" attach=\"up\"/>\n</robot>")
-                  .rfind("bad.xml:3: unknown attach \"up\"", 0), 0u);
+                  .rfind("bad.xml:3: <module> attach=\"up\": expected +x", 0), 0u);
     const std::string overlap =
         error_of(kHeader + a + "\n  <module name=\"b\" x=\"0\" y=\"0\" z=\"0\" axis=\"y\" attach=\"-x\"/>\n</robot>");
     EXPECT_EQ(overlap.rfind("bad.xml:4: invalid robot: overlapping cells", 0), 0u) << overlap;
@@ -100,8 +100,9 @@ TEST(RobotXml, ErrorsNameFileAndLine) {
     EXPECT_EQ(error_of(kHeader + "  <module name=\"a\" y=\"0\" z=\"0\" axis=\"fixed\" attach=\"none\"/>\n</robot>"),
               "bad.xml:2: <module> needs attribute x");
     EXPECT_NE(error_of(kHeader + a + a + "</robot>").find("duplicate module name \"a\""), std::string::npos);
-    EXPECT_NE(error_of(kHeader + "  <leg/>\n</robot>").find("bad.xml:2: unexpected element <leg>"), std::string::npos);
-    EXPECT_NE(error_of("<robots/>").find("expected root element <robot>"), std::string::npos);
+    EXPECT_NE(error_of(kHeader + "  <leg/>\n</robot>").find("bad.xml:2: unknown element <leg> in <robot> (allowed: module)"),
+              std::string::npos);
+    EXPECT_EQ(error_of("<robots/>"), "bad.xml:1: not a robot file: the root element is <robots>; a robot file's is <robot>");
     EXPECT_NE(error_of("<robot").find("bad.xml"), std::string::npos);
     EXPECT_THROW(io::read_robot_file(kRobots / "no_such_robot.xml"), InputError);
 }

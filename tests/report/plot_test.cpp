@@ -69,7 +69,10 @@ TEST(StatsCsv, ErrorsNameTheFileAndLine) {
     write_text(f, "generation,best\n0,1\n");
     EXPECT_NE(input_error([&] { read_stats_csv(f); }).find(f + ":1: header has no column 'mean'"), std::string::npos);
     write_text(f, kHeader + "0,1,1,1,1,1,1,1,1,1,1,1\n1,1,x,1,1,1,1,1,1,1,1,1\n");
-    EXPECT_NE(input_error([&] { read_stats_csv(f); }).find(f + ":3: column 'mean': 'x' is not a number"),
+    EXPECT_NE(input_error([&] { read_stats_csv(f); }).find(f + ":3: column 'mean': 'x' is not a finite number"),
+              std::string::npos);
+    write_text(f, kHeader + "0,1,1,1,1,1,1,1,1,1,1,1\n1,inf,1,1,1,1,1,1,1,1,1,1\n");
+    EXPECT_NE(input_error([&] { read_stats_csv(f); }).find(f + ":3: column 'best': 'inf' is not a finite number"),
               std::string::npos);
     write_text(f, kHeader + "0,1,1\n");
     EXPECT_NE(input_error([&] { read_stats_csv(f); }).find(f + ":2: 3 values, expected 12"), std::string::npos);

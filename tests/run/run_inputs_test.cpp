@@ -4,6 +4,10 @@
 // same checks. Paths are resolved once and stored absolute.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
 #include <regex>
 
 #include "support/run_helpers.hpp"
@@ -88,7 +92,7 @@ TEST_F(RunInputs, BadRobotsAreRefusedBeforeAFolderExists) {
     write_text(dir / "long.xml", snake + "</robot>\n");
     const std::vector<std::pair<std::string, std::string>> cases = {
         {(dir / "missing.xml").string(), "cannot read"},
-        {(dir / "brick.xml").string(), "has no joint"},
+        {(dir / "brick.xml").string(), "brick.xml:1: <Simulator> robotFile: invalid robot: every module is fixed"},
         {(dir / "long.xml").string(), "past the limit of 512 modules per robot"},
     };
     for (const auto& [file, why] : cases) {
@@ -136,6 +140,47 @@ TEST_F(RunInputs, RelativePathsFromTheCommandLineAreStoredAbsolute) {
     EXPECT_EQ(run_command("trace '" + run.string() + "' --out '" + (dir / "t.csv").string() + "'", dir / "trace.log"),
               0)
         << read_text(dir / "trace.log");
+}
+
+} // namespace
+} // namespace cic
+
+namespace cic {
+namespace {
+
+// A full disk can still hold a new folder but not a file in it: the run was
+// refused only at its first write, and left an empty run folder behind. Needs
+// root, for a small tmpfs (CI runs as root).
+TEST(RunFolder, AFullDiskKeepsNoRunFolder) {
+    if (::geteuid() != 0) GTEST_SKIP() << "needs root to mount a small tmpfs";
+    const auto dir = temp_dir("full-disk");
+    const fs::path disk = dir / "disk";
+    fs::create_directories(disk);
+    if (std::system(("mount -t tmpfs -o size=256k tmpfs '" + disk.string() + "'").c_str()) != 0)
+        GTEST_SKIP() << "cannot mount a tmpfs here";
+    // Fill it: write until the disk refuses.
+    {
+        std::FILE* f = std::fopen((disk / "filler").c_str(), "wb");
+        ASSERT_NE(f, nullptr);
+        const std::string block(4096, 'x');
+        while (std::fwrite(block.data(), 1, block.size(), f) == block.size() && std::fflush(f) == 0) {
+        }
+        std::fclose(f);
+    }
+    fs::create_directories(disk / "out");   // a folder still fits
+    write_text(dir / "tiny.xml", tiny_hypergp_settings(2, 1));
+    const int rc = run_command("--quiet --settings " + (dir / "tiny.xml").string() + " --output " +
+                                   (disk / "out").string(),
+                               dir / "log");
+    const std::string log = read_text(dir / "log");
+    const bool empty = fs::is_empty(disk / "out");
+    std::system(("umount '" + disk.string() + "'").c_str());
+    EXPECT_EQ(rc, 2) << log;
+    EXPECT_NE(log.find("cannot write in the output folder: No space left on device; nothing was kept"),
+              std::string::npos)
+        << log;
+    EXPECT_TRUE(empty) << "a run folder was left on the full disk";
+    fs::remove_all(dir);
 }
 
 } // namespace

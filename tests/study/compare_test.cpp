@@ -166,8 +166,20 @@ TEST(CompareIndex, ErrorsNameTheFileAndLine) {
     EXPECT_NE(input_error([&] { read_study_index(study); }).find(f + ":2: column 'status': 'finished' is not one of"),
               std::string::npos);
     write_text(f, kIndexHeader + row + "runs/a/s2,a,3,x,2,done,high,3,30,2.5\n");
-    EXPECT_NE(input_error([&] { read_study_index(study); }).find(f + ":3: column 'final_best': 'high' is not a number"),
+    EXPECT_NE(input_error([&] { read_study_index(study); }).find(f + ":3: column 'final_best': 'high' is not a finite number"),
               std::string::npos);
+    // Was read, and printed as "inf ± -nan" by cic compare.
+    for (const char* cell : {"inf", "-inf", "nan", "1e999"}) {
+        write_text(f, kIndexHeader + row + "runs/a/s2,a,3,x,2,done," + cell + ",3,30,2.5\n");
+        EXPECT_NE(input_error([&] { read_study_index(study); })
+                      .find(f + ":3: column 'final_best': '" + cell + "' is not a finite number"),
+                  std::string::npos)
+            << cell;
+    }
+    write_text(f, kIndexHeader + row + "runs/a/s2,a,3,x,2,done,0.5,3,30,inf\n");
+    const Result r = cic("compare " + study.string());
+    EXPECT_EQ(r.rc, 2);
+    EXPECT_NE(r.err.find(f + ":3: column 'wall_seconds': 'inf' is not a finite number"), std::string::npos) << r.err;
     write_text(f, kIndexHeader + "runs/a/s1,a,3,\"x,1,done,0.5,3,30,2.5\n");
     EXPECT_NE(input_error([&] { read_study_index(study); }).find(f + ":2: a quoted cell has no closing quote"),
               std::string::npos);

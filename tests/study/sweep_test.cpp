@@ -144,10 +144,17 @@ TEST(SweepFile, MistakesAreRefusedWithFileAndLine) {
     const std::string good = sweep_text(dir / "study");
     const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
         {{"<repeats count=\"3\" firstSeed=\"4\"/>", "<repeats count=\"zero\"/>"}, "s.xml:13: <repeats> count=\"zero\""},
-        {{"<grid>", "<grid><vary key=\"GP.nonsense\">1</vary>"}, "s.xml:9: <set> names no settings key: <GP> nonsense"},
+        {{"<grid>", "<grid><vary key=\"GP.nonsense\">1</vary>"}, "s.xml:9: <vary> names no settings key: <GP> nonsense"},
+        {{"<vary key=\"GP.elitism\">0 1</vary>", "<vary key=\"GP.elitism\">0 x</vary>"},
+         "s.xml:10: <vary> <GP> elitism = \"x\": not an integer (allowed: integer in [0, 10000000])"},
+        {{"<set>GP.tournament_size=3</set>", "<set>GP.tournament_size=-3</set>"},
+         "s.xml:5: <set> <GP> tournament_size = \"-3\""},
         {{"<vary key=\"GP.elitism\">0 1</vary>", "<vary key=\"GP.elitism\">0 0</vary>"}, "lists a value twice"},
         {{"<set>GP.tournament_size=3</set>", "<sett>GP.tournament_size=3</sett>"}, "s.xml:5: unknown element <sett>"},
         {{"r0_settings.xml", "no_such_settings.xml"}, "s.xml:2: <base>"},
+        // The reader is as strict as every other (tests/io/strict_xml_test.cpp).
+        {{"<grid>", "oops <grid>"}, "stray text \"oops\" in <sweep>, which holds only elements"},
+        {{"<repeats count=\"3\"", "<repeats cuont=\"3\""}, "s.xml:13: <repeats> has no attribute cuont; did you mean count?"},
     };
     for (const auto& [edit, why] : cases) {
         std::string text = good;
@@ -162,8 +169,56 @@ TEST(SweepFile, MistakesAreRefusedWithFileAndLine) {
     text.replace(text.find("0 1</vary>"), 3, "0 9");
     write_text(dir / "s.xml", text);
     EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "log"), 2);
-    EXPECT_NE(read_text(dir / "log").find("elitism"), std::string::npos) << read_text(dir / "log");
+    EXPECT_NE(read_text(dir / "log").find("s.xml:9: configuration elitism=9+sampleAverageCount=1: "), std::string::npos)
+        << read_text(dir / "log");
     EXPECT_FALSE(fs::exists(dir / "study"));
+    fs::remove_all(dir);
+}
+
+// A sweep owns its seeds: <repeats> gives them, and a seed set anywhere else
+// was silently replaced (a <vary> on it made configurations that ran the same seeds).
+TEST(SweepFile, SeedsComeOnlyFromRepeats) {
+    const auto dir = temp_dir("sweep-seeds");
+    const std::string good = sweep_text(dir / "study");
+    const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
+        {{"<set>GP.tournament_size=3</set>", "<set>Experiment.seed=7</set>"},
+         "s.xml:5: <set> sets Experiment.seed, which a sweep owns: each run's seed comes from <repeats"},
+        {{"<vary key=\"GP.elitism\">0 1</vary>", "<vary key=\"Experiment.seed\">1 2</vary>"},
+         "s.xml:10: <vary> sets Experiment.seed, which a sweep owns"},
+        {{"<grid>", "<variant name=\"v\"><set>Experiment.seed=3</set></variant><grid>"},
+         "s.xml:9: <set> sets Experiment.seed, which a sweep owns"},
+    };
+    for (const auto& [edit, why] : cases) {
+        std::string text = good;
+        text.replace(text.find(edit.first), edit.first.size(), edit.second);
+        write_text(dir / "s.xml", text);
+        EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "log"), 2) << edit.second;
+        EXPECT_NE(read_text(dir / "log").find(why), std::string::npos) << read_text(dir / "log");
+        EXPECT_FALSE(fs::exists(dir / "study"));
+    }
+    fs::remove_all(dir);
+}
+
+// Two configurations with the same effective settings would only repeat each
+// other's runs: refused, naming both, even when they are written differently.
+TEST(SweepFile, DuplicateConfigurationsAreRefusedNamingBoth) {
+    const auto dir = temp_dir("sweep-duplicates");
+    std::string text = sweep_text(dir / "study");
+    const auto grid = text.find("<grid>");
+    text.replace(grid, text.find("</grid>") + 7 - grid,
+                 "<variant name=\"plain\"/>\n  <variant name=\"three\"><set>GP.tournament_size=3</set></variant>");
+    write_text(dir / "s.xml", text);
+    EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "log"), 2);
+    EXPECT_NE(read_text(dir / "log").find("s.xml:10: configurations plain (line 9) and three would run the same "
+                                          "settings"),
+              std::string::npos)
+        << read_text(dir / "log");
+    EXPECT_FALSE(fs::exists(dir / "study"));
+    // Differing in a stop condition is a different configuration.
+    const std::string same = "<set>GP.tournament_size=3</set></variant>";
+    text.replace(text.find(same), same.size(), "<set>Control.maximumIterations=2</set></variant>");
+    write_text(dir / "s.xml", text);
+    EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --dry-run", dir / "log"), 0) << read_text(dir / "log");
     fs::remove_all(dir);
 }
 

@@ -13,6 +13,13 @@
 
 namespace cic::io {
 
+namespace xml {
+struct Format;
+}
+// Settings files as the strict reader knows them (io/strict_xml.hpp): the
+// schema generated from the table, and messages that name the right section.
+const xml::Format& settings_format();
+
 // Reads a settings file onto the defaults and validates it (cross-field checks
 // included). Relative paths inside the file are resolved against its folder.
 Settings read_settings(const std::filesystem::path& file);

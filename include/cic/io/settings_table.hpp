@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cic/io/did_you_mean.hpp"   // edit_distance, for the nearest key
 #include "cic/io/settings.hpp"
 
 namespace cic::io {
@@ -66,8 +67,5 @@ const SettingKey* find_setting(std::string_view section, std::string_view key);
 std::string describe_allowed(const SettingKey& k);
 // Canonical text of k's default (its value in a default-constructed Settings).
 std::string default_text(const SettingKey& k);
-
-// Levenshtein distance, case-insensitive; used to suggest the nearest key.
-std::size_t edit_distance(std::string_view a, std::string_view b);
 
 } // namespace cic::io

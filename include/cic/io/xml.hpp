@@ -11,8 +11,9 @@
 
 #include "cic/core/error.hpp"
 
-struct _xmlDoc;   // libxml2's xmlDoc / xmlNode, kept out of this header
+struct _xmlDoc;   // libxml2's xmlDoc / xmlNode / xmlSchema, kept out of this header
 struct _xmlNode;
+struct _xmlSchema;
 
 namespace cic::io::xml {
 
@@ -80,9 +81,26 @@ public:
     std::vector<std::string> validate(const std::filesystem::path& xsd) const;
 
 private:
+    friend class Schema;
     Document(_xmlDoc* doc, std::string file);
     _xmlDoc* doc_ = nullptr;
     std::unique_ptr<std::string> file_;   // stable address: doc_->_private points at it
+};
+
+// A compiled XSD schema. Compile once and share: validating does not change it.
+class Schema {
+public:
+    // `name` stands for the schema in messages. A broken schema throws InputError.
+    Schema(std::string_view xsd_text, const std::string& name);
+    Schema(const Schema&) = delete;
+    Schema& operator=(const Schema&) = delete;
+    ~Schema();
+
+    // One "FILE:LINE: message" per problem (empty = valid).
+    std::vector<std::string> validate(const Document& doc) const;
+
+private:
+    _xmlSchema* schema_ = nullptr;
 };
 
 // Writes FILE.tmp-<pid>, fsyncs it, then renames it over FILE, so readers never

@@ -82,6 +82,8 @@ bool is_study_folder(const std::filesystem::path& path);
 // the file and line: missing file or column, a wrong number of cells, an unknown
 // status, a non-numeric number cell, an empty run_dir or config.
 StudyIndex read_study_index(const std::filesystem::path& study);
+// The same on the text of an index.csv (`study` names the folder; messages name study/index.csv).
+StudyIndex parse_study_index(std::string_view text, const std::filesystem::path& study);
 
 // Configurations of a study in order of first appearance, with their runs
 // (status done only unless include_unfinished).

@@ -21,6 +21,7 @@ struct SweepConfig {
     std::string name;                                        // folder-safe, unique
     std::vector<std::pair<std::string, std::string>> varied; // Section.key -> value (grid, then "variant")
     std::vector<std::string> overrides;                      // Section.key=value for this configuration
+    int line = 0;   // where the sweep file defines it (its <variant>, else its <grid>, else <sweep>)
 };
 
 struct SweepTask {
@@ -57,6 +58,9 @@ struct SweepPlan {
 // settings/cic-sweep.xsd); `output` (if not empty) replaces its <output>.
 // Throws cic::InputError with file and line.
 SweepPlan read_sweep_file(const std::filesystem::path& file, const std::filesystem::path& output = {});
+// The same on a sweep file's text; `file` names it and anchors its relative paths.
+SweepPlan parse_sweep(std::string_view text, const std::filesystem::path& file,
+                      const std::filesystem::path& output = {});
 
 // Where a task stands, from its run folder alone. Mismatched: the study's own
 // run folder (not a store link) holds a run of other settings than the sweep
