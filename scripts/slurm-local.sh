@@ -1,15 +1,23 @@
 #!/usr/bin/env bash
-# A real, single-node Slurm on this machine, for tests, CI and trying out job
-# scripts: Debian 12's slurm-wlm (slurmctld + slurmd + client tools) and munge,
-# started without systemd.
+# A real Slurm on this machine, for tests, CI and trying out job scripts:
+# Debian 12's slurm-wlm (slurmctld + slurmd + client tools) and munge, started
+# without systemd; one node, or N nodes in network namespaces.
 #
 #   scripts/slurm-local.sh install   apt-get install slurm-wlm and munge if missing
 #   scripts/slurm-local.sh start     configure and start munged, slurmctld, slurmd;
 #                                    wait for the node; smoke test (sbatch, srun)
+#   scripts/slurm-local.sh start --nodes N   N nodes cic-n1..N, each a slurmd in
+#                                    its own network namespace (scripts/slurm-netns.sh)
 #   scripts/slurm-local.sh start --fresh   the same from an empty state: cancels
 #                                    all jobs, forgets them, empties the logs (CI)
-#   scripts/slurm-local.sh stop      stop the three daemons
+#   scripts/slurm-local.sh stop      stop the daemons, remove the namespaces
 #   scripts/slurm-local.sh status    daemons, sinfo, squeue (exit 0 when all run)
+#   scripts/slurm-local.sh nodes     the node names, one per line
+#   scripts/slurm-local.sh kill-node NODE    lose a node: SIGKILL to its slurmd and
+#                                    every job process on it, and mark it DOWN
+#   scripts/slurm-local.sh revive-node NODE  start its slurmd again and resume it
+#   scripts/slurm-local.sh rsh NODE COMMAND...  run a command on a node (Open MPI's
+#                                    plm_rsh_agent for mpirun --hostfile across nodes)
 #
 # Runs as root. Idempotent: `start` on a running cluster checks it and runs the
 # smoke test again; a changed configuration restarts slurmctld and slurmd.
@@ -28,6 +36,8 @@
 set -euo pipefail
 
 PROG=slurm-local.sh
+# shellcheck source=scripts/slurm-netns.sh
+. "$(dirname "${BASH_SOURCE[0]}")/slurm-netns.sh"
 # The daemons, munged and runuser live in /usr/sbin, not on every user's PATH.
 export PATH="$PATH:/usr/sbin:/sbin"
 DIR=${CIC_SLURM_DIR:-/tmp/cic-slurm}
@@ -39,13 +49,14 @@ READY_TIMEOUT=${CIC_SLURM_TIMEOUT:-60}
 # How slurmd finds a job's processes: pgid (default, works anywhere), or
 # cgroup as on real clusters (needs a usable cgroup hierarchy), or linuxproc.
 PROCTRACK=${CIC_SLURM_PROCTRACK:-pgid}
-PACKAGES=(slurm-wlm slurmctld slurmd slurm-client munge)
+# iproute2: ip, for the namespace nodes of start --nodes N.
+PACKAGES=(slurm-wlm slurmctld slurmd slurm-client munge iproute2)
 
 say() { echo "$PROG: $*" >&2; }
 die() { say "error: $*"; exit 1; }
 
 usage() {
-  sed -n '2,19p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2
+  sed -n '2,27p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2
   exit 2
 }
 
@@ -60,11 +71,14 @@ case "$PROCTRACK" in pgid | cgroup | linuxproc) ;; *) die "CIC_SLURM_PROCTRACK m
 
 # --- daemons ----------------------------------------------------------------
 
+# Daemons: munged, slurmctld, slurmd (the single node) and slurmd@NODE (a
+# namespace node; its files carry the node name, as slurm.conf's %n does).
 pidfile_of() {
   case "$1" in
     munged) echo "$DIR/munge/munged.pid" ;;
     slurmctld) echo "$DIR/run/slurmctld.pid" ;;
     slurmd) echo "$DIR/run/slurmd.pid" ;;
+    slurmd@*) echo "$DIR/run/slurmd-${1#slurmd@}.pid" ;;
   esac
 }
 
@@ -73,7 +87,28 @@ logfile_of() {
     munged) echo "$DIR/munge/munged.log" ;;
     slurmctld) echo "$DIR/log/slurmctld.log" ;;
     slurmd) echo "$DIR/log/slurmd.log" ;;
+    slurmd@*) echo "$DIR/log/slurmd-${1#slurmd@}.log" ;;
   esac
+}
+
+# The node count of the cluster: 0 for the single node (this machine), N for
+# the namespace nodes cic-n1..N; start --nodes writes it, the others read it.
+NODES_FILE=$DIR/nodes
+cluster_node_count() { cat "$NODES_FILE" 2>/dev/null || echo 0; }
+
+# The slurmd daemon names of the cluster.
+slurmd_daemons() {
+  local n k
+  n=$(cluster_node_count)
+  if [ "$n" -eq 0 ]; then echo slurmd; return; fi
+  for ((k = 1; k <= n; k++)); do echo "slurmd@$(netns_node_name "$k")"; done
+}
+
+cluster_nodes() {
+  local d
+  for d in $(slurmd_daemons); do
+    if [ "$d" = slurmd ]; then node_name; else echo "${d#slurmd@}"; fi
+  done
 }
 
 # A process that exists and is not a zombie (a killed daemon stays one until
@@ -96,16 +131,21 @@ daemon_pid() {
   alive "$pid" || return 1
   comm=$(cat "/proc/$pid/comm" 2>/dev/null) || return 1
   # /proc/PID/comm of slurmd-wlm (Debian's alternative for slurmd) is slurmd-wlm
-  case "$comm" in "$1" | "$1"-wlm) echo "$pid" ;; *) return 1 ;; esac
+  local base=${1%@*}
+  case "$comm" in "$base" | "$base"-wlm) echo "$pid" ;; *) return 1 ;; esac
 }
 
 # Pids of the same program that this script did not start (other pid file or
 # an init.d script): they hold the ports and the socket, so they are reported.
 foreign_pids() {
-  local own p
+  local own p d
   own=$(daemon_pid "$1" || true)
+  if [ "$1" = slurmd ]; then   # the namespace nodes' slurmd are ours too
+    for d in $(ls "$DIR"/run/slurmd-*.pid 2>/dev/null); do own="$own $(tr -dc '0-9' <"$d")"; done
+  fi
   for p in $(pgrep -x "$1" 2>/dev/null) $(pgrep -x "$1-wlm" 2>/dev/null); do
-    [ "$p" = "${own:-}" ] || ! alive "$p" || printf '%s ' "$p"
+    case " $own " in *" $p "*) continue ;; esac
+    ! alive "$p" || printf '%s ' "$p"
   done
 }
 
@@ -194,16 +234,20 @@ node_resources() {
 }
 
 write_conf() {
-  local node cpus mem res
+  local node cpus mem res n ctld_addr nodelist k
   node=$(node_name)
   res=$(node_resources)
   cpus=${res% *}
   mem=${res#* }
+  n=$(cluster_node_count)
+  ctld_addr=127.0.0.1
+  [ "$n" -eq 0 ] || ctld_addr=$NETNS_HOST_ADDR
   cat <<EOF
-# Written by scripts/slurm-local.sh (cic): a single-node test cluster on this
-# machine. Rewritten by every 'slurm-local.sh start'; edit the script instead.
+# Written by scripts/slurm-local.sh (cic): a test cluster on this machine, one
+# node or $n in network namespaces. Rewritten by every 'slurm-local.sh start';
+# edit the script instead.
 ClusterName=cic
-SlurmctldHost=$node(127.0.0.1)
+SlurmctldHost=$node($ctld_addr)
 SlurmUser=root
 SlurmdUser=root
 AuthType=auth/munge
@@ -215,11 +259,24 @@ SlurmctldPort=6817
 SlurmdPort=6818
 
 StateSaveLocation=$DIR/state
-SlurmdSpoolDir=$DIR/spool
 SlurmctldPidFile=$DIR/run/slurmctld.pid
-SlurmdPidFile=$DIR/run/slurmd.pid
 SlurmctldLogFile=$DIR/log/slurmctld.log
+EOF
+  if [ "$n" -eq 0 ]; then
+    cat <<EOF
+SlurmdSpoolDir=$DIR/spool
+SlurmdPidFile=$DIR/run/slurmd.pid
 SlurmdLogFile=$DIR/log/slurmd.log
+EOF
+  else
+    cat <<EOF
+# %n: the node name, so that the namespace nodes' slurmd keep apart files.
+SlurmdSpoolDir=$DIR/spool/%n
+SlurmdPidFile=$DIR/run/slurmd-%n.pid
+SlurmdLogFile=$DIR/log/slurmd-%n.log
+EOF
+  fi
+  cat <<EOF
 SlurmctldDebug=info
 SlurmdDebug=info
 
@@ -263,9 +320,21 @@ InactiveLimit=0
 MinJobAge=300
 ReturnToService=2
 
-NodeName=$node NodeAddr=127.0.0.1 CPUs=$cpus RealMemory=$mem State=UNKNOWN
-PartitionName=debug Nodes=$node Default=YES MaxTime=INFINITE State=UP PriorityTier=1
-PartitionName=urgent Nodes=$node Default=NO MaxTime=INFINITE State=UP PriorityTier=10 PreemptMode=OFF
+EOF
+  if [ "$n" -eq 0 ]; then
+    echo "NodeName=$node NodeAddr=127.0.0.1 CPUs=$cpus RealMemory=$mem State=UNKNOWN"
+    nodelist=$node
+  else
+    # Every node offers the machine's CPUs and a share of its memory: the nodes
+    # share the cores, as the jobs of a busy cluster node would.
+    for ((k = 1; k <= n; k++)); do
+      echo "NodeName=$(netns_node_name "$k") NodeAddr=$(netns_node_addr "$k") NodeHostname=$(netns_node_name "$k") CPUs=$cpus RealMemory=$((mem / n)) State=UNKNOWN"
+    done
+    nodelist="${NETNS_PREFIX}[1-$n]"
+  fi
+  cat <<EOF
+PartitionName=debug Nodes=$nodelist Default=YES MaxTime=INFINITE State=UP PriorityTier=1
+PartitionName=urgent Nodes=$nodelist Default=NO MaxTime=INFINITE State=UP PriorityTier=10 PreemptMode=OFF
 EOF
 }
 
@@ -331,25 +400,40 @@ start_slurmctld() {
   fail_daemon slurmctld "slurmctld does not answer 'scontrol ping' after ${READY_TIMEOUT} s"
 }
 
+# Starts one slurmd: `slurmd` on this machine, `slurmd@NODE` in NODE's namespace.
 start_slurmd() {
-  if ! daemon_pid slurmd >/dev/null; then
+  local d=${1:-slurmd}
+  if ! daemon_pid "$d" >/dev/null; then
     local other
     other=$(foreign_pids slurmd)
     [ -z "$other" ] || die "slurmd already runs (pid $other) but was not started by $PROG: stop it first"
-    say "starting slurmd"
-    slurmd -N "$(node_name)" 2>>"$(logfile_of slurmd)" 9>&- || fail_daemon slurmd "slurmd exited with status $?"
+    say "starting $d"
+    if [ "$d" = slurmd ]; then
+      slurmd -N "$(node_name)" 2>>"$(logfile_of "$d")" 9>&- || fail_daemon "$d" "slurmd exited with status $?"
+    else
+      mkdir -p "$DIR/spool/${d#slurmd@}"
+      netns_exec "${d#slurmd@}" slurmd -N "${d#slurmd@}" 2>>"$(logfile_of "$d")" 9>&- ||
+        fail_daemon "$d" "slurmd exited with status $?"
+    fi
     sleep 0.5
-    daemon_pid slurmd >/dev/null || fail_daemon slurmd "slurmd died after starting"
+    daemon_pid "$d" >/dev/null || fail_daemon "$d" "slurmd died after starting"
   fi
 }
 
-node_state() { sinfo -h -N -n "$(node_name)" -o '%T' 2>/dev/null | head -n 1; }
+node_state() { sinfo -h -N -n "$1" -o '%T' 2>/dev/null | head -n 1; }
+
+slurmd_of() { if [ "$(cluster_node_count)" -eq 0 ]; then echo slurmd; else echo "slurmd@$1"; fi; }
+
+wait_nodes_ready() {
+  local node
+  for node in $(cluster_nodes); do wait_node_ready "$node"; done
+}
 
 wait_node_ready() {
-  local node i state resumed=0
-  node=$(node_name)
+  local node=$1 i state resumed=0 d
+  d=$(slurmd_of "$node")
   for ((i = 0; i < READY_TIMEOUT * 2; i++)); do
-    state=$(node_state)
+    state=$(node_state "$node")
     case "$state" in
       idle | mixed | allocated | completing) say "node $node is $state"; return 0 ;;
       *drain*)
@@ -362,14 +446,14 @@ wait_node_ready() {
         fi
         ;;
     esac
-    daemon_pid slurmd >/dev/null || fail_daemon slurmd "slurmd died while the node registered"
+    daemon_pid "$d" >/dev/null || fail_daemon "$d" "slurmd died while the node registered"
     daemon_pid slurmctld >/dev/null || fail_daemon slurmctld "slurmctld died while the node registered"
     sleep 0.5
   done
   say "error: node $node is not idle after ${READY_TIMEOUT} s: state '${state:-unknown}'"
   scontrol show node "$node" 2>&1 | sed 's/^/    /' >&2 || true
   log_tail slurmctld 15
-  log_tail slurmd 15
+  log_tail "$d" 15
   exit 1
 }
 
@@ -380,17 +464,18 @@ wait_node_ready() {
 # node failure: requeuable jobs go back to pending, the others end NODE_FAIL.
 recover_lost_jobs() {
   local node jobs p
-  node=$(node_name)
-  jobs=$(squeue -h -t R,CG,S -w "$node" -o %i 2>/dev/null | tr '\n' ' ')
-  [ -n "${jobs// /}" ] || return 0
   for p in $(pgrep -x slurmstepd); do
     alive "$p" && return 0
   done
-  say "jobs $jobs are recorded as running but their processes are gone: node down and up, so that they are requeued or failed"
-  scontrol update NodeName="$node" State=DOWN Reason="slurm-local.sh: job processes lost" || true
-  # With ReturnToService=2 the node is often back already; RESUME then fails.
-  scontrol update NodeName="$node" State=RESUME 2>/dev/null || true
-  wait_node_ready
+  for node in $(cluster_nodes); do
+    jobs=$(squeue -h -t R,CG,S -w "$node" -o %i 2>/dev/null | tr '\n' ' ')
+    [ -n "${jobs// /}" ] || continue
+    say "jobs $jobs are recorded as running on $node but their processes are gone: node down and up, so that they are requeued or failed"
+    scontrol update NodeName="$node" State=DOWN Reason="slurm-local.sh: job processes lost" || true
+    # With ReturnToService=2 the node is often back already; RESUME then fails.
+    scontrol update NodeName="$node" State=RESUME 2>/dev/null || true
+    wait_node_ready "$node"
+  done
 }
 
 smoke_test() {
@@ -414,9 +499,11 @@ smoke_test() {
   id=${id%%;*}
   grep -qx ok "$out/smoke-$id.out" 2>/dev/null ||
     { say "error: smoke test: job $id did not write 'ok' to $out/smoke-$id.out"; log_tail slurmd 15; exit 1; }
-  (cd "$out" && timeout "$READY_TIMEOUT" srun -n1 -J cic-smoke-srun true) ||
+  local all
+  all=$(cluster_nodes | wc -l)
+  (cd "$out" && timeout "$READY_TIMEOUT" srun -N "$all" -n "$all" -J cic-smoke-srun true) ||
     { say "error: smoke test: 'srun -n1 true' failed"; log_tail slurmctld 15; log_tail slurmd 15; exit 1; }
-  say "smoke test passed: sbatch --wait (job $id) and srun -n1 true"
+  say "smoke test passed: sbatch --wait (job $id) and srun -N $all true"
 }
 
 # start --fresh: cancel every job while slurmctld still runs, stop, and remove
@@ -436,33 +523,60 @@ reset_state() {
       done
     fi
   fi
-  stop_daemon slurmd
+  stop_slurmds
   stop_daemon slurmctld
   say "--fresh: removing $DIR/{state,spool,log,smoke}"
   rm -rf "${DIR:?}"/state "${DIR:?}"/spool "${DIR:?}"/log "${DIR:?}"/smoke
 }
 
+# Every slurmd this script may have started: the single node's and every
+# namespace node's (whatever the node count was).
+stop_slurmds() {
+  local f
+  stop_daemon slurmd
+  for f in "$DIR"/run/slurmd-*.pid; do
+    [ -e "$f" ] || continue
+    f=${f##*/slurmd-}
+    stop_daemon "slurmd@${f%.pid}"
+  done
+}
+
 cmd_start() {
   need_root
-  local t0=$SECONDS p fresh=0
-  case "${1:-}" in
-    "") ;;
-    --fresh) fresh=1 ;;
-    *) die "start: unknown option '$1' (only --fresh)" ;;
-  esac
+  local t0=$SECONDS p fresh=0 nodes=0
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --fresh) fresh=1 ;;
+      --nodes)
+        [ $# -ge 2 ] && [[ "$2" =~ ^[0-9]+$ ]] && [ "$2" -ge 1 ] && [ "$2" -le 16 ] ||
+          die "start: --nodes takes a count from 1 to 16"
+        nodes=$2
+        shift
+        ;;
+      *) die "start: unknown option '$1' (--fresh, --nodes N)" ;;
+    esac
+    shift
+  done
   for p in munged slurmctld slurmd sbatch srun sinfo scontrol; do
     command -v "$p" >/dev/null || die "$p is missing: run '$0 install' first"
   done
   [ "$fresh" -eq 0 ] || reset_state
   prepare_dirs
+  # Another node count: stop the old cluster's slurmd before its nodes change.
+  if [ "$(cluster_node_count)" != "$nodes" ]; then
+    stop_slurmds
+    [ "$nodes" -gt 0 ] || netns_down
+    echo "$nodes" >"$NODES_FILE"
+  fi
+  [ "$nodes" -eq 0 ] || netns_up "$nodes"
   start_munged
 
   local new
   new=$(write_conf)
   if [ ! -f "$CONF" ] || [ "$new" != "$(cat "$CONF")" ]; then
-    if daemon_pid slurmctld >/dev/null || daemon_pid slurmd >/dev/null; then
+    if daemon_pid slurmctld >/dev/null || [ -n "$(ls "$DIR"/run/slurmd*.pid 2>/dev/null)" ]; then
       say "configuration changed: restarting slurmctld and slurmd"
-      stop_daemon slurmd
+      stop_slurmds
       stop_daemon slurmctld
     fi
     printf '%s\n' "$new" >"$CONF"
@@ -475,18 +589,45 @@ cmd_start() {
   fi
 
   start_slurmctld
-  start_slurmd
-  wait_node_ready
+  local d
+  for d in $(slurmd_daemons); do start_slurmd "$d"; done
+  wait_nodes_ready
   recover_lost_jobs
   smoke_test
-  say "Slurm is up in $((SECONDS - t0)) s: node $(node_name), $(node_resources | awk '{print $1 " CPUs, " $2 " MB"}'), state and logs in $DIR"
+  say "Slurm is up in $((SECONDS - t0)) s: node(s) $(cluster_nodes | tr '\n' ' ')with $(node_resources | awk '{print $1 " CPUs, " $2 " MB"}') each, state and logs in $DIR"
+}
+
+# A node lost mid-study, as when its machine dies: every process on it gets
+# SIGKILL (slurmd, slurmstepd, the jobs), and the node is marked DOWN, which
+# is what slurmctld concludes after SlurmdTimeout. Jobs submitted with
+# --requeue go back to pending and run on the other nodes; others end NODE_FAIL.
+cmd_kill_node() {
+  need_root
+  local node=${1:-}
+  [ "$(cluster_node_count)" -gt 0 ] || die "kill-node needs a cluster started with --nodes N"
+  cluster_nodes | grep -qx "$node" || die "kill-node: no node '$node' (nodes: $(cluster_nodes | tr '\n' ' '))"
+  say "losing node $node: SIGKILL to every process in its namespace"
+  netns_kill_all "$node"
+  rm -f "$(pidfile_of "slurmd@$node")"
+  scontrol update NodeName="$node" State=DOWN Reason="lost (slurm-local.sh kill-node)"
+  say "node $node is $(node_state "$node")"
+}
+
+cmd_revive_node() {
+  need_root
+  local node=${1:-}
+  cluster_nodes | grep -qx "$node" || die "revive-node: no node '$node' (nodes: $(cluster_nodes | tr '\n' ' '))"
+  start_slurmd "slurmd@$node"
+  scontrol update NodeName="$node" State=RESUME 2>/dev/null || true
+  wait_node_ready "$node"
 }
 
 cmd_stop() {
   need_root
-  stop_daemon slurmd
+  stop_slurmds
   stop_daemon slurmctld
   stop_daemon munged
+  netns_down
   local steps
   steps=$(pgrep -x slurmstepd | tr '\n' ' ' || true)
   [ -z "$steps" ] || say "note: job steps still run (slurmstepd $steps); a new start reattaches them"
@@ -495,7 +636,7 @@ cmd_stop() {
 
 cmd_status() {
   local name pid ok=0 other
-  for name in munged slurmctld slurmd; do
+  for name in munged slurmctld $(slurmd_daemons); do
     if pid=$(daemon_pid "$name"); then
       echo "$name: running (pid $pid)"
     else
@@ -532,5 +673,17 @@ case "${1:-}" in
   start) shift; lock; cmd_start "$@" ;;
   stop) lock; cmd_stop ;;
   status) cmd_status ;;
+  nodes) cluster_nodes ;;
+  kill-node) shift; lock; cmd_kill_node "$@" ;;
+  revive-node) shift; lock; cmd_revive_node "$@" ;;
+  rsh)
+    # Open MPI calls the agent as: AGENT HOST COMMAND-WORDS...; they form one shell command.
+    shift
+    [ $# -ge 2 ] || die "rsh: NODE COMMAND..."
+    need_root
+    node=$1
+    shift
+    netns_exec "$node" sh -c "$*"
+    ;;
   *) usage ;;
 esac

@@ -1,5 +1,5 @@
-// `cic sweep --slurm` against a real single-node Slurm (scripts/slurm-local.sh,
-// started by .ci/run): a 4-task job array runs to completion and the study
+// `cic sweep --slurm` against a real Slurm (scripts/slurm-local.sh, started by
+// .ci/run with three namespace nodes; one node works as well): a 4-task job array runs to completion and the study
 // aggregates; a task requeued mid-run resumes from its checkpoint and ends with
 // the bytes of an uninterrupted run. Skipped when no Slurm answers here.
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "support/run_helpers.hpp"
+#include "support/slurm_lock.hpp"
 
 namespace cic {
 namespace {
@@ -42,6 +43,7 @@ bool wait_for_jobs(const std::string& name, int seconds) {
 }
 
 TEST(Slurm, JobArrayRunsTheStudyAndItAggregates) {
+    const SlurmTestLock lock;
     if (!slurm_up()) GTEST_SKIP() << "no Slurm here (start one with scripts/slurm-local.sh start)";
     const auto dir = temp_dir("slurm-array");
     write_text(dir / "s.xml", sweep_text(dir / "study", 3));
@@ -61,6 +63,7 @@ TEST(Slurm, JobArrayRunsTheStudyAndItAggregates) {
 }
 
 TEST(Slurm, RequeuedTaskResumesToTheSameBytes) {
+    const SlurmTestLock lock;
     if (!slurm_up()) GTEST_SKIP() << "no Slurm here (start one with scripts/slurm-local.sh start)";
     const auto dir = temp_dir("slurm-requeue");
     // The reference: the same study run locally, uninterrupted.
