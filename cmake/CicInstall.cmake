@@ -158,9 +158,12 @@ set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 # `cic render` into videos (Recommends); xvfb-run (offscreen `cic view --screenshot`) and
 # mpirun (docs/mpi.md) are Suggests.
 set(_cic_tool_depends "gnuplot-nox | gnuplot")
+# CPackDeb's shlibdeps also needs the `file` program (found missing on a fresh
+# minimal Debian, where `cpack -G DEB` then failed): without either, the list below.
 find_program(CIC_DPKG_SHLIBDEPS dpkg-shlibdeps)
-mark_as_advanced(CIC_DPKG_SHLIBDEPS)
-if(CIC_DPKG_SHLIBDEPS)
+find_program(CIC_FILE_PROGRAM file)
+mark_as_advanced(CIC_DPKG_SHLIBDEPS CIC_FILE_PROGRAM)
+if(CIC_DPKG_SHLIBDEPS AND CIC_FILE_PROGRAM)
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)           # CPack appends them to the list below
   set(CPACK_DEBIAN_PACKAGE_DEPENDS "${_cic_tool_depends}")
 else()

@@ -14,8 +14,9 @@ case "$profile" in
 esac
 
 RUN_PACKAGES=(
-  # build
-  build-essential cmake ninja-build pkg-config dpkg-dev
+  # build (python3: every build checks the layers' include graph, scripts/check-layers.py;
+  # a minimal Debian has none, found by timing README's commands on a fresh debootstrap)
+  build-essential cmake ninja-build pkg-config dpkg-dev python3
   # libraries
   libode-dev libeigen3-dev libxml2-dev libcli11-dev libfmt-dev libpagmo-dev
   libopenscenegraph-dev libopenmpi-dev openmpi-bin
@@ -23,14 +24,14 @@ RUN_PACKAGES=(
   gnuplot-nox
 )
 MORE_PACKAGES=(
-  # tests and benchmarks
-  libgtest-dev libgmock-dev googletest libbenchmark-dev libxml2-utils valgrind python3-scipy
+  # tests and benchmarks (file: cpack's dependency scan for the .deb; groff: the man page test)
+  libgtest-dev libgmock-dev googletest libbenchmark-dev libxml2-utils valgrind python3-scipy file groff-base
   # POV-Ray scenes and videos, offscreen viewer screenshots
   povray ffmpeg xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0
   # fuzzing (scripts/fuzz.sh): clang's libFuzzer runtime and a symbolizer for reports
   clang libclang-rt-14-dev llvm
   # DEAP comparison (scripts/compare-deap.sh)
-  python3 python3-deap
+  python3-deap
   # docs/analysis.md: a study read into pandas, a figure redrawn with matplotlib
   python3-pandas python3-matplotlib
 )

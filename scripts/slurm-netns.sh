@@ -60,12 +60,21 @@ netns_down() {
 }
 
 # Runs COMMAND... on node NS: in its network namespace, with its hostname.
+# With CIC_NODE_PRIVATE=DIR the node does not see DIR (an empty tmpfs over it,
+# in a mount namespace of its own), as a folder that is not on a shared file
+# system: how the tests show that cic names what every host must see.
 netns_exec() {
   local ns=$1
   shift
   [ -e "/run/netns/$ns" ] || die "no node $ns (start --nodes N first)"
-  # shellcheck disable=SC2016
-  nsenter --net="/run/netns/$ns" unshare --uts sh -c 'hostname "$0"; exec "$@"' "$ns" "$@"
+  if [ -n "${CIC_NODE_PRIVATE:-}" ]; then
+    # shellcheck disable=SC2016
+    nsenter --net="/run/netns/$ns" unshare --uts --mount --propagation private \
+      sh -c 'hostname "$0" && mount -t tmpfs cic-private "$CIC_NODE_PRIVATE" && exec "$@"' "$ns" "$@"
+  else
+    # shellcheck disable=SC2016
+    nsenter --net="/run/netns/$ns" unshare --uts sh -c 'hostname "$0"; exec "$@"' "$ns" "$@"
+  fi
 }
 
 # SIGKILL to every process of node NS (its slurmd, slurmstepd and jobs): the

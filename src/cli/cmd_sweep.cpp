@@ -27,6 +27,8 @@ struct SweepOptions {
     bool dry_run = false;
     bool slurm = false;
     bool index_only = false;
+    bool status = false;
+    SlurmOptions cluster;               // --slurm-partition, ...
     std::vector<std::string> configs;   // --config: only these configurations (empty: all)
 };
 
@@ -48,6 +50,13 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
     cmd.flag("--index-only", o->index_only,
                   "rewrite STUDY/index.csv from the run folders (and link runs another study stored); run nothing");
     cmd.flag("--slurm", o->slurm, "write STUDY/slurm.sh, a job array with one task per run");
+    cmd.option("--slurm-partition", o->cluster.partition, "with --slurm: the partition (#SBATCH --partition)");
+    cmd.option("--slurm-time", o->cluster.time, "with --slurm: each task's time limit (minutes, HH:MM:SS, D-HH:MM)");
+    cmd.option("--slurm-mem", o->cluster.mem, "with --slurm: memory per task's node (e.g. 4G)");
+    cmd.option("--slurm-account", o->cluster.account, "with --slurm: the account to charge");
+    cmd.option("--sbatch", o->cluster.extra, "with --slurm: one more #SBATCH option (repeatable), e.g. --qos=long");
+    cmd.flag("--status", o->status,
+             "show how many runs are done, running, pending and failed, and the time left (--jobs at a time)");
     cmd.option("--config", o->configs,
                "only this configuration's runs (repeatable; with the local runner, --dry-run and --slurm)");
     cmd.option("--task", o->task, "run only task I (0-based), resumably: what each array task runs")
@@ -67,6 +76,14 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
                 return run_task(plan, tasks[static_cast<std::size_t>(o->task)], workers, ctx.quiet, self_exec_path());
             }
             const std::vector<SweepTask> tasks = selected_tasks(plan, o->configs);
+            const bool cluster_options = !o->cluster.partition.empty() || !o->cluster.time.empty() ||
+                                         !o->cluster.mem.empty() || !o->cluster.account.empty() ||
+                                         !o->cluster.extra.empty();
+            if (cluster_options && !o->slurm)
+                throw InputError("--slurm-partition, --slurm-time, --slurm-mem, --slurm-account and --sbatch go with "
+                                 "--slurm");
+            check_slurm_options(o->cluster);
+            if (o->status) return print_status(plan, tasks, o->jobs);
             check_every_configuration(plan);
             if (o->dry_run) return dry_run(plan, tasks, workers);
             if (o->index_only) {   // for summaries: the runs as they are, nothing run
@@ -79,7 +96,7 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
             fs::create_directories(plan.study);
             link_to_store(plan);
             io::xml::write_file_atomically(plan.study / "sweep.xml", io::xml::Document::load_file(plan.file).to_string());
-            if (o->slurm) return write_slurm_script(plan, tasks, o->jobs, workers);
+            if (o->slurm) return write_slurm_script(plan, tasks, o->jobs, workers, o->cluster);
             write_index(plan);
             return run_locally(plan, tasks, o->jobs, workers, ctx.quiet);
         });

@@ -82,6 +82,9 @@ std::string man_page(CLI::App& app) {
     file("PREFIX/share/cic/settings/robots/*.xml", "robot files, found by the settings files that name them");
     file("PREFIX/share/cic/settings/cic-settings.xsd", "XML schema of settings files (also `cic settings --schema`)");
     file("PREFIX/share/cic/settings/cic-sweep.xsd", "XML schema of sweep files (cic sweep)");
+    file("PREFIX/share/cic/settings/cic-robot.xsd", "XML schema of robot files");
+    file("PREFIX/share/cic/settings/cic-population.xsd", "XML schema of population files (and their checkpoints)");
+    file("PREFIX/share/cic/settings/cic-gait.xsd", "XML schema of the gait experiment's checkpoints");
     file("PREFIX/share/cic/examples/*.xml", "example sweep files");
     file("PREFIX/share/doc/cic/", "the documentation (README.md and the guides)");
     file("PREFIX/share/bash-completion/completions/cic", "bash completion (made by `cic completion`)");

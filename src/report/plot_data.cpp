@@ -292,7 +292,10 @@ std::vector<StatsRow> read_study_run_stats(const StudyIndex& index, const StudyR
 
 std::vector<GenerationBands> summarise_bands(const std::vector<std::vector<StatsRow>>& runs, bool median) {
     std::vector<GenerationBands> out;
-    for (const auto& [generation, rows] : rows_by_generation(runs)) {
+    // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+    for (const auto& by_generation : rows_by_generation(runs)) {
+        const int generation = by_generation.first;
+        const auto& rows = by_generation.second;
         auto band = [&](double StatsRow::*field) {
             std::vector<double> v;
             for (const StatsRow* r : rows)
@@ -344,7 +347,10 @@ std::vector<EvaluationBand> summarise_by_evaluations(const std::vector<std::vect
 
 std::vector<GenerationSummary> summarise(const std::vector<std::vector<StatsRow>>& runs) {
     std::vector<GenerationSummary> out;
-    for (const auto& [generation, rows] : rows_by_generation(runs)) {
+    // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+    for (const auto& by_generation : rows_by_generation(runs)) {
+        const int generation = by_generation.first;
+        const auto& rows = by_generation.second;
         auto column = [&](double StatsRow::*field) {
             std::vector<double> v;
             for (const StatsRow* r : rows) v.push_back(r->*field);

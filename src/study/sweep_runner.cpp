@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <ctime>
 #include <map>
+#include <regex>
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -129,7 +130,34 @@ int dry_run(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int work
     return 0;
 }
 
-int write_slurm_script(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int jobs, int workers) {
+void check_slurm_options(const SlurmOptions& o) {
+    auto refuse = [](const std::string& option, const std::string& value, const std::string& takes) {
+        throw InputError(fmt::format("--slurm-{} \"{}\": {}", option, value, takes));
+    };
+    static const std::regex name("[A-Za-z0-9_.+-]+");
+    static const std::regex time("[0-9]+(:[0-9]{1,2}){0,2}|[0-9]+-[0-9]{1,2}(:[0-9]{1,2}){0,2}");
+    static const std::regex mem("[0-9]+[KMGT]?");
+    if (!o.partition.empty() && !std::regex_match(o.partition, name))
+        refuse("partition", o.partition, "a partition name (letters, digits, _ . + -)");
+    if (!o.time.empty() && !std::regex_match(o.time, time))
+        refuse("time", o.time, "a time limit: minutes, MM:SS, HH:MM:SS, D-HH, D-HH:MM or D-HH:MM:SS");
+    if (!o.mem.empty() && !std::regex_match(o.mem, mem)) refuse("mem", o.mem, "memory per node: N, NK, NM, NG or NT");
+    if (!o.account.empty() && !std::regex_match(o.account, name))
+        refuse("account", o.account, "an account name (letters, digits, _ . + -)");
+    for (const auto& e : o.extra)
+        if (e.size() < 2 || e[0] != '-' || e.find_first_of("\n\r") != std::string::npos)
+            throw InputError("--sbatch \"" + e + "\": one sbatch option on one line, e.g. --qos=long");
+}
+
+int write_slurm_script(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int jobs, int workers,
+                       const SlurmOptions& slurm) {
+    check_slurm_options(slurm);
+    std::string cluster;   // the options the cluster asks for, as given
+    if (!slurm.partition.empty()) cluster += "#SBATCH --partition=" + slurm.partition + "\n";
+    if (!slurm.time.empty()) cluster += "#SBATCH --time=" + slurm.time + "\n";
+    if (!slurm.mem.empty()) cluster += "#SBATCH --mem=" + slurm.mem + "\n";
+    if (!slurm.account.empty()) cluster += "#SBATCH --account=" + slurm.account + "\n";
+    for (const auto& e : slurm.extra) cluster += "#SBATCH " + e + "\n";
     // Array ids are the plan's task indices, so a --config selection is a list of them.
     std::string ids = fmt::format("0-{}", plan.tasks().size() - 1);
     if (tasks.size() != plan.tasks().size()) {
@@ -156,11 +184,12 @@ int write_slurm_script(const SweepPlan& plan, const std::vector<SweepTask>& task
         "#SBATCH --open-mode=append\n"
         "#SBATCH --requeue\n"
         "#SBATCH --signal=B:TERM@120\n"
+        "{cluster}"
         "exec {command}\n",
         fmt::arg("name", plan.name), fmt::arg("file", plan.file.string()),
         fmt::arg("script", (plan.study / "slurm.sh").string()), fmt::arg("ids", ids),
         fmt::arg("at_once", std::max(1, jobs)), fmt::arg("workers", workers), fmt::arg("study", plan.study.string()),
-        fmt::arg("command", command));
+        fmt::arg("command", command), fmt::arg("cluster", cluster));
     io::xml::write_file_atomically(plan.study / "slurm.sh", script);
     fs::permissions(plan.study / "slurm.sh", fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
                     fs::perm_options::add);

@@ -15,13 +15,19 @@
 #include <vector>
 
 #include "fuzz_checks.hpp"   // fuzz/, shared with the fuzz targets
+#include "support/fuzz_files.hpp"
 
 using namespace cic;
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kFuzz = fs::path(CIC_SOURCE_DIR) / "fuzz";
+const fs::path kFuzz = cic::testing::fuzz_folder();
+using cic::testing::read_bytes;
+
+std::vector<fs::path> files_of(const std::string& kind, const std::string& target) {
+    return cic::testing::fuzz_files(kind, target);
+}
 
 using Check = std::function<fuzz::Outcome(std::string_view)>;
 
@@ -33,24 +39,6 @@ const std::map<std::string, Check>& checks() {
         {"robot", fuzz::check_robot},
     };
     return m;
-}
-
-std::string read_bytes(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-// The files of fuzz/<kind>/<target>/, sorted (none if the folder is missing).
-std::vector<fs::path> files_of(const std::string& kind, const std::string& target) {
-    std::vector<fs::path> out;
-    const fs::path dir = kFuzz / kind / target;
-    if (!fs::is_directory(dir)) return out;
-    for (const auto& e : fs::directory_iterator(dir))
-        if (e.is_regular_file()) out.push_back(e.path());
-    std::sort(out.begin(), out.end());
-    return out;
 }
 
 const char* verdict_name(fuzz::Verdict v) {
@@ -113,8 +101,7 @@ TEST(FuzzRegressions, ReproducersAreHandledCleanly) {
 TEST(FuzzRegressions, Issue24InputsAreRefused) {
     std::size_t seen = 0;
     for (const auto& [target, check] : checks())
-        for (const auto& f : files_of("regressions", target)) {
-            if (f.filename().string().rfind("issue24-", 0) != 0) continue;
+        for (const auto& f : cic::testing::issue24_inputs(target)) {
             ++seen;
             EXPECT_EQ(check(read_bytes(f)).verdict, fuzz::Verdict::Rejected) << f;
         }

@@ -4,20 +4,17 @@
 // the inputs of issue 24 are refused.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <map>
-#include <sstream>
 
 #include "fuzz_study_checks.hpp"   // fuzz/, shared with the fuzz targets
+#include "support/fuzz_files.hpp"
 
 namespace cic {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kFuzz = fs::path(CIC_SOURCE_DIR) / "fuzz";
 using Check = std::function<fuzz::Outcome(std::string_view)>;
 
 const std::map<std::string, Check>& checks() {
@@ -25,21 +22,10 @@ const std::map<std::string, Check>& checks() {
     return m;
 }
 
-std::string read_bytes(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 std::vector<fs::path> files_of(const std::string& kind, const std::string& target) {
-    std::vector<fs::path> out;
-    if (!fs::is_directory(kFuzz / kind / target)) return out;
-    for (const auto& e : fs::directory_iterator(kFuzz / kind / target))
-        if (e.is_regular_file()) out.push_back(e.path());
-    std::sort(out.begin(), out.end());
-    return out;
+    return testing::fuzz_files(kind, target);
 }
+using testing::read_bytes;
 
 TEST(FuzzStudyCorpora, SeedsAreAcceptedByTheirReader) {
     for (const auto& [target, check] : checks()) {
@@ -65,8 +51,7 @@ TEST(FuzzStudyCorpora, EveryFileIsHandledCleanlyByBothReaders) {
 TEST(FuzzStudyRegressions, Issue24InputsAreRefused) {
     std::size_t seen = 0;
     for (const auto& [target, check] : checks())
-        for (const auto& f : files_of("regressions", target)) {
-            if (f.filename().string().rfind("issue24-", 0) != 0) continue;
+        for (const auto& f : testing::issue24_inputs(target)) {
             ++seen;
             EXPECT_EQ(check(read_bytes(f)).verdict, fuzz::Verdict::Rejected) << f;
         }

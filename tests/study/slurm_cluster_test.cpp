@@ -22,7 +22,7 @@
 
 #include "support/child_env.hpp"
 #include "support/run_helpers.hpp"
-#include "support/slurm_lock.hpp"
+#include "support/slurm_helpers.hpp"
 
 namespace cic {
 namespace {
@@ -31,16 +31,6 @@ using namespace cic::testing;
 namespace fs = std::filesystem;
 
 const fs::path kSlurmLocal = fs::path(CIC_SOURCE_DIR) / "scripts" / "slurm-local.sh";
-
-std::string shell(const std::string& cmd) {
-    std::string out;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return out;
-    char buf[4096];
-    for (std::size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-    pclose(p);
-    return out;
-}
 
 std::vector<std::string> lines_of(const std::string& text) {
     std::vector<std::string> out;
@@ -79,14 +69,6 @@ std::string without_names_and_times(const std::string& report) {
         out += l + "\n";
     }
     return out;
-}
-
-bool wait_for_jobs(const std::string& name, int seconds) {
-    for (int i = 0; i < seconds * 2; ++i) {
-        if (shell("squeue -h -n " + name + " 2>/dev/null").empty()) return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    }
-    return false;
 }
 
 // 2 configurations x 3 repeats of small HyperGP runs on R0.
@@ -230,6 +212,32 @@ TEST_F(SlurmCluster, MpiRanksOnOtherHostsGiveTheBytesOfOneWorker) {
     const auto hosts = hosts_of(mpi);
     ASSERT_EQ(hosts.size(), 1u);
     EXPECT_EQ(hosts.begin()->rfind("cic-n", 0), 0u) << *hosts.begin();
+}
+
+// A rank on a host that cannot see the robot file (the test's folder is not on a
+// shared file system there) stops the run before generation 0, naming the rank,
+// its host and what every host must see.
+TEST_F(SlurmCluster, MpiRankThatCannotSeeTheRobotFileIsNamedAtStart) {
+    if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun is not on PATH";
+    fs::copy_file(fs::path(CIC_SOURCE_DIR) / "settings/robots/r0.xml", dir / "robot.xml");
+    write_text(dir / "tiny.xml", tiny_hypergp_settings(1, 1));
+    // Rank 0 here, on the submit host, where the folder is; rank 1 on a node, where it is not.
+    write_text(dir / "hosts", shell("hostname -s").substr(0, shell("hostname -s").find('\n')) + " slots=1\n" +
+                                  nodes.front() + " slots=1\n");
+    const std::string cmd =
+        without_leak_check() + "CIC_NODE_PRIVATE='" + dir.string() + "' timeout 300 mpirun --allow-run-as-root " +
+        "--hostfile '" + (dir / "hosts").string() + "' --mca plm_rsh_agent '" + kSlurmLocal.string() + " rsh' " +
+        "--mca btl tcp,self --mca btl_tcp_if_include 10.77.0.0/24 --mca oob_tcp_if_include 10.77.0.0/24 -np 2 '" +
+        cic_binary() + "' --quiet --settings '" + (dir / "tiny.xml").string() + "' --set Simulator.robotFile='" +
+        (dir / "robot.xml").string() + "' --output '" + (dir / "out").string() + "' > '" + (dir / "mpi.log").string() +
+        "' 2>&1";
+    EXPECT_NE(std::system(cmd.c_str()), 0);
+    const std::string log = read_text(dir / "mpi.log");
+    EXPECT_NE(log.find("worker ranks cannot use the settings (is every file at the same path on every machine?): "
+                       "MPI rank 1: (" + nodes.front() + ")"),
+              std::string::npos)
+        << log;
+    EXPECT_NE(log.find("robot.xml"), std::string::npos) << log;
 }
 
 } // namespace

@@ -8,7 +8,7 @@
 #include <thread>
 
 #include "support/run_helpers.hpp"
-#include "support/slurm_lock.hpp"
+#include "support/slurm_helpers.hpp"
 
 namespace cic {
 namespace {
@@ -18,28 +18,9 @@ namespace fs = std::filesystem;
 
 bool slurm_up() { return std::system("timeout 10 sinfo -h -o %T 2>/dev/null | grep -q -E 'idle|mix|alloc'") == 0; }
 
-std::string shell(const std::string& cmd) {
-    std::string out;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return out;
-    char buf[4096];
-    for (std::size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-    pclose(p);
-    return out;
-}
-
 // 2 configurations x 2 repeats of small HyperGP runs on R0.
 std::string sweep_text(const fs::path& study, int generations) {
     return tiny_sweep_text("slurm", study, 8, generations, 4, "<grid><vary key=\"GP.elitism\">0 1</vary></grid>", 2);
-}
-
-// Waits until no job of `name` is queued or running (at most `seconds`).
-bool wait_for_jobs(const std::string& name, int seconds) {
-    for (int i = 0; i < seconds * 2; ++i) {
-        if (shell("squeue -h -n " + name + " 2>/dev/null").empty()) return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    }
-    return false;
 }
 
 TEST(Slurm, JobArrayRunsTheStudyAndItAggregates) {

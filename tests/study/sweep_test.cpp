@@ -139,10 +139,24 @@ TEST(SweepFile, ShippedBestSettingsAreTheSearchWinner) {
               io::write_settings(io::load_settings(plan.base, overrides)));
 }
 
+// Each edit of `good` (find, replace) makes `cic sweep` exit 2 with the message
+// `why` before the study folder exists.
+using Edits = std::vector<std::pair<std::pair<std::string, std::string>, std::string>>;
+void expect_each_edit_refused(const fs::path& dir, const std::string& good, const Edits& cases) {
+    for (const auto& [edit, why] : cases) {
+        std::string text = good;
+        text.replace(text.find(edit.first), edit.first.size(), edit.second);
+        write_text(dir / "s.xml", text);
+        EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "log"), 2) << edit.second;
+        EXPECT_NE(read_text(dir / "log").find(why), std::string::npos) << read_text(dir / "log");
+        EXPECT_FALSE(fs::exists(dir / "study"));
+    }
+}
+
 TEST(SweepFile, MistakesAreRefusedWithFileAndLine) {
     const auto dir = temp_dir("sweep-errors");
     const std::string good = sweep_text(dir / "study");
-    const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
+    const Edits cases = {
         {{"<repeats count=\"3\" firstSeed=\"4\"/>", "<repeats count=\"zero\"/>"}, "s.xml:13: <repeats> count=\"zero\""},
         {{"<grid>", "<grid><vary key=\"GP.nonsense\">1</vary>"}, "s.xml:9: <vary> names no settings key: <GP> nonsense"},
         {{"<vary key=\"GP.elitism\">0 1</vary>", "<vary key=\"GP.elitism\">0 x</vary>"},
@@ -156,14 +170,7 @@ TEST(SweepFile, MistakesAreRefusedWithFileAndLine) {
         {{"<grid>", "oops <grid>"}, "stray text \"oops\" in <sweep>, which holds only elements"},
         {{"<repeats count=\"3\"", "<repeats cuont=\"3\""}, "s.xml:13: <repeats> has no attribute cuont; did you mean count?"},
     };
-    for (const auto& [edit, why] : cases) {
-        std::string text = good;
-        text.replace(text.find(edit.first), edit.first.size(), edit.second);
-        write_text(dir / "s.xml", text);
-        EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "log"), 2) << edit.second;
-        EXPECT_NE(read_text(dir / "log").find(why), std::string::npos) << read_text(dir / "log");
-        EXPECT_FALSE(fs::exists(dir / "study"));
-    }
+    expect_each_edit_refused(dir, good, cases);
     // A value the settings refuse, in one configuration, stops the sweep before the study folder exists.
     std::string text = good;
     text.replace(text.find("0 1</vary>"), 3, "0 9");
@@ -180,7 +187,7 @@ TEST(SweepFile, MistakesAreRefusedWithFileAndLine) {
 TEST(SweepFile, SeedsComeOnlyFromRepeats) {
     const auto dir = temp_dir("sweep-seeds");
     const std::string good = sweep_text(dir / "study");
-    const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
+    const Edits cases = {
         {{"<set>GP.tournament_size=3</set>", "<set>Experiment.seed=7</set>"},
          "s.xml:5: <set> sets Experiment.seed, which a sweep owns: each run's seed comes from <repeats"},
         {{"<vary key=\"GP.elitism\">0 1</vary>", "<vary key=\"Experiment.seed\">1 2</vary>"},
@@ -188,14 +195,7 @@ TEST(SweepFile, SeedsComeOnlyFromRepeats) {
         {{"<grid>", "<variant name=\"v\"><set>Experiment.seed=3</set></variant><grid>"},
          "s.xml:9: <set> sets Experiment.seed, which a sweep owns"},
     };
-    for (const auto& [edit, why] : cases) {
-        std::string text = good;
-        text.replace(text.find(edit.first), edit.first.size(), edit.second);
-        write_text(dir / "s.xml", text);
-        EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "log"), 2) << edit.second;
-        EXPECT_NE(read_text(dir / "log").find(why), std::string::npos) << read_text(dir / "log");
-        EXPECT_FALSE(fs::exists(dir / "study"));
-    }
+    expect_each_edit_refused(dir, good, cases);
     fs::remove_all(dir);
 }
 
@@ -613,6 +613,69 @@ void raised_budget_continues(bool store) {
 
 TEST(Sweep, ARaisedBudgetContinuesEachRunExactly) { raised_budget_continues(false); }
 TEST(Sweep, ARaisedBudgetContinuesStoredRunsExactly) { raised_budget_continues(true); }
+
+} // namespace
+} // namespace cic
+
+namespace cic {
+namespace {
+
+using namespace cic::testing;
+namespace fs = std::filesystem;
+
+std::string output_of(const std::string& args, const fs::path& log, int* rc = nullptr) {
+    const int code = run_command(args, log);
+    if (rc) *rc = code;
+    return read_text(log);
+}
+
+TEST(Sweep, StatusShowsEachStateAndTheTimeLeft) {
+    const auto dir = temp_dir("sweep-status");
+    write_text(dir / "s.xml", tiny_sweep_text("st", dir / "study", 6, 2, 2.5,
+                                              "<grid><vary key=\"GP.elitism\">0 1</vary></grid>", 2));
+    const std::string sweep = "sweep " + (dir / "s.xml").string();
+    std::string out = output_of(sweep + " --status", dir / "log");
+    EXPECT_NE(out.find("4 runs\n4 pending\ntime left: unknown until a run has finished"), std::string::npos) << out;
+    ASSERT_EQ(run_command("--quiet " + sweep + " --jobs 2 --workers 1", dir / "run.log"), 0) << read_text(dir / "run.log");
+    EXPECT_NE(output_of(sweep + " --status", dir / "log").find("4 done\ntime left: none"), std::string::npos);
+    fs::remove_all(dir / "study" / "runs" / "elitism=1" / "s2");
+    fs::remove(dir / "study" / "runs" / "elitism=0" / "s2" / "summary.txt");
+    out = output_of(sweep + " --status --jobs 2", dir / "log");
+    EXPECT_NE(out.find("2 done, 1 pending, 1 interrupted\ntime left: about "), std::string::npos) << out;
+    EXPECT_NE(out.find("(2 to go, 2 at a time, "), std::string::npos) << out;
+    fs::remove_all(dir);
+}
+
+TEST(Sweep, SlurmOptionsReachTheScript) {
+    const auto dir = temp_dir("sweep-slurm-options");
+    write_text(dir / "s.xml", tiny_sweep_text("opt", dir / "study", 6, 2, 2.5,
+                                              "<grid><vary key=\"GP.elitism\">0 1</vary></grid>", 2));
+    const std::string sweep = "sweep " + (dir / "s.xml").string() + " --slurm --jobs 3 --workers 1";
+    ASSERT_EQ(run_command(sweep + " --slurm-partition debug --slurm-time 1-02:00 --slurm-mem 2G "
+                                  "--slurm-account lab --sbatch=--comment=cic-test",
+                          dir / "log"),
+              0)
+        << read_text(dir / "log");
+    const std::string script = read_text(dir / "study" / "slurm.sh");
+    for (const char* line : {"#SBATCH --array=0-3%3\n", "#SBATCH --partition=debug\n", "#SBATCH --time=1-02:00\n",
+                             "#SBATCH --mem=2G\n", "#SBATCH --account=lab\n", "#SBATCH --comment=cic-test\n"})
+        EXPECT_NE(script.find(line), std::string::npos) << line << " in\n" << script;
+    int rc = 0;
+    EXPECT_NE(output_of(sweep + " --slurm-time 2h", dir / "log", &rc).find("--slurm-time \"2h\": a time limit"),
+              std::string::npos);
+    EXPECT_EQ(rc, 2);
+    EXPECT_NE(output_of("sweep " + (dir / "s.xml").string() + " --slurm-mem 2G", dir / "log", &rc).find("go with --slurm"),
+              std::string::npos);
+    EXPECT_EQ(rc, 2);
+    EXPECT_NE(output_of(sweep + " --sbatch=qos", dir / "log", &rc).find("one sbatch option on one line"), std::string::npos);
+    // Where a Slurm answers, it takes the script as it is (sbatch --test-only submits nothing).
+    if (std::system("timeout 10 sinfo -h -p debug -o %P > /dev/null 2>&1") == 0) {
+        ASSERT_EQ(run_command(sweep + " --slurm-partition debug --slurm-time 10 --slurm-mem 100M", dir / "log"), 0);
+        EXPECT_EQ(std::system(("sbatch --test-only '" + (dir / "study" / "slurm.sh").string() + "' > /dev/null 2>&1").c_str()),
+                  0);
+    }
+    fs::remove_all(dir);
+}
 
 } // namespace
 } // namespace cic

@@ -20,9 +20,27 @@ void check_every_configuration(const SweepPlan& plan);
 // Prints each task's status and command; runs nothing. Returns 0.
 int dry_run(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int workers);
 
+// What a cluster asks of a job, beside what cic sets itself (array, CPUs,
+// output, requeue, the SIGTERM before the time limit). Empty: not written.
+struct SlurmOptions {
+    std::string partition;              // --partition
+    std::string time;                   // --time: minutes, MM:SS, HH:MM:SS, D-HH[:MM[:SS]]
+    std::string mem;                    // --mem: N with an optional K, M, G or T
+    std::string account;                // --account
+    std::vector<std::string> extra;     // more #SBATCH options, e.g. --qos=long
+};
+// Throws cic::InputError naming the option and what it takes.
+void check_slurm_options(const SlurmOptions& o);
+
 // Writes STUDY/slurm.sh, a job array of `tasks` (their plan indices), at most
-// `jobs` at once, and the index. Returns 0.
-int write_slurm_script(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int jobs, int workers);
+// `jobs` at once (the array throttle %N), and the index. Returns 0.
+int write_slurm_script(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int jobs, int workers,
+                       const SlurmOptions& slurm = {});
+
+// A study's progress at a glance: how many runs are done, running, pending,
+// interrupted or failed, and an estimate of the time left from the finished
+// runs' times, `jobs` at a time. Works on a local or a Slurm study. Returns 0.
+int print_status(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int jobs);
 
 // Runs the tasks not done yet, `jobs` at a time, as child processes (each one
 // `cic sweep FILE --task I`), rebuilding index.csv as they finish. SIGINT and
