@@ -10,6 +10,7 @@
 //     write differs from the first, the check returns Verdict::Bug with a message.
 // Crashes, sanitizer reports, leaks and hangs are not caught here: they surface
 // by themselves (in the fuzzer as a crash, in the test as a dead test program).
+#include <cstdio>
 #include <exception>
 #include <string>
 #include <string_view>
@@ -29,6 +30,14 @@ struct Outcome {
 };
 
 inline Outcome bug(std::string what) { return {Verdict::Bug, std::move(what)}; }
+
+// What every fuzz target does with its outcome: a Bug is printed and traps, so
+// that libFuzzer keeps the input as a crash; anything else returns 0.
+inline int fuzz_verdict(const char* target, const Outcome& o) {
+    if (o.verdict != Verdict::Bug) return 0;
+    std::fprintf(stderr, "%s: %s\n", target, o.problem.c_str());
+    __builtin_trap();
+}
 
 // Settings: read_settings_string (reads and validates); then
 // write_settings(s) must read back, and writing that again gives the same text.

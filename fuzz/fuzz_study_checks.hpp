@@ -44,6 +44,9 @@ inline Outcome check_sweep(std::string_view input) {
     std::set<std::string> names;
     for (const auto& c : plan.configs)
         if (!names.insert(c.name).second) return bug("sweep: two configurations named " + c.name);
+    // The per-task promises on studies of up to 20000 runs: listing a million
+    // tasks (the reader's limit) takes seconds, past libFuzzer's timeout.
+    if (plan.configs.size() * static_cast<std::size_t>(plan.repeats) > 20000) return {Verdict::Accepted, {}};
     const auto tasks = plan.tasks();
     if (tasks.size() != plan.configs.size() * static_cast<std::size_t>(plan.repeats))
         return bug("sweep: " + std::to_string(tasks.size()) + " tasks for " + std::to_string(plan.configs.size()) +
