@@ -107,12 +107,10 @@ std::pair<double, double> eq71_terms(const sim::RobotSpec& robot, const sim::Eva
 void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalResult& r) {
     std::tie(item.distance, item.elevation) = eq71_terms(robot, r);
     if (r.module_ground_steps.empty()) return;
+    item.duty_factors = sim::duty_factors(robot, r);
     for (int m : sim::branch_ends(robot)) {
         const std::string& name = robot.modules[static_cast<std::size_t>(m)].name;
         item.foot_names.push_back(name.empty() ? "m" + std::to_string(m) : name);
-        item.duty_factors.push_back(r.ground_steps > 0 ? static_cast<double>(r.module_ground_steps[static_cast<std::size_t>(m)]) /
-                                                             static_cast<double>(r.ground_steps)
-                                                       : 0.0);
     }
 }
 

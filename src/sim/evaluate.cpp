@@ -131,4 +131,17 @@ std::vector<int> branch_ends(const RobotSpec& robot) {
     return ends;
 }
 
+std::vector<double> duty_factors(const RobotSpec& robot, const EvalResult& result) {
+    std::vector<double> out;
+    if (result.module_ground_steps.empty()) return out;
+    if (result.module_ground_steps.size() != robot.modules.size())
+        throw std::invalid_argument("duty_factors: the result counts " + std::to_string(result.module_ground_steps.size()) +
+                                    " modules, the robot has " + std::to_string(robot.modules.size()));
+    for (int m : branch_ends(robot))
+        out.push_back(result.ground_steps > 0 ? static_cast<double>(result.module_ground_steps[static_cast<std::size_t>(m)]) /
+                                                    static_cast<double>(result.ground_steps)
+                                              : 0.0);
+    return out;
+}
+
 } // namespace cic::sim

@@ -88,6 +88,14 @@ TEST(Evaluate, GroundContactsPerModuleAreCountedOnlyWhenAskedAndChangeNothing) {
         on_ground += counted.module_ground_steps[static_cast<std::size_t>(f)];
     }
     EXPECT_GT(on_ground, 0) << "a walking robot's feet touch the ground";
+    // The duty factors: one per foot, each its share of the steps.
+    EXPECT_TRUE(duty_factors(robot, plain).empty());
+    const std::vector<double> duty = duty_factors(robot, counted);
+    ASSERT_EQ(duty.size(), feet.size());
+    for (std::size_t i = 0; i < feet.size(); ++i)
+        EXPECT_EQ(duty[i], static_cast<double>(counted.module_ground_steps[static_cast<std::size_t>(feet[i])]) /
+                               static_cast<double>(counted.ground_steps));
+    EXPECT_THROW(duty_factors(preset(1, false), counted), std::invalid_argument);
     EXPECT_EQ(counted.module_ground_steps[static_cast<std::size_t>(robot.centre)] > counted.ground_steps / 2, false)
         << "the torso is carried, not dragged";
 }

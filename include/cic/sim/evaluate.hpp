@@ -46,6 +46,13 @@ struct EvalResult {
 // two ends. The duty factor of each is what its ground steps are counted for.
 std::vector<int> branch_ends(const RobotSpec& robot);
 
+// The duty factor of each branch end (branch_ends order): the share of the
+// physics steps from the delayed start on in which it touched the ground, in
+// [0, 1]. The behaviour descriptor of Cully et al. 2015, shown by `cic assess`
+// and the descriptor of MAP-Elites archives. Empty unless the evaluation
+// recorded the ground (EvalOptions::record_ground).
+std::vector<double> duty_factors(const RobotSpec& robot, const EvalResult& result);
+
 // Deterministic: resets ODE's global random state (dRandSetSeed) before
 // building the world, and the world uses its own self-threaded implementation.
 // Throws std::invalid_argument for invalid config (e.g. step <= 0, or a physics
