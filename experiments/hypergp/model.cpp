@@ -97,7 +97,7 @@ tree::Forest parse_job_body(const std::string& body) {
     return f;
 }
 
-sim::EvalReply to_reply(const Outcome& o) { return {o.fitness, o.failed, o.failure}; }
+sim::EvalReply to_reply(const Outcome& o) { return {o.fitness, {}, o.failed, o.failure}; }
 
 std::function<std::string(const std::string&)> make_job_handler(std::function<io::Settings()> settings,
                                                                  Score score) {

@@ -128,18 +128,32 @@ SimConfig read_config_text(std::istream& in) {
 
 std::string format_eval_reply(const EvalReply& r) {
     std::ostringstream out;
-    out << "fitness " << hexfloat(r.fitness) << "\nfailed " << (r.failed ? 1 : 0) << '\n' << r.failure;
+    out << "fitness " << hexfloat(r.fitness) << '\n';
+    if (!r.descriptor.empty()) {   // only when asked: the plain reply is unchanged
+        out << "descriptor " << r.descriptor.size();
+        for (double v : r.descriptor) out << ' ' << hexfloat(v);
+        out << '\n';
+    }
+    out << "failed " << (r.failed ? 1 : 0) << '\n' << r.failure;
     return out.str();
 }
 
-std::string format_eval_reply(const EvalResult& r) { return format_eval_reply(EvalReply{r.fitness, r.failed, r.failure}); }
+std::string format_eval_reply(const EvalResult& r) { return format_eval_reply(EvalReply{r.fitness, {}, r.failed, r.failure}); }
 
 EvalReply parse_eval_reply(const std::string& text) {
     std::istringstream in(text);
     EvalReply e;
     expect_word(in, "fitness");
     e.fitness = read_double(in);
-    expect_word(in, "failed");
+    std::string w;
+    in >> w;
+    if (w == "descriptor") {
+        const long n = read_int(in);
+        if (n < 1 || n > 100000) bad("bad descriptor size");
+        for (long i = 0; i < n; ++i) e.descriptor.push_back(read_double(in));
+        in >> w;
+    }
+    if (w != "failed") bad("expected 'failed', got '" + w + "'");
     e.failed = read_int(in) != 0;
     in.get();
     std::getline(in, e.failure, '\0');
@@ -175,7 +189,32 @@ std::string run_sine_job(const std::string& body) {
     return format_eval_reply(evaluate(robot, controller, cfg));
 }
 
-std::string make_gait_job(const RobotSpec& robot, const SimConfig& cfg, const GaitSpec& gait) {
+namespace {
+
+// The optional last line of a job: "duty 1" asks for the duty-factor descriptor.
+void write_duty_request(std::ostream& out, bool duty_factors) {
+    if (duty_factors) out << "duty 1\n";
+}
+
+bool read_duty_request(std::istream& in) {
+    std::string w;
+    if (!(in >> w)) return false;
+    if (w != "duty") bad("expected 'duty' or the end of the job, got '" + w + "'");
+    return read_int(in) != 0;
+}
+
+// Evaluates and replies, with each foot's duty factor when asked.
+std::string evaluate_and_reply(const RobotSpec& robot, Controller& controller, const SimConfig& cfg, bool duty) {
+    EvalOptions options;
+    options.record_ground = duty;
+    const EvalResult r = evaluate(robot, controller, cfg, options);
+    EvalReply reply{r.fitness, duty ? duty_factors(robot, r) : std::vector<double>{}, r.failed, r.failure};
+    return format_eval_reply(reply);
+}
+
+} // namespace
+
+std::string make_gait_job(const RobotSpec& robot, const SimConfig& cfg, const GaitSpec& gait, bool duty_factors) {
     std::ostringstream out;
     out << "gait\n";
     write_robot_text(out, robot);
@@ -184,6 +223,7 @@ std::string make_gait_job(const RobotSpec& robot, const SimConfig& cfg, const Ga
     for (const GaitJoint& j : gait.joints)
         out << hexfloat(j.amplitude) << ' ' << hexfloat(j.phase) << ' ' << hexfloat(j.offset) << ' '
             << hexfloat(j.amplitude2) << ' ' << hexfloat(j.phase2) << '\n';
+    write_duty_request(out, duty_factors);
     return out.str();
 }
 
@@ -205,11 +245,12 @@ std::string run_gait_job(const std::string& body) {
         j.amplitude2 = read_double(in);
         j.phase2 = read_double(in);
     }
+    const bool duty = read_duty_request(in);
     GaitController controller(std::move(gait));
-    return format_eval_reply(evaluate(robot, controller, cfg));
+    return evaluate_and_reply(robot, controller, cfg, duty);
 }
 
-std::string make_cpg_job(const RobotSpec& robot, const SimConfig& cfg, const CpgSpec& cpg) {
+std::string make_cpg_job(const RobotSpec& robot, const SimConfig& cfg, const CpgSpec& cpg, bool duty_factors) {
     validate(cpg);
     std::ostringstream out;
     out << "cpg\n";
@@ -222,6 +263,7 @@ std::string make_cpg_job(const RobotSpec& robot, const SimConfig& cfg, const Cpg
     out << "feedback " << (cpg.feedback.empty() ? 0 : 1) << "\nedges " << cpg.edges.size() << '\n';
     for (std::size_t k = 0; k < cpg.edges.size(); ++k)
         out << cpg.edges[k].a << ' ' << cpg.edges[k].b << ' ' << hexfloat(cpg.coupling[k]) << '\n';
+    write_duty_request(out, duty_factors);
     return out.str();
 }
 
@@ -265,7 +307,8 @@ std::string run_cpg_job(const std::string& body) {
     const RobotSpec robot = read_robot_text(in);
     const SimConfig cfg = read_config_text(in);
     CpgController controller(read_cpg_spec(in));
-    return format_eval_reply(evaluate(robot, controller, cfg));
+    const bool duty = read_duty_request(in);
+    return evaluate_and_reply(robot, controller, cfg, duty);
 }
 
 } // namespace cic::sim

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <bit>
 #include <cstring>
 #include <memory>
 #include <sstream>
@@ -110,3 +111,40 @@ TEST(JobText, EveryConfigFieldTravels) {
     std::stringstream truncated("config\nsample_from 0x0p+0\n");
     EXPECT_THROW(read_config_text(truncated), std::invalid_argument);
 }
+
+namespace cic::sim {
+namespace {
+
+// The duty-factor descriptor of MAP-Elites travels with the reply when a job
+// asks for it: the same values as an evaluation in this process, the same
+// fitness bits as the plain job, and the plain reply unchanged.
+TEST(JobText, AGaitJobAsksForEachFootsDutyFactor) {
+    const RobotSpec robot = preset(1, false);
+    SimConfig cfg;
+    cfg.sample_to = 3.0;
+    cfg.delayed_start = 0.5;
+    GaitSpec gait;
+    gait.frequency = 1.0;
+    for (std::size_t j = 0; j < robot.actuated().size(); ++j) gait.joints.push_back({0.6, 0.5 * static_cast<double>(j), 0.1, 0, 0});
+    const std::string plain = make_gait_job(robot, cfg, gait), duty = make_gait_job(robot, cfg, gait, true);
+    EXPECT_EQ(duty.substr(0, plain.size()), plain);
+    EXPECT_EQ(duty.substr(plain.size()), "duty 1\n");
+    const EvalReply a = parse_eval_reply(run_gait_job(plain.substr(5)));
+    const EvalReply b = parse_eval_reply(run_gait_job(duty.substr(5)));
+    EXPECT_TRUE(a.descriptor.empty());
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(a.fitness), std::bit_cast<std::uint64_t>(b.fitness));
+    GaitController controller(gait);
+    EvalOptions opt;
+    opt.record_ground = true;
+    EXPECT_EQ(b.descriptor, duty_factors(robot, evaluate(robot, controller, cfg, opt)));
+    ASSERT_EQ(b.descriptor.size(), 4u);   // R1's four feet
+    // Round trip with a failure text, and a malformed descriptor refused.
+    const EvalReply c = parse_eval_reply(format_eval_reply(EvalReply{0.5, {0.25, 1.0}, true, "blow-up\nline 2"}));
+    EXPECT_EQ(c.descriptor, (std::vector<double>{0.25, 1.0}));
+    EXPECT_EQ(c.failure, "blow-up\nline 2");
+    EXPECT_THROW(parse_eval_reply("fitness 0x1p+0\ndescriptor 0\nfailed 0\n"), std::invalid_argument);
+    EXPECT_THROW(run_gait_job(plain.substr(5) + "extra 1\n"), std::invalid_argument);
+}
+
+} // namespace
+} // namespace cic::sim

@@ -26,9 +26,11 @@ std::string hexfloat(double v);        // "%a"
 double parse_hexfloat(const std::string& s);   // also accepts decimal, "inf"
 
 // The one reply of every evaluation job (sine, gait, hypergp), whether it ran in a
-// worker process or on an MPI rank: fitness (exact), failed flag, failure text.
+// worker process or on an MPI rank: fitness (exact), the behaviour descriptor
+// when the job asked for one, failed flag, failure text.
 struct EvalReply {
     double fitness = 0.0;
+    std::vector<double> descriptor;   // each foot's duty factor (jobs made with duty_factors)
     bool failed = false;
     std::string failure;   // the rest of the reply (may span lines)
 };
@@ -43,13 +45,16 @@ std::string make_sine_job(const RobotSpec& robot, const SimConfig& cfg,
 std::string run_sine_job(const std::string& body);
 
 // Job kind "gait": the first line is "gait", then robot, config and the spec.
-std::string make_gait_job(const RobotSpec& robot, const SimConfig& cfg, const GaitSpec& gait);
+// With duty_factors the evaluation records the ground and its reply carries each
+// foot's duty factor (the MAP-Elites descriptor); the fitness is the same bits.
+std::string make_gait_job(const RobotSpec& robot, const SimConfig& cfg, const GaitSpec& gait,
+                          bool duty_factors = false);
 // Runs a "gait" job body; returns the reply.
 std::string run_gait_job(const std::string& body);
 
 // Job kind "cpg": the first line is "cpg", then robot, config and the CPG's
 // weights (sim/cpg.hpp). make_cpg_job validates the spec first.
-std::string make_cpg_job(const RobotSpec& robot, const SimConfig& cfg, const CpgSpec& cpg);
+std::string make_cpg_job(const RobotSpec& robot, const SimConfig& cfg, const CpgSpec& cpg, bool duty_factors = false);
 CpgSpec read_cpg_spec(std::istream& in);   // the part after robot and config
 // Runs a "cpg" job body; returns the reply.
 std::string run_cpg_job(const std::string& body);
