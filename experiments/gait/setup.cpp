@@ -75,9 +75,9 @@ std::string Setup::describe(std::span<const double> x) const {
     return out;
 }
 
-std::string make_job(const Setup& setup, std::span<const double> x) {
-    if (setup.cpg) return sim::make_cpg_job(setup.robot, setup.sim, setup.cpg->decode(x));
-    return sim::make_gait_job(setup.robot, setup.sim, setup.encoding.decode(x));
+std::string make_job(const Setup& setup, std::span<const double> x, bool duty_factors) {
+    if (setup.cpg) return sim::make_cpg_job(setup.robot, setup.sim, setup.cpg->decode(x), duty_factors);
+    return sim::make_gait_job(setup.robot, setup.sim, setup.encoding.decode(x), duty_factors);
 }
 
 Evaluator::Evaluator(const experiments::Context& ctx, const Setup& setup)
@@ -85,27 +85,38 @@ Evaluator::Evaluator(const experiments::Context& ctx, const Setup& setup)
 
 Evaluator::~Evaluator() = default;
 
-std::vector<double> Evaluator::operator()(const std::vector<std::vector<double>>& xs) {
+std::vector<sim::EvalReply> Evaluator::run(const std::vector<std::vector<double>>& xs, bool duty_factors) {
     std::vector<std::string> jobs;
     jobs.reserve(xs.size());
-    for (const auto& x : xs) jobs.push_back(make_job(setup_, x));
+    for (const auto& x : xs) jobs.push_back(make_job(setup_, x, duty_factors));
     const auto results = runner_->run(jobs);
     for (const auto& note : runner_->take_notes()) warn_("warning: " + note);
-    std::vector<double> f(xs.size());
+    std::vector<sim::EvalReply> replies(xs.size());
     for (std::size_t i = 0; i < xs.size(); ++i) {
         const JobResult& r = results[i];
         for (const auto& t : r.trouble) warn_(fmt::format("warning: candidate {}: {}", i, t));
         if (r.ok) {
-            const sim::EvalReply reply = sim::parse_eval_reply(r.output);
-            f[i] = reply.fitness;
-            if (reply.failed) ++failed_;
+            replies[i] = sim::parse_eval_reply(r.output);
+            if (replies[i].failed) ++failed_;
         } else {
-            f[i] = setup_.sim.failure_fitness;
+            replies[i] = sim::EvalReply{setup_.sim.failure_fitness, {}, true, r.error};
             ++failed_;
-            warn_(fmt::format("warning: candidate {} scored as failed (fitness {}): {}", i, f[i], r.error));
+            warn_(fmt::format("warning: candidate {} scored as failed (fitness {}): {}", i, replies[i].fitness, r.error));
         }
     }
+    return replies;
+}
+
+std::vector<double> Evaluator::operator()(const std::vector<std::vector<double>>& xs) {
+    std::vector<double> f;
+    for (const sim::EvalReply& r : run(xs, false)) f.push_back(r.fitness);
     return f;
+}
+
+std::vector<gp::Evaluation> Evaluator::described(const std::vector<std::vector<double>>& xs) {
+    std::vector<gp::Evaluation> out;
+    for (sim::EvalReply& r : run(xs, true)) out.push_back({r.fitness, std::move(r.descriptor), r.failed});
+    return out;
 }
 
 } // namespace cic::gait

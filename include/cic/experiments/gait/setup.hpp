@@ -15,6 +15,8 @@
 #include "cic/io/settings.hpp"
 #include "cic/sim/robot.hpp"
 #include "cic/experiments/experiment.hpp"
+#include "cic/gp/vector_map_elites.hpp"
+#include "cic/sim/job_text.hpp"
 #include "cic/experiments/gait/cpg_encoding.hpp"
 #include "cic/experiments/gait/encoding.hpp"
 #include "cic/experiments/gait/search.hpp"
@@ -46,7 +48,8 @@ Optimizer optimizer_of(io::GaitOptimizer o);
 // The robot (with at least one joint) and the population size; writes nothing.
 void check_inputs(const io::Settings& s);
 
-std::string make_job(const Setup& setup, std::span<const double> x);
+// With duty_factors the reply carries each foot's duty factor (sim/job_text.hpp).
+std::string make_job(const Setup& setup, std::span<const double> x, bool duty_factors = false);
 
 // Evaluates batches of unit-box points on the context's runner. A job that
 // fails in the runner (its worker crashed or hung twice) scores the
@@ -56,9 +59,15 @@ public:
     Evaluator(const experiments::Context& ctx, const Setup& setup);
     ~Evaluator();
     std::vector<double> operator()(const std::vector<std::vector<double>>& xs);
+    // The same with each point's duty-factor descriptor, for MAP-Elites: a
+    // failed evaluation (physics or worker) is marked failed, not archived.
+    std::vector<gp::Evaluation> described(const std::vector<std::vector<double>>& xs);
     long failed() const { return failed_; }   // evaluations that failed (physics or worker)
 
 private:
+    // Each point's reply; a job the runner could not run scores the failure fitness.
+    std::vector<sim::EvalReply> run(const std::vector<std::vector<double>>& xs, bool duty_factors);
+
     const Setup& setup_;
     std::function<void(const std::string&)> warn_;
     std::unique_ptr<JobRunner> runner_;
