@@ -230,24 +230,9 @@ Document parse_strict(std::string_view text, const std::string& name, const Form
 
 void check_schema(Document& doc, const Format& format) {
     trim_values(doc.get()->children);
-    const auto problems = compiled(format).schema->validate(doc);
-    if (problems.empty()) return;
-    // "FILE:LINE: message" -> the same place, the schema named.
-    const std::string& first = problems.front();
-    const std::string prefix = doc.file() + ":";
-    int line = 0;
-    std::string message = first;
-    if (first.rfind(prefix, 0) == 0) {
-        const std::string rest = first.substr(prefix.size());
-        const auto colon = rest.find(": ");
-        try {
-            line = std::stoi(rest.substr(0, colon));
-        } catch (const std::exception&) {
-            line = 0;
-        }
-        message = colon == std::string::npos ? rest : rest.substr(colon + 2);
-    }
-    throw InputError("does not match cic-" + format.name + ".xsd: " + message, doc.file(), line);
+    const auto problem = compiled(format).schema->first_problem(doc);
+    if (!problem) return;
+    throw InputError("does not match cic-" + format.name + ".xsd: " + problem->message, doc.file(), problem->line);
 }
 
 const Format& sweep_format() {

@@ -27,6 +27,7 @@ struct ErrorSink {
     std::string fallback_file;
     std::vector<std::string> lines;
     int first_line = 0;
+    std::string first_message;   // the first problem without its place: the cause, as a rule
 };
 
 #if LIBXML_VERSION >= 21200
@@ -40,7 +41,7 @@ void collect(void* user, xmlErrorPtr e) {
     std::string msg = e->message ? trim(e->message) : std::string("unknown XML error");
     for (auto p = msg.find('\n'); p != std::string::npos; p = msg.find('\n', p)) msg.replace(p, 1, "; ");
     std::string file = e->file ? e->file : sink->fallback_file;
-    if (sink->lines.empty()) sink->first_line = e->line;
+    if (sink->lines.empty()) sink->first_line = e->line, sink->first_message = msg;
     sink->lines.push_back(file + (e->line > 0 ? ":" + std::to_string(e->line) : std::string()) +
                           ": " + msg);
 }
@@ -224,7 +225,7 @@ Document Document::load_file(const std::filesystem::path& path) {
 
 Document Document::parse_string(std::string_view text, const std::string& name) {
     if (trim(text).empty()) throw InputError("empty file: expected an XML document", name);
-    ErrorSink sink{name, {}, 0};
+    ErrorSink sink{name, {}, 0, {}};
     xmlDoc* doc = nullptr;
     {
         ScopedErrors guard(sink);
@@ -235,9 +236,7 @@ Document Document::parse_string(std::string_view text, const std::string& name) 
         if (doc) xmlFreeDoc(doc);
         if (sink.lines.empty()) throw InputError("malformed XML", name);
         // The first error is the cause; later ones are usually consequences.
-        std::string msg = sink.lines.front();
-        auto colon = msg.find(": ");
-        throw InputError("malformed XML: " + msg.substr(colon + 2), name, sink.first_line);
+        throw InputError("malformed XML: " + sink.first_message, name, sink.first_line);
     }
     if (!xmlDocGetRootElement(doc)) {
         xmlFreeDoc(doc);
@@ -273,8 +272,24 @@ std::vector<std::string> Document::validate(const std::filesystem::path& xsd) co
 
 // ---------------------------------------------------------------- Schema
 
+namespace {
+
+// Validates doc against a compiled schema, collecting every problem.
+ErrorSink run_schema(xmlSchema* schema, const Document& doc) {
+    ErrorSink sink{doc.file(), {}, 0, {}};
+    ScopedErrors guard(sink);
+    std::unique_ptr<xmlSchemaValidCtxt, decltype(&xmlSchemaFreeValidCtxt)> vctx(
+        xmlSchemaNewValidCtxt(schema), xmlSchemaFreeValidCtxt);
+    xmlSchemaSetValidStructuredErrors(vctx.get(), collect, &sink);
+    int rc = xmlSchemaValidateDoc(vctx.get(), doc.get());
+    if (rc != 0 && sink.lines.empty()) sink.lines.push_back(doc.file() + ": does not match the schema");
+    return sink;
+}
+
+} // namespace
+
 Schema::Schema(std::string_view xsd_text, const std::string& name) {
-    ErrorSink sink{name, {}, 0};
+    ErrorSink sink{name, {}, 0, {}};
     ScopedErrors guard(sink);
     std::unique_ptr<xmlSchemaParserCtxt, decltype(&xmlSchemaFreeParserCtxt)> pctx(
         xmlSchemaNewMemParserCtxt(xsd_text.data(), static_cast<int>(xsd_text.size())), xmlSchemaFreeParserCtxt);
@@ -289,16 +304,14 @@ Schema::~Schema() {
     if (schema_) xmlSchemaFree(schema_);
 }
 
-std::vector<std::string> Schema::validate(const Document& doc) const {
-    ErrorSink sink{doc.file(), {}, 0};
-    ScopedErrors guard(sink);
-    std::unique_ptr<xmlSchemaValidCtxt, decltype(&xmlSchemaFreeValidCtxt)> vctx(
-        xmlSchemaNewValidCtxt(schema_), xmlSchemaFreeValidCtxt);
-    xmlSchemaSetValidStructuredErrors(vctx.get(), collect, &sink);
-    int rc = xmlSchemaValidateDoc(vctx.get(), doc.doc_);
-    if (rc != 0 && sink.lines.empty()) sink.lines.push_back(doc.file() + ": does not match the schema");
-    return sink.lines;
+std::vector<std::string> Schema::validate(const Document& doc) const { return run_schema(schema_, doc).lines; }
+
+std::optional<Schema::Problem> Schema::first_problem(const Document& doc) const {
+    const ErrorSink sink = run_schema(schema_, doc);
+    if (sink.lines.empty()) return std::nullopt;
+    return Problem{sink.first_line, sink.first_message.empty() ? "does not match the schema" : sink.first_message};
 }
+
 
 // ---------------------------------------------------------------- files
 

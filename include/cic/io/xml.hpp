@@ -81,7 +81,6 @@ public:
     std::vector<std::string> validate(const std::filesystem::path& xsd) const;
 
 private:
-    friend class Schema;
     Document(_xmlDoc* doc, std::string file);
     _xmlDoc* doc_ = nullptr;
     std::unique_ptr<std::string> file_;   // stable address: doc_->_private points at it
@@ -98,6 +97,12 @@ public:
 
     // One "FILE:LINE: message" per problem (empty = valid).
     std::vector<std::string> validate(const Document& doc) const;
+    // The first problem, the cause as a rule: its line (0 if unknown) and message.
+    struct Problem {
+        int line = 0;
+        std::string message;
+    };
+    std::optional<Problem> first_problem(const Document& doc) const;
 
 private:
     _xmlSchema* schema_ = nullptr;
