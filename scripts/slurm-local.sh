@@ -605,7 +605,7 @@ cmd_kill_node() {
   need_root
   local node=${1:-}
   [ "$(cluster_node_count)" -gt 0 ] || die "kill-node needs a cluster started with --nodes N"
-  cluster_nodes | grep -qx "$node" || die "kill-node: no node '$node' (nodes: $(cluster_nodes | tr '\n' ' '))"
+  cluster_nodes | grep -x "$node" >/dev/null || die "kill-node: no node '$node' (nodes: $(cluster_nodes | tr '\n' ' '))"
   say "losing node $node: SIGKILL to every process in its namespace"
   netns_kill_all "$node"
   rm -f "$(pidfile_of "slurmd@$node")"
@@ -616,7 +616,7 @@ cmd_kill_node() {
 cmd_revive_node() {
   need_root
   local node=${1:-}
-  cluster_nodes | grep -qx "$node" || die "revive-node: no node '$node' (nodes: $(cluster_nodes | tr '\n' ' '))"
+  cluster_nodes | grep -x "$node" >/dev/null || die "revive-node: no node '$node' (nodes: $(cluster_nodes | tr '\n' ' '))"
   start_slurmd "slurmd@$node"
   scontrol update NodeName="$node" State=RESUME 2>/dev/null || true
   wait_node_ready "$node"
