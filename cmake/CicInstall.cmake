@@ -89,6 +89,7 @@ install(FILES ${_cic_settings}
               ${PROJECT_SOURCE_DIR}/settings/cic-robot.xsd
               ${PROJECT_SOURCE_DIR}/settings/cic-population.xsd
               ${PROJECT_SOURCE_DIR}/settings/cic-gait.xsd
+              ${PROJECT_SOURCE_DIR}/settings/cic-archive.xsd
         DESTINATION ${CIC_INSTALL_SHAREDIR}/settings)
 file(GLOB _cic_robots CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/settings/robots/*.xml)
 install(FILES ${_cic_robots} DESTINATION ${CIC_INSTALL_SHAREDIR}/settings/robots)

@@ -21,7 +21,8 @@ public:
     // Jobs go to make_job_runner's runner: worker processes, or MPI ranks.
     HypergpEvaluator(const Context& ctx, std::string job_kind)
         : model_(hypergp::Model::from_settings(ctx.settings)), job_kind_(std::move(job_kind)), warn_(ctx.warn),
-          pool_(make_job_runner(ctx)) {}
+          pool_(make_job_runner(ctx)),
+          descriptor_(ctx.settings.map_elites.enabled ? ctx.settings.map_elites.descriptor : sim::Descriptor::None) {}
 
     // Evaluation is a pure function of the job text (the genotype), so a
     // genotype met again in this session reuses its result instead of another
@@ -34,7 +35,7 @@ public:
         std::unordered_map<std::string_view, std::size_t> queued;
         std::vector<std::string> bodies(todo.size());
         for (std::size_t i = 0; i < todo.size(); ++i) {
-            bodies[i] = job_kind_ + "\n" + hypergp::job_body(todo[i]->genotype);
+            bodies[i] = job_kind_ + "\n" + hypergp::job_body(todo[i]->genotype, descriptor_);
             if (auto hit = cache_.find(bodies[i]); hit != cache_.end()) {
                 apply(*todo[i], hit->second);
                 job_of[i] = kCached;
@@ -92,6 +93,7 @@ private:
         ind.fitness = reply.fitness;
         ind.failed = reply.failed;
         ind.failure = reply.failed ? reply.failure : std::string();
+        ind.descriptor = reply.descriptor;
         ind.evaluated = true;
     }
 
@@ -99,6 +101,7 @@ private:
     std::string job_kind_;
     std::function<void(const std::string&)> warn_;
     std::unique_ptr<JobRunner> pool_;
+    sim::Descriptor descriptor_;   // asked of every job (MAP-Elites), else None
     std::unordered_map<std::string, sim::EvalReply> cache_;   // job text -> reply, for this session
     long simulated_ = 0, reused_ = 0;
 };

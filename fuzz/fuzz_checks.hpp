@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 
+#include "cic/io/archive_xml.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/robot_xml.hpp"
 #include "cic/io/settings_io.hpp"
@@ -72,6 +73,24 @@ inline Outcome check_population(std::string_view input) {
         if (first != second) return bug("population: to_xml -> parse -> to_xml changed the text:\n" + first + "\n---\n" + second);
     } catch (const std::exception& e) {
         return bug(std::string("population: the written population does not parse back: ") + e.what());
+    }
+    return {Verdict::Accepted, {}};
+}
+
+// MAP-Elites archive: parse_archive; then to_xml must parse back and give the same text again.
+inline Outcome check_archive(std::string_view input) {
+    io::ArchiveFile a;
+    try {
+        a = io::parse_archive(input, "<fuzz>");
+    } catch (const std::exception&) {
+        return {};
+    }
+    try {
+        const std::string first = io::to_xml(a);
+        const std::string second = io::to_xml(io::parse_archive(first, "<fuzz-roundtrip>"));
+        if (first != second) return bug("archive: to_xml -> parse -> to_xml changed the text:\n" + first + "\n---\n" + second);
+    } catch (const std::exception& e) {
+        return bug(std::string("archive: the written archive does not parse back: ") + e.what());
     }
     return {Verdict::Accepted, {}};
 }

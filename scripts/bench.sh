@@ -6,6 +6,7 @@
 #   simulator real-time factor, cost over bare ODE, evaluations/s with 1 and 2 workers;
 #   sweep overhead per run and --jobs 2 x 1 worker vs --jobs 1 x 2 workers;
 #   per-evaluation breakdown (substrate build, network steps, physics);
+#   MAP-Elites: the archive's cost per evaluation (variation, offer, checkpoint) against physics;
 #   with --deap N: DEAP vs cic on DEAP's symbreg example over N seeds (default off);
 #   with --r1: the default R1 run (50 x 50, seed 1, 2 workers): wall time and best fitness;
 #   with --tricks: whether the GP loop's speed tricks pay (scripts/bench-gp-tricks.sh).
@@ -25,7 +26,7 @@ while [ $# -gt 0 ]; do
     *) echo "bench.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-cic_setup release "$ROOT/build" cic cic_bench_tree_eval cic_bench_sim cic_bench_nn
+cic_setup release "$ROOT/build" cic cic_bench_tree_eval cic_bench_sim cic_bench_nn cic_bench_map_elites
 B="$ROOT/build/benchmarks"
 
 echo "== machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), $(date -u +%FT%TZ)"
@@ -60,6 +61,22 @@ print(f"  substrate build:      {sub:8.3f} ms")
 print(f"  network, 1200 steps:  {net:8.3f} ms")
 print(f"  physics (sine gait):  {phys:8.3f} ms")
 print(f"  substrate + network = {100*(sub+net)/phys:.1f}% of physics (goal < 10%)")
+'
+echo
+echo "== MAP-Elites: the archive's cost per evaluation (625-cell duty-factor grid, batches of 50), CPU time"
+"$B/cic_bench_map_elites" --benchmark_min_time="$min_time" --benchmark_format=json 2>/dev/null | python3 -c '
+import json, sys
+runs = {b["name"]: b for b in json.load(sys.stdin)["benchmarks"]}
+def ms(name):
+    b = runs[name]; unit = {"ns": 1e-6, "us": 1e-3, "ms": 1.0}[b["time_unit"]]
+    return b["cpu_time"] * unit
+gait, forest = ms("BM_ArchiveStepGait") / 50, ms("BM_ArchiveStepForest") / 50
+ckpt, phys = ms("BM_ArchiveCheckpoint") / 50, ms("BM_PhysicsEvaluationDutyFactors")
+print(f"  vary + offer, gait vector (37):   {gait*1000:8.2f} us")
+print(f"  vary + offer, 3-tree genotype:    {forest*1000:8.2f} us")
+print(f"  checkpoint (602 elites) / 50:     {ckpt*1000:8.2f} us")
+print(f"  physics, R1 15 s, duty factors:   {phys:8.2f} ms")
+print(f"  archive = {100*(forest+ckpt)/phys:.2f}% of physics (HyperGP, checkpoint every batch)")
 '
 if [ "$deap" != 0 ]; then
   echo

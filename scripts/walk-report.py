@@ -34,9 +34,10 @@ marked with *. Evaluations are the counts index.csv records.
 import argparse
 import csv
 import pathlib
-import random
 import statistics as st
 import sys
+
+from study_stats import a12, a12_interval, holm, mann_whitney_p, quartiles
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -185,39 +186,6 @@ def ledger_runs(ledger, study):
         out.setdefault(r["config"], []).append({"score": score, "star": g is None, "gait": g,
                                                 "evaluations": int(float(r["evaluations"])) if r["evaluations"] else None})
     return out or None
-
-
-def quartiles(v):
-    q = st.quantiles(v, n=4, method="inclusive") if len(v) > 1 else [v[0]] * 3
-    return q[0], q[2]
-
-
-def a12(x, y):
-    return sum(1 if a > b else 0.5 if a == b else 0 for a in x for b in y) / (len(x) * len(y))
-
-
-def a12_interval(x, y, resamples=2000):
-    rng = random.Random(1)
-    values = sorted(a12([rng.choice(x) for _ in x], [rng.choice(y) for _ in y]) for _ in range(resamples))
-    return values[int(0.025 * resamples)], values[int(0.975 * resamples) - 1]
-
-
-def mann_whitney_p(x, y):
-    try:
-        from scipy.stats import mannwhitneyu
-    except ImportError:
-        return None
-    return float(mannwhitneyu(x, y, alternative="two-sided").pvalue)
-
-
-def holm(ps):
-    """Holm's step-down adjustment of a list of p-values (None stays None)."""
-    order = sorted((p, i) for i, p in enumerate(ps) if p is not None)
-    out, running = [None] * len(ps), 0.0
-    for rank, (p, i) in enumerate(order):
-        running = max(running, min(1.0, (len(order) - rank) * p))
-        out[i] = running
-    return out
 
 
 def gait_text(best_run):

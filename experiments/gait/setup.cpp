@@ -75,9 +75,9 @@ std::string Setup::describe(std::span<const double> x) const {
     return out;
 }
 
-std::string make_job(const Setup& setup, std::span<const double> x, bool duty_factors) {
-    if (setup.cpg) return sim::make_cpg_job(setup.robot, setup.sim, setup.cpg->decode(x), duty_factors);
-    return sim::make_gait_job(setup.robot, setup.sim, setup.encoding.decode(x), duty_factors);
+std::string make_job(const Setup& setup, std::span<const double> x, sim::Descriptor descriptor) {
+    if (setup.cpg) return sim::make_cpg_job(setup.robot, setup.sim, setup.cpg->decode(x), descriptor);
+    return sim::make_gait_job(setup.robot, setup.sim, setup.encoding.decode(x), descriptor);
 }
 
 Evaluator::Evaluator(const experiments::Context& ctx, const Setup& setup)
@@ -85,10 +85,10 @@ Evaluator::Evaluator(const experiments::Context& ctx, const Setup& setup)
 
 Evaluator::~Evaluator() = default;
 
-std::vector<sim::EvalReply> Evaluator::run(const std::vector<std::vector<double>>& xs, bool duty_factors) {
+std::vector<sim::EvalReply> Evaluator::run(const std::vector<std::vector<double>>& xs, sim::Descriptor descriptor) {
     std::vector<std::string> jobs;
     jobs.reserve(xs.size());
-    for (const auto& x : xs) jobs.push_back(make_job(setup_, x, duty_factors));
+    for (const auto& x : xs) jobs.push_back(make_job(setup_, x, descriptor));
     const auto results = runner_->run(jobs);
     for (const auto& note : runner_->take_notes()) warn_("warning: " + note);
     std::vector<sim::EvalReply> replies(xs.size());
@@ -109,13 +109,14 @@ std::vector<sim::EvalReply> Evaluator::run(const std::vector<std::vector<double>
 
 std::vector<double> Evaluator::operator()(const std::vector<std::vector<double>>& xs) {
     std::vector<double> f;
-    for (const sim::EvalReply& r : run(xs, false)) f.push_back(r.fitness);
+    for (const sim::EvalReply& r : run(xs, sim::Descriptor::None)) f.push_back(r.fitness);
     return f;
 }
 
-std::vector<gp::Evaluation> Evaluator::described(const std::vector<std::vector<double>>& xs) {
+std::vector<gp::Evaluation> Evaluator::described(const std::vector<std::vector<double>>& xs,
+                                                 sim::Descriptor descriptor) {
     std::vector<gp::Evaluation> out;
-    for (sim::EvalReply& r : run(xs, true)) out.push_back({r.fitness, std::move(r.descriptor), r.failed});
+    for (sim::EvalReply& r : run(xs, descriptor)) out.push_back({r.fitness, std::move(r.descriptor), r.failed});
     return out;
 }
 

@@ -1,4 +1,5 @@
 #include "cic/experiments/hypergp/model.hpp"
+#include "cic/experiments/map_elites_grid.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -40,6 +41,7 @@ void check_inputs(const io::Settings& s) {
     if (m.robot.actuated().empty())
         throw InputError("robot '" + m.robot.name + "' has no joint (every module is fixed): HyperGP needs at "
                          "least one module with axis x, y or z", where);
+    if (s.map_elites.enabled) (void)experiments::map_elites_grid(s, m.robot);
     if (m.neural.substrate != "network") return;   // the limits below are the network's
     const nn::NeuronLayout layout = nn::make_neuron_layout(substrate_geometry(m.robot), m.neural);
     const std::size_t in = layout.input.size(), hidden = layout.hidden.size(), out = layout.output.size();
@@ -81,23 +83,35 @@ Outcome run(const Model& m, const tree::Forest& genotype, const sim::EvalOptions
     return o;
 }
 
-std::string job_body(const tree::Forest& genotype) {
+std::string job_body(const tree::Forest& genotype, sim::Descriptor descriptor) {
     std::string body;
     for (const auto& t : genotype) body += t.to_string() + "\n";
+    if (descriptor != sim::Descriptor::None) body += "descriptor " + sim::to_string(descriptor) + "\n";
     return body;
 }
 
-tree::Forest parse_job_body(const std::string& body) {
-    tree::Forest f;
+Job parse_job_body(const std::string& body) {
+    Job job;
     std::istringstream in(body);
     std::string line;
-    while (std::getline(in, line))
-        if (!line.empty()) f.push_back(tree::Tree::parse(line));
-    if (f.empty()) throw std::invalid_argument("hypergp job has no trees");
-    return f;
+    while (std::getline(in, line)) {
+        if (line.empty()) continue;
+        if (line.starts_with("descriptor ")) {   // the last line, when present
+            if (job.genotype.empty()) throw std::invalid_argument("hypergp job: a descriptor before the trees");
+            job.descriptor = sim::descriptor_from(line.substr(11));
+            if (std::getline(in, line) && !line.empty())
+                throw std::invalid_argument("hypergp job: a line after the descriptor");
+            break;
+        }
+        job.genotype.push_back(tree::Tree::parse(line));
+    }
+    if (job.genotype.empty()) throw std::invalid_argument("hypergp job has no trees");
+    return job;
 }
 
-sim::EvalReply to_reply(const Outcome& o) { return {o.fitness, {}, o.failed, o.failure}; }
+sim::EvalReply to_reply(const Outcome& o, std::vector<double> descriptor) {
+    return {o.fitness, o.failed ? std::vector<double>{} : std::move(descriptor), o.failed, o.failure};
+}
 
 std::function<std::string(const std::string&)> make_job_handler(std::function<io::Settings()> settings,
                                                                  Score score) {
@@ -112,7 +126,10 @@ std::function<std::string(const std::string&)> make_job_handler(std::function<io
             Model m = Model::from_settings(s);
             loaded->emplace(Loaded{std::move(s), std::move(m)});
         }
-        Outcome o = run((*loaded)->model, parse_job_body(body));
+        const Job job = parse_job_body(body);
+        sim::EvalOptions options;
+        options.record_ground = sim::needs_ground(job.descriptor);
+        Outcome o = run((*loaded)->model, job.genotype, options);
         if (score && !o.failed) {
             o.fitness = score((*loaded)->model, (*loaded)->settings, o);
             if (!std::isfinite(o.fitness)) {
@@ -121,7 +138,9 @@ std::function<std::string(const std::string&)> make_job_handler(std::function<io
                 o.fitness = (*loaded)->model.sim.failure_fitness;
             }
         }
-        return sim::format_eval_reply(to_reply(o));
+        return sim::format_eval_reply(
+            to_reply(o, o.failed ? std::vector<double>{}
+                                 : sim::descriptor_of(job.descriptor, (*loaded)->model.robot, o.result)));
     };
 }
 

@@ -18,6 +18,7 @@ void add_assess_command(Command& app, CommandContext& ctx) {
         std::vector<std::string> inputs;
         std::string out;
         double shaking_above = kShakingAboveHz;
+        std::string cell;
     };
     auto opts = std::make_shared<Options>();
     Command cmd = app.subcommand(
@@ -25,6 +26,8 @@ void add_assess_command(Command& app, CommandContext& ctx) {
                   "dominant command frequency, centre height, flipped, shaking (thesis 7.3.2.1), and the raw eq. 7.1 "
                   "fitness without any penalty. CSV, one row per input");
     cmd.option("inputs", opts->inputs, "run folders or population XML files").required();
+    cmd.option("--cell", opts->cell,
+               "in MAP-Elites runs, assess this cell's elite instead of the best: I,J,... or the cell's number");
     cmd.option("--out", opts->out, "write the CSV here (atomically) instead of stdout");
     cmd.option("--shaking-above", opts->shaking_above, "dominant command frequency, Hz, above which a gait is "
                                                             "marked shaking")
@@ -36,7 +39,7 @@ void add_assess_command(Command& app, CommandContext& ctx) {
             csv << "input,fitness,dominant_hz,mean_height,min_height,final_up,flipped,shaking,raw_fitness,distance,"
                    "elevation,verdict,duty_factors\n";
             for (const std::string& input : opts->inputs) {
-                const auto items = replay(input, "best", 1, 10.0, true);
+                const auto items = replay(input, opts->cell.empty() ? "best" : "cell:" + opts->cell, 1, 10.0, true);
                 const GaitAssessment a = assess_gait(items.at(0), opts->shaking_above);
                 std::string duty;   // "foot:fraction" per foot, space-separated
                 for (std::size_t f = 0; f < a.foot_names.size(); ++f)

@@ -8,6 +8,7 @@
 
 #include "cic/cli/command_guard.hpp"
 #include "cic/cli/commands.hpp"
+#include "cic/report/archive_plot.hpp"
 #include "cic/report/plot.hpp"
 #include "cic/core/error.hpp"
 
@@ -27,6 +28,8 @@ struct PlotCommandOptions {
     bool include_unfinished = false;
     bool by_evaluations = false;
     std::vector<std::string> configs;
+    bool archive = false;
+    std::vector<std::string> dims{"1", "2"};
 };
 
 // The fields every kind of plot shares; P is PlotOptions or one derived from it.
@@ -73,10 +76,42 @@ void add_plot_command(Command& app, CommandContext& ctx) {
                     "with --by-evaluations: only these configurations (config names of index.csv); every study "
                     "must have them")
         .delimiter(',');
+    cmd.flag("--archive", opts->archive,
+             "a MAP-Elites run: its archive as a heatmap of the best fitness over two descriptor dimensions, the "
+             "others collapsed to their best (docs/quality-diversity.md)");
+    cmd.option("--dims", opts->dims, "with --archive: the two descriptor dimensions on the x and y axes, from 1")
+        .delimiter(',')
+        .show_default();
     cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "plot", [&] {
             if (opts->trace.empty() == opts->runs.empty())
                 throw InputError("give either run folders or --trace FILE.csv");
+            if (opts->archive) {
+                if (opts->runs.size() != 1 || opts->by_evaluations || !opts->trace.empty())
+                    throw InputError("--archive plots one MAP-Elites run folder");
+                std::vector<std::size_t> dims;
+                for (const std::string& d : opts->dims) {
+                    std::size_t used = 0;
+                    int v = 0;
+                    try {
+                        v = std::stoi(d, &used);
+                    } catch (const std::exception&) {
+                        used = 0;
+                    }
+                    if (used == 0 || used != d.size() || v < 1)
+                        throw InputError("--dims takes two descriptor dimensions, from 1, e.g. --dims 1,2; got '" + d +
+                                         "'");
+                    dims.push_back(static_cast<std::size_t>(v - 1));
+                }
+                if (dims.size() != 2) throw InputError("--dims takes two descriptor dimensions, e.g. --dims 1,2");
+                auto plot = plot_options<ArchivePlotOptions>(*opts);
+                plot.x_dim = dims[0];
+                plot.y_dim = dims[1];
+                const std::string out = opts->out.empty() ? "archive.svg" : opts->out;
+                plot_archive(opts->runs[0], out, plot);
+                if (!ctx.quiet) std::cerr << "wrote " << out << '\n';
+                return 0;
+            }
             if (opts->by_evaluations && !opts->trace.empty())
                 throw InputError("--by-evaluations plots study folders, not a trace");
             if (!opts->trace.empty()) {

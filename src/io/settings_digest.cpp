@@ -24,6 +24,8 @@ std::string settings_digest(const Settings& s) {
         if (k.section == "Gait" && family_of(s) != ExperimentFamily::Gait) continue;
         // The restart keys shape only runs with restarts (so other gait runs keep the digest they had before them).
         if (k.section == "Gait" && k.key.rfind("restart", 0) == 0 && s.gait.restarts == GaitRestarts::None) continue;
+        // MAP-Elites keys shape only MAP-Elites runs (so every other run keeps its digest).
+        if (k.section == "MapElites" && !s.map_elites.enabled) continue;
         const std::string value = k.get(s);
         if (!k.digest_at_default && value == default_text(k)) continue;
         lines += full + "=" + value + "\n";

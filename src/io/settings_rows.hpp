@@ -164,5 +164,6 @@ inline SettingKey sim_row(const sim::FieldSpec& f) {
 void neural_rows(std::vector<SettingKey>& t);
 void symreg_rows(std::vector<SettingKey>& t);
 void gait_rows(std::vector<SettingKey>& t);
+void map_elites_rows(std::vector<SettingKey>& t);
 
 } // namespace cic::io::rows

@@ -282,6 +282,7 @@ std::vector<SettingKey> build_table() {
     neural_rows(t);
     symreg_rows(t);
     gait_rows(t);
+    map_elites_rows(t);
     return t;
 }
 
@@ -294,7 +295,8 @@ namespace detail {
 // (settings_extension.cpp, experiment_types.cpp), before settings are read.
 const std::vector<std::string>& builtin_settings_sections() {
     static const std::vector<std::string> s{"Experiment", "GP",     "Simulator",          "Control",
-                                            "BloatControl", "Neural", "SymbolicRegression", "Gait"};
+                                            "BloatControl", "Neural", "SymbolicRegression", "Gait",
+                                            "MapElites"};
     return s;
 }
 

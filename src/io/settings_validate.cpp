@@ -132,6 +132,19 @@ void validate(const Settings& s, const Locations& locs) {
     c.require(family_of(s) != ExperimentFamily::Gait || s.gait.population_size <= s.gait.evaluations,
               {"Gait.populationSize", "Gait.evaluations"}, "the budget does not cover one generation");
 
+    c.require(!s.map_elites.enabled || family_of(s) == ExperimentFamily::HyperGP ||
+                  family_of(s) == ExperimentFamily::Gait,
+              {"MapElites.enabled", "Experiment.type"},
+              "MAP-Elites searches the robot experiments (allowed: the hypergp and gait families); symbolic "
+              "regression has no behaviour descriptor");
+    c.require(!s.map_elites.enabled || s.gait.restarts == GaitRestarts::None, {"Gait.restarts", "MapElites.enabled"},
+              "ipop restarts belong to the pagmo optimisers, which MAP-Elites replaces (allowed: Gait.restarts = none)");
+    c.require(!s.map_elites.enabled || s.map_elites.batch <= s.map_elites.evaluations,
+              {"MapElites.batch", "MapElites.evaluations"}, "the budget does not cover one batch");
+    c.require(!s.map_elites.enabled || s.gp.crossover_rate + s.gp.mutation_rate > 0,
+              {"GP.crossoverRate", "GP.mutationRate", "MapElites.enabled"},
+              "MAP-Elites varies elites by crossover and mutation: their rates cannot both be 0");
+
     const auto& name = s.experiment.name;
     c.require(name.find('/') == std::string::npos && name != "." && name != "..", {"Experiment.name"},
               "the run name becomes a folder name and cannot contain '/'");

@@ -16,12 +16,18 @@ std::string to_csv_row(const gp::GenerationRecord& r) {
     return buf;
 }
 
-StatsWriter::StatsWriter(const std::filesystem::path& path) : path_(path), out_(path) {
+namespace {
+std::string header_of(const std::string& extra_columns) {
+    return std::string(kStatsColumns) + (extra_columns.empty() ? "" : "," + extra_columns);
+}
+} // namespace
+
+StatsWriter::StatsWriter(const std::filesystem::path& path, std::string extra_columns) : path_(path), out_(path) {
     if (!out_) throw std::runtime_error(path.string() + ": cannot write statistics file");
-    out_ << kStatsColumns << '\n' << std::flush;
+    out_ << header_of(extra_columns) << '\n' << std::flush;
 }
 
-StatsWriter::StatsWriter(const std::filesystem::path& path, int through) : path_(path) {
+StatsWriter::StatsWriter(const std::filesystem::path& path, int through, std::string extra_columns) : path_(path) {
     std::string kept;
     {
         std::ifstream in(path);
@@ -32,14 +38,14 @@ StatsWriter::StatsWriter(const std::filesystem::path& path, int through) : path_
             if (std::sscanf(line.c_str(), "%d,", &generation) == 1 && generation <= through) kept += line + '\n';
         }
     }
-    if (kept.empty()) kept = std::string(kStatsColumns) + '\n';
+    if (kept.empty()) kept = header_of(extra_columns) + '\n';
     xml::write_file_atomically(path, kept);
     out_.open(path, std::ios::app);
     if (!out_) throw std::runtime_error(path.string() + ": cannot write statistics file");
 }
 
-void StatsWriter::write(const gp::GenerationRecord& r) {
-    out_ << to_csv_row(r) << '\n' << std::flush;
+void StatsWriter::write(const gp::GenerationRecord& r, const std::string& extra_cells) {
+    out_ << to_csv_row(r) << (extra_cells.empty() ? "" : ",") << extra_cells << '\n' << std::flush;
     if (!out_) throw std::runtime_error(path_.string() + ": write failed (disk full?)");
 }
 

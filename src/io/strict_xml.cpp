@@ -251,5 +251,9 @@ const Format& gait_format() {
     static const Format f{"gait", "gait checkpoint", {}, {}, {}};
     return f;
 }
+const Format& archive_format() {
+    static const Format f{"archive", "MAP-Elites archive", {}, {}, {}};
+    return f;
+}
 
 } // namespace cic::io::xml

@@ -11,6 +11,7 @@
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 #include "cic/io/experiment_types.hpp"
+#include "cic/io/archive_xml.hpp"
 #include "cic/io/gait_xml.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
@@ -43,6 +44,41 @@ std::vector<fs::path> saved_generations(const fs::path& run) {
     return files;
 }
 
+// A MAP-Elites run: the elites of its last archive, in cell order.
+void export_elites(const fs::path& run, const io::Settings& s, const std::string& prefix, bool terms, std::string& csv) {
+    if (!fs::exists(run / "population.xml")) return;   // no batch finished yet
+    const io::ArchiveFile a = io::load_archive(run / "population.xml");
+    const bool gait = io::family_of(s) == io::ExperimentFamily::Gait;
+    std::optional<gait::Setup> setup;
+    std::optional<hypergp::Model> model;
+    if (terms && gait) setup = gait::Setup::from_settings(s);
+    if (terms && !gait) model = hypergp::Model::from_settings(s);
+    const gp::GridArchive<int> grid(a.grid);
+    for (const io::ArchiveElite& e : a.elites) {
+        std::string solution, bins, descriptor;
+        for (double x : e.x) solution += (solution.empty() ? "" : " ") + number(x);
+        for (const auto& t : e.genotype) solution += (solution.empty() ? "" : " | ") + t.to_string();
+        for (int b : grid.coordinates(e.cell)) bins += (bins.empty() ? "" : ",") + std::to_string(b);
+        for (double v : e.descriptor) descriptor += (descriptor.empty() ? "" : " ") + number(v);
+        std::string dist, elev, depth, size;
+        if (setup) {
+            const auto controller = setup->controller(e.x);
+            const auto [d, z] = eq71_terms(setup->robot, sim::evaluate(setup->robot, *controller, setup->sim));
+            dist = number(d), elev = number(z);
+        } else if (model) {
+            const auto [d, z] = eq71_terms(model->robot, hypergp::run(*model, e.genotype).result);
+            dist = number(d), elev = number(z);
+        }
+        if (!gait) {
+            depth = std::to_string(s.gp.forest_depth == gp::ForestDepth::Sum ? tree::total_depth(e.genotype)
+                                                                             : tree::max_depth(e.genotype));
+            size = std::to_string(tree::total_size(e.genotype));
+        }
+        csv += prefix + fmt::format("{},{},{},{},{},{},{},0,{},{},{}\n", a.batches - 1, e.cell, number(e.fitness), dist,
+                                    elev, depth, size, cell(solution), cell(bins), cell(descriptor));
+    }
+}
+
 void export_run(const fs::path& run, const std::string& label, const std::string& config, const std::string& seed,
                 bool terms, std::string& csv) {
     if (!fs::is_regular_file(run / "settings.xml"))
@@ -51,6 +87,7 @@ void export_run(const fs::path& run, const std::string& label, const std::string
     const std::string prefix = cell(label) + "," + cell(config) + "," + seed + ",";
     const io::ExperimentFamily family = io::family_of(s);
     std::map<std::string, std::pair<double, double>> seen;   // genotype -> terms, once per run
+    if (s.map_elites.enabled) return export_elites(run, s, prefix, terms, csv);
 
     if (family == io::ExperimentFamily::Gait) {
         std::optional<gait::Setup> setup;
@@ -70,7 +107,7 @@ void export_run(const fs::path& run, const std::string& label, const std::string
                     }
                     dist = number(it->second.first), elev = number(it->second.second);
                 }
-                csv += prefix + fmt::format("{},{},{},{},{},,,0,{}\n", g.generation, i, number(point.fitness), dist,
+                csv += prefix + fmt::format("{},{},{},{},{},,,0,{},,\n", g.generation, i, number(point.fitness), dist,
                                             elev, cell(params));
             }
         }
@@ -89,7 +126,7 @@ void export_run(const fs::path& run, const std::string& label, const std::string
                 if (fresh) it->second = eq71_terms(model->robot, hypergp::run(*model, ind->genotype).result);
                 dist = number(it->second.first), elev = number(it->second.second);
             }
-            csv += prefix + fmt::format("{},{},{},{},{},{},{},{},{}\n", pop.population.generation, ind->id,
+            csv += prefix + fmt::format("{},{},{},{},{},{},{},{},{},,\n", pop.population.generation, ind->id,
                                         number(ind->fitness), dist, elev, ind->depth(s.gp.forest_depth), ind->size(),
                                         ind->failed ? 1 : 0, cell(trees));
         }

@@ -129,7 +129,10 @@ std::vector<std::string> joint_names_of(const ReplayItem& item) {
 std::vector<ReplayItem> load_replay(const ReplaySource& source, int count, double fps, bool trace) {
     if (source.input.empty() == source.robot.empty())
         throw InputError("give either a RUN_DIR / POPULATION.xml or --robot R0|R1|R2 (with --controller)");
-    if (!source.input.empty()) return replay(source.input, source.individual, count, fps, trace);
+    if (!source.cell.empty() && source.individual != "best")
+        throw InputError("give --individual or --cell, not both");
+    if (!source.input.empty())
+        return replay(source.input, source.cell.empty() ? source.individual : "cell:" + source.cell, count, fps, trace);
     if (source.seconds < 0) throw InputError("--seconds must be positive");
     PresetReplay preset;
     if (fs::exists(source.robot))

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <tuple>
 #include <filesystem>
+#include <optional>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -14,7 +16,9 @@
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/sim/layout.hpp"
+#include "cic/io/archive_xml.hpp"
 #include "cic/io/gait_xml.hpp"
+#include "cic/experiments/map_elites_grid.hpp"
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 
@@ -96,6 +100,123 @@ std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& setti
     return {std::move(item)};
 }
 
+// The cell a --cell text names: "I,J,..." (one bin per dimension) or a number.
+std::size_t cell_named(const std::string& text, const gp::GridSpec& grid, const std::string& file) {
+    std::vector<long> parts;
+    std::string item;
+    std::istringstream in(text);
+    while (std::getline(in, item, ',')) {
+        std::size_t used = 0;
+        long v = -1;
+        try {
+            v = std::stol(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != item.size() || v < 0)
+            throw InputError("--cell takes I,J,... (a bin per descriptor dimension, from 0) or a cell number; got '" +
+                             text + "'");
+        parts.push_back(v);
+    }
+    const gp::GridArchive<int> archive(grid);
+    if (parts.size() == 1 && grid.dimensions() > 1) {
+        if (static_cast<std::size_t>(parts[0]) >= archive.cells())
+            throw InputError(fmt::format("--cell {}: the grid has cells 0 to {}", text, archive.cells() - 1), file);
+        return static_cast<std::size_t>(parts[0]);
+    }
+    if (parts.size() != grid.dimensions())
+        throw InputError(fmt::format("--cell {}: the grid has {} dimensions, so give {} bins", text, grid.dimensions(),
+                                     grid.dimensions()),
+                         file);
+    std::size_t cell = 0;
+    for (std::size_t d = 0; d < parts.size(); ++d) {
+        if (parts[d] >= grid.bins[d])
+            throw InputError(fmt::format("--cell {}: dimension {} has bins 0 to {}", text, d + 1, grid.bins[d] - 1),
+                             file);
+        cell = cell * static_cast<std::size_t>(grid.bins[d]) + static_cast<std::size_t>(parts[d]);
+    }
+    return cell;
+}
+
+// A MAP-Elites run: the fittest elites, or the one of a cell.
+std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& settings, const std::string& individual,
+                                       int count, double fps, bool trace) {
+    const io::ArchiveFile a = io::load_archive(src.population);
+    const hypergp::Model model = hypergp::Model::from_settings(settings);
+    io::check_compatible(a, settings, experiments::map_elites_grid(settings, model.robot), src.population.string());
+    std::vector<const io::ArchiveElite*> chosen;
+    if (individual == "best") {
+        for (const auto& e : a.elites) chosen.push_back(&e);
+        std::stable_sort(chosen.begin(), chosen.end(), [](auto* x, auto* y) { return x->fitness > y->fitness; });
+        chosen.resize(std::min<std::size_t>(chosen.size(), static_cast<std::size_t>(std::max(1, count))));
+        if (chosen.empty()) throw InputError("the archive holds no elite (every evaluation failed)", src.population.string());
+    } else if (individual.rfind("cell:", 0) == 0) {
+        const std::size_t cell = cell_named(individual.substr(5), a.grid, src.population.string());
+        const io::ArchiveElite* e = a.at(cell);
+        if (!e) {
+            const gp::GridArchive<int> grid(a.grid);
+            std::string bins;
+            for (int b : grid.coordinates(cell)) bins += (bins.empty() ? "" : ",") + std::to_string(b);
+            throw InputError(fmt::format("cell {} ({}) is empty: {} of {} cells hold an elite (cic export lists them)",
+                                         bins, cell, a.elites.size(), grid.cells()),
+                             src.population.string());
+        }
+        chosen.push_back(e);
+    } else {
+        throw InputError("a MAP-Elites run's elites are chosen by --cell I,J,... or --individual best, not an id; got '" +
+                         individual + "'");
+    }
+    const bool gait = io::family_of(settings) == io::ExperimentFamily::Gait;
+    std::optional<gait::Setup> setup;
+    if (gait) setup = gait::Setup::from_settings(settings);
+    const sim::RobotSpec& robot = gait ? setup->robot : model.robot;
+    const gp::GridArchive<int> grid(a.grid);
+    std::vector<ReplayItem> items;
+    for (const io::ArchiveElite* e : chosen) {
+        sim::EvalOptions opt;
+        opt.record_fps = fps;
+        opt.record_trace = trace;
+        opt.record_ground = trace;
+        ReplayItem item;
+        std::string bins;
+        for (int b : grid.coordinates(e->cell)) bins += (bins.empty() ? "" : ",") + std::to_string(b);
+        item.label = fmt::format("cell {} ({}), batch {}", bins, e->cell, a.batches - 1);
+        item.stored_fitness = e->fitness;
+        item.generation = a.batches - 1;
+        item.id = e->cell;
+        sim::EvalResult r;
+        if (gait) {
+            if (e->x.size() != setup->dimension())
+                throw InputError(fmt::format("the elite of cell {} has {} parameters, these settings make {}", e->cell,
+                                             e->x.size(), setup->dimension()),
+                                 src.population.string());
+            const auto controller = setup->controller(e->x);
+            r = sim::evaluate(robot, *controller, setup->sim, opt);
+            item.replayed_fitness = item.raw_fitness = r.fitness;
+            if (trace)
+                for (const auto& row : r.trace) item.raw_outputs.push_back(row.desired);
+        } else {
+            const hypergp::Outcome o = hypergp::run(model, e->genotype, opt, trace);
+            r = o.result;
+            item.replayed_fitness = o.fitness;
+            item.raw_fitness = o.distance_fitness;
+            if (trace) {
+                const std::size_t j = o.control.joints;
+                for (std::size_t step = 0; step < o.control.steps(); ++step)
+                    item.raw_outputs.emplace_back(o.control.outputs.begin() + static_cast<std::ptrdiff_t>(step * j),
+                                                  o.control.outputs.begin() + static_cast<std::ptrdiff_t>((step + 1) * j));
+            }
+        }
+        if (r.recording) item.recording = *r.recording;
+        item.trace = r.trace;
+        item.centre_body = centre_body_of(robot);
+        item.joint_names = joint_names_of(robot);
+        fill_walk(item, robot, r);
+        items.push_back(std::move(item));
+    }
+    return items;
+}
+
 } // namespace
 
 std::pair<double, double> eq71_terms(const sim::RobotSpec& robot, const sim::EvalResult& r) {
@@ -118,6 +239,10 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
                                bool trace) {
     const Source src = locate(source);
     const io::Settings settings = io::read_settings(src.settings);
+    if (settings.map_elites.enabled) return replay_archive(src, settings, individual, count, fps, trace);
+    if (individual.rfind("cell:", 0) == 0)
+        throw InputError("--cell picks an elite of a MAP-Elites run (MapElites.enabled); this run has no archive",
+                         src.settings.string());
     if (io::family_of(settings) == io::ExperimentFamily::Gait) return replay_gait(src, settings, individual, fps, trace);
     if (io::family_of(settings) != io::ExperimentFamily::HyperGP)
         throw InputError("only robot runs (HyperGP, gait) can be replayed; this run is symbolic regression",

@@ -8,6 +8,7 @@
 
 #include "cic/core/error.hpp"
 #include "cic/io/experiment_types.hpp"
+#include "cic/io/archive_xml.hpp"
 #include "cic/io/gait_xml.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
@@ -35,7 +36,16 @@ int resume_run(const ResumeRequest& r) {
     const bool gait = io::family_of(ran) == io::ExperimentFamily::Gait;
     const std::string where = checkpoint.string();
 
-    if (gait) {
+    if (ran.map_elites.enabled) {
+        if (r.generations || r.until)
+            throw InputError("a MAP-Elites run's budget is its evaluations: resume it with --set MapElites.evaluations=E");
+        const io::ArchiveFile a = io::load_archive(checkpoint);
+        if (asked.map_elites.evaluations <= a.evaluations)
+            throw InputError(fmt::format("the run has spent {} of its {} evaluations; ask for more with "
+                                         "--set MapElites.evaluations=E (E > {})",
+                                         a.evaluations, asked.map_elites.evaluations, a.evaluations),
+                             where);
+    } else if (gait) {
         if (r.generations || r.until)
             throw InputError("a gait run's budget is its evaluations: resume it with --set Gait.evaluations=E");
         const io::GaitFile g = io::load_gait(checkpoint);
@@ -67,7 +77,8 @@ int resume_run(const ResumeRequest& r) {
     if (!refused.empty()) {
         std::string text = fmt::format("cannot continue {} with other settings than it ran:", dir.string());
         for (const auto& d : refused) text += "\n  " + d;
-        throw InputError(text + "\nresume changes only the budget (--generations, --until, Control.minimumFitness, Gait.evaluations) and "
+        throw InputError(text + "\nresume changes only the budget (--generations, --until, Control.minimumFitness, Gait.evaluations, "
+                                "MapElites.evaluations) and "
                                 "keys that change no result (workers); start a new run for other settings",
                          settings_file.string());
     }

@@ -16,6 +16,8 @@
 #include "cic/experiments/experiment.hpp"
 #include "cic/experiments/gait/restarts.hpp"
 #include "cic/experiments/gait/setup.hpp"
+#include "cic/experiments/hypergp/model.hpp"
+#include "cic/experiments/map_elites_grid.hpp"
 #include "run_support.hpp"
 
 namespace cic::app {
@@ -30,7 +32,17 @@ using detail::write_checkpoint;
 PreparedRun prepare_run(io::Settings s) {
     experiments::check_inputs(s);
     PreparedRun p;
-    if (!s.control.population_load_from.empty() && io::family_of(s) == io::ExperimentFamily::Gait) {
+    if (!s.control.population_load_from.empty() && s.map_elites.enabled) {
+        const std::string from = s.control.population_load_from;
+        try {
+            io::ArchiveFile loaded = io::load_archive(from);
+            const sim::RobotSpec robot = hypergp::Model::from_settings(s).robot;
+            io::check_compatible(loaded, s, experiments::map_elites_grid(s, robot), from);
+            p.archive_resume = std::move(loaded);
+        } catch (const InputError& e) {
+            throw InputError("<Control> populationXmlLoadFrom: " + e.message(), e.file(), e.line());
+        }
+    } else if (!s.control.population_load_from.empty() && io::family_of(s) == io::ExperimentFamily::Gait) {
         const std::string from = s.control.population_load_from;
         try {
             io::GaitFile loaded = io::load_gait(from);
@@ -163,6 +175,7 @@ std::string summary_of(const gp::EvolutionResult& result, const experiments::Exp
 
 int run_experiment(PreparedRun prepared, const RunOptions& opt) {
     // The loop is the family's: the gait family's own, else the GP loop with the type's evaluator.
+    if (prepared.settings.map_elites.enabled) return detail::run_map_elites(std::move(prepared), opt);
     if (io::family_of(prepared.settings) == io::ExperimentFamily::Gait) return detail::run_gait(std::move(prepared), opt);
     const io::Settings& s = prepared.settings;
     RunConsole console(opt);

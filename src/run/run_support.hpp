@@ -87,5 +87,7 @@ std::string eq71_line(double distance, double elevation);
 
 // The gait experiment's loop (run_gait.cpp); run_experiment hands over to it.
 int run_gait(PreparedRun prepared, const RunOptions& opt);
+// The MAP-Elites loop of either robot family (run_map_elites.cpp).
+int run_map_elites(PreparedRun prepared, const RunOptions& opt);
 
 } // namespace cic::app::detail

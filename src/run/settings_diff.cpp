@@ -41,7 +41,8 @@ std::vector<std::string> settings_differences(const io::Settings& ran_settings, 
 }
 
 bool is_budget_difference(const std::string& difference) {
-    for (const char* key : {"Control.maximumIterations:", "Control.minimumFitness:", "Gait.evaluations:"})
+    for (const char* key : {"Control.maximumIterations:", "Control.minimumFitness:", "Gait.evaluations:",
+                            "MapElites.evaluations:"})
         if (difference.rfind(key, 0) == 0) return true;
     return false;
 }
@@ -52,7 +53,8 @@ bool extends(const io::Settings& ran, const io::Settings& asked) {
     for (const auto& d : diffs)
         if (!is_budget_difference(d)) return false;
     return asked.control.maximum_iterations >= ran.control.maximum_iterations &&
-           asked.control.minimum_fitness >= ran.control.minimum_fitness && asked.gait.evaluations >= ran.gait.evaluations;
+           asked.control.minimum_fitness >= ran.control.minimum_fitness && asked.gait.evaluations >= ran.gait.evaluations &&
+           asked.map_elites.evaluations >= ran.map_elites.evaluations;
 }
 
 } // namespace cic::app

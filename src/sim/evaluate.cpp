@@ -144,4 +144,31 @@ std::vector<double> duty_factors(const RobotSpec& robot, const EvalResult& resul
     return out;
 }
 
+std::string to_string(Descriptor d) {
+    switch (d) {
+    case Descriptor::None: return "none";
+    case Descriptor::DutyFactor: return "duty-factor";
+    case Descriptor::Omni: return "omni";
+    }
+    return "?";
+}
+
+Descriptor descriptor_from(const std::string& name) {
+    for (Descriptor d : {Descriptor::None, Descriptor::DutyFactor, Descriptor::Omni})
+        if (to_string(d) == name) return d;
+    throw std::invalid_argument("unknown behaviour descriptor '" + name + "' (allowed: none, duty-factor, omni)");
+}
+
+std::vector<double> descriptor_of(Descriptor d, const RobotSpec& robot, const EvalResult& result) {
+    switch (d) {
+    case Descriptor::None: return {};
+    case Descriptor::DutyFactor:
+        if (result.module_ground_steps.empty())
+            throw std::invalid_argument("descriptor_of: duty factors need the ground recorded");
+        return duty_factors(robot, result);
+    case Descriptor::Omni: return {result.end[0] - result.start[0], result.end[1] - result.start[1]};
+    }
+    return {};
+}
+
 } // namespace cic::sim

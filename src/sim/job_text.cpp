@@ -191,30 +191,37 @@ std::string run_sine_job(const std::string& body) {
 
 namespace {
 
-// The optional last line of a job: "duty 1" asks for the duty-factor descriptor.
-void write_duty_request(std::ostream& out, bool duty_factors) {
-    if (duty_factors) out << "duty 1\n";
+// The optional last line of a job: "descriptor NAME" asks for a behaviour descriptor.
+void write_descriptor_request(std::ostream& out, Descriptor d) {
+    if (d != Descriptor::None) out << "descriptor " << to_string(d) << "\n";
 }
 
-bool read_duty_request(std::istream& in) {
+Descriptor read_descriptor_request(std::istream& in) {
     std::string w;
-    if (!(in >> w)) return false;
-    if (w != "duty") bad("expected 'duty' or the end of the job, got '" + w + "'");
-    return read_int(in) != 0;
+    if (!(in >> w)) return Descriptor::None;
+    if (w != "descriptor") bad("expected 'descriptor' or the end of the job, got '" + w + "'");
+    std::string name;
+    if (!(in >> name)) bad("'descriptor' without a name");
+    try {
+        return descriptor_from(name);
+    } catch (const std::invalid_argument& e) {
+        bad(e.what());
+    }
+    return Descriptor::None;
 }
 
-// Evaluates and replies, with each foot's duty factor when asked.
-std::string evaluate_and_reply(const RobotSpec& robot, Controller& controller, const SimConfig& cfg, bool duty) {
+// Evaluates and replies, with the behaviour descriptor when asked.
+std::string evaluate_and_reply(const RobotSpec& robot, Controller& controller, const SimConfig& cfg, Descriptor d) {
     EvalOptions options;
-    options.record_ground = duty;
+    options.record_ground = needs_ground(d);
     const EvalResult r = evaluate(robot, controller, cfg, options);
-    EvalReply reply{r.fitness, duty ? duty_factors(robot, r) : std::vector<double>{}, r.failed, r.failure};
+    EvalReply reply{r.fitness, r.failed ? std::vector<double>{} : descriptor_of(d, robot, r), r.failed, r.failure};
     return format_eval_reply(reply);
 }
 
 } // namespace
 
-std::string make_gait_job(const RobotSpec& robot, const SimConfig& cfg, const GaitSpec& gait, bool duty_factors) {
+std::string make_gait_job(const RobotSpec& robot, const SimConfig& cfg, const GaitSpec& gait, Descriptor descriptor) {
     std::ostringstream out;
     out << "gait\n";
     write_robot_text(out, robot);
@@ -223,7 +230,7 @@ std::string make_gait_job(const RobotSpec& robot, const SimConfig& cfg, const Ga
     for (const GaitJoint& j : gait.joints)
         out << hexfloat(j.amplitude) << ' ' << hexfloat(j.phase) << ' ' << hexfloat(j.offset) << ' '
             << hexfloat(j.amplitude2) << ' ' << hexfloat(j.phase2) << '\n';
-    write_duty_request(out, duty_factors);
+    write_descriptor_request(out, descriptor);
     return out.str();
 }
 
@@ -245,12 +252,12 @@ std::string run_gait_job(const std::string& body) {
         j.amplitude2 = read_double(in);
         j.phase2 = read_double(in);
     }
-    const bool duty = read_duty_request(in);
+    const Descriptor descriptor = read_descriptor_request(in);
     GaitController controller(std::move(gait));
-    return evaluate_and_reply(robot, controller, cfg, duty);
+    return evaluate_and_reply(robot, controller, cfg, descriptor);
 }
 
-std::string make_cpg_job(const RobotSpec& robot, const SimConfig& cfg, const CpgSpec& cpg, bool duty_factors) {
+std::string make_cpg_job(const RobotSpec& robot, const SimConfig& cfg, const CpgSpec& cpg, Descriptor descriptor) {
     validate(cpg);
     std::ostringstream out;
     out << "cpg\n";
@@ -263,7 +270,7 @@ std::string make_cpg_job(const RobotSpec& robot, const SimConfig& cfg, const Cpg
     out << "feedback " << (cpg.feedback.empty() ? 0 : 1) << "\nedges " << cpg.edges.size() << '\n';
     for (std::size_t k = 0; k < cpg.edges.size(); ++k)
         out << cpg.edges[k].a << ' ' << cpg.edges[k].b << ' ' << hexfloat(cpg.coupling[k]) << '\n';
-    write_duty_request(out, duty_factors);
+    write_descriptor_request(out, descriptor);
     return out.str();
 }
 
@@ -307,8 +314,8 @@ std::string run_cpg_job(const std::string& body) {
     const RobotSpec robot = read_robot_text(in);
     const SimConfig cfg = read_config_text(in);
     CpgController controller(read_cpg_spec(in));
-    const bool duty = read_duty_request(in);
-    return evaluate_and_reply(robot, controller, cfg, duty);
+    const Descriptor descriptor = read_descriptor_request(in);
+    return evaluate_and_reply(robot, controller, cfg, descriptor);
 }
 
 } // namespace cic::sim

@@ -11,6 +11,8 @@
 #include <map>
 #include <sstream>
 
+#include <tuple>
+
 #include <fmt/format.h>
 
 #include "cic/run/provenance.hpp"
@@ -293,7 +295,7 @@ void start_from_a_shorter_stored_run(const SweepPlan& plan, const SweepTask& tas
     if (plan.store.empty() || fs::exists(target / "settings.xml") || !fs::is_directory(plan.store)) return;
     const io::Settings asked = io::load_settings(plan.base, plan.overrides(task));
     fs::path longest;
-    std::pair<int, long> longest_budget{-1, -1};
+    std::tuple<int, long, long> longest_budget{-1, -1, -1};
     for (const auto& e : fs::directory_iterator(plan.store)) {
         const fs::path run = e.path();
         if (fs::equivalent(run, target) || !fs::exists(run / "population.xml") || fs::exists(run / "failed.txt"))
@@ -305,7 +307,8 @@ void start_from_a_shorter_stored_run(const SweepPlan& plan, const SweepTask& tas
             continue;
         }
         if (!extends(ran, asked)) continue;
-        const std::pair<int, long> budget{ran.control.maximum_iterations, ran.gait.evaluations};
+        const std::tuple<int, long, long> budget{ran.control.maximum_iterations, ran.gait.evaluations,
+                                                 ran.map_elites.evaluations};
         if (budget > longest_budget) longest_budget = budget, longest = run;
     }
     if (longest.empty()) return;

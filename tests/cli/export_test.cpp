@@ -59,7 +59,8 @@ TEST(Export, EveryIndividualOfEverySavedGenerationWithItsTerms) {
     }
     EXPECT_EQ(rows.size(), expected);
     for (const auto& row : rows) {
-        ASSERT_EQ(row.size(), 12u);
+        ASSERT_EQ(row.size(), 14u);
+        EXPECT_EQ(row[12] + row[13], "");   // cell and descriptor belong to MAP-Elites runs
         if (row[10] == "1") continue;
         // No penalty in these settings: the terms add up to the fitness (eq. 7.1).
         EXPECT_NEAR(std::stod(row[6]) + std::stod(row[7]), std::stod(row[5]), 1e-9) << row[11];

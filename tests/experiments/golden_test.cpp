@@ -2,7 +2,7 @@
 // A HyperGP run in which about half the evaluations fail as physics blow-ups
 // gives the same bytes with 1 and 2 worker processes (and with 3 MPI ranks,
 // tests/run/mpi_test.cpp); so does a HyperGP run on the CPG substrate with
-// feedback; a symbolic-regression run gives the same bytes with 1 and 2 threads. A change that alters results must update these hashes on
+// feedback; so do two MAP-Elites runs (HyperGP and gait); a symbolic-regression run gives the same bytes with 1 and 2 threads. A change that alters results must update these hashes on
 // purpose and say why in its commit message.
 #include <gtest/gtest.h>
 
@@ -64,6 +64,19 @@ TEST(Golden, GaitCmaesWithIpopRestarts) {
     const fs::path run = expect_golden("ipop", golden_ipop_settings, kGoldenIpop);
     EXPECT_NE(read_text(run / "run.log").find("restart 1: population 14"), std::string::npos) << "no restart";
     EXPECT_NE(read_text(run / "population.xml").find("<restarts count=\""), std::string::npos);
+    fs::remove_all(run.parent_path().parent_path());
+}
+
+TEST(Golden, MapElitesHypergp) {
+    const fs::path run = expect_golden("me-hgp", golden_me_hypergp_settings, kGoldenMapElitesHypergp);
+    EXPECT_NE(read_text(run / "population.xml").find("<tree>"), std::string::npos);
+    EXPECT_NE(read_text(run / "stats.csv").find(",qd_score,coverage,filled,kept\n"), std::string::npos);
+    fs::remove_all(run.parent_path().parent_path());
+}
+
+TEST(Golden, MapElitesGait) {
+    const fs::path run = expect_golden("me-gait", golden_me_gait_settings, kGoldenMapElitesGait);
+    EXPECT_NE(read_text(run / "population.xml").find("<x>"), std::string::npos);
     fs::remove_all(run.parent_path().parent_path());
 }
 

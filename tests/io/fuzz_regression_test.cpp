@@ -35,6 +35,7 @@ const std::map<std::string, Check>& checks() {
     static const std::map<std::string, Check> m = {
         {"settings", fuzz::check_settings},
         {"population", fuzz::check_population},
+        {"archive", fuzz::check_archive},
         {"sexpr", fuzz::check_sexpr},
         {"robot", fuzz::check_robot},
     };

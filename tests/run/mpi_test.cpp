@@ -100,6 +100,14 @@ TEST_F(Mpi, ThreeRanksGiveTheGoldenHash) {
     EXPECT_EQ(cic::testing::file_hash(only_run("mpi") / "population.xml"), cic::testing::kGoldenHypergp);
 }
 
+// The golden MAP-Elites run: the archive's batches on 3 ranks give the bytes
+// of 1 and 2 worker processes.
+TEST_F(Mpi, ThreeRanksGiveTheGoldenMapElitesHash) {
+    const auto settings = write("me.xml", cic::testing::golden_me_hypergp_settings(1));
+    ASSERT_EQ(run("mpi", kMpirun + "-np 3 ", job(settings, "mpi")), 0) << log("mpi");
+    EXPECT_EQ(cic::testing::file_hash(only_run("mpi") / "population.xml"), cic::testing::kGoldenMapElitesHypergp);
+}
+
 TEST_F(Mpi, BadSettingsEndEveryRankWithExitCode2AndWriteNothing) {
     const auto settings = write("bad.xml", "<settings><Experiment><type>bogus</type></Experiment></settings>\n");
     EXPECT_EQ(run("bad", kMpirun + "-np 3 ", job(settings, "out")), 2) << log("bad");

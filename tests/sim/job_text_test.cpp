@@ -126,9 +126,9 @@ TEST(JobText, AGaitJobAsksForEachFootsDutyFactor) {
     GaitSpec gait;
     gait.frequency = 1.0;
     for (std::size_t j = 0; j < robot.actuated().size(); ++j) gait.joints.push_back({0.6, 0.5 * static_cast<double>(j), 0.1, 0, 0});
-    const std::string plain = make_gait_job(robot, cfg, gait), duty = make_gait_job(robot, cfg, gait, true);
+    const std::string plain = make_gait_job(robot, cfg, gait), duty = make_gait_job(robot, cfg, gait, Descriptor::DutyFactor);
     EXPECT_EQ(duty.substr(0, plain.size()), plain);
-    EXPECT_EQ(duty.substr(plain.size()), "duty 1\n");
+    EXPECT_EQ(duty.substr(plain.size()), "descriptor duty-factor\n");
     const EvalReply a = parse_eval_reply(run_gait_job(plain.substr(5)));
     const EvalReply b = parse_eval_reply(run_gait_job(duty.substr(5)));
     EXPECT_TRUE(a.descriptor.empty());
@@ -143,6 +143,17 @@ TEST(JobText, AGaitJobAsksForEachFootsDutyFactor) {
     EXPECT_EQ(c.descriptor, (std::vector<double>{0.25, 1.0}));
     EXPECT_EQ(c.failure, "blow-up\nline 2");
     EXPECT_THROW(parse_eval_reply("fitness 0x1p+0\ndescriptor 0\nfailed 0\n"), std::invalid_argument);
+    // The omni descriptor: where the centre went, on x and y.
+    const std::string omni = make_gait_job(robot, cfg, gait, Descriptor::Omni);
+    EXPECT_EQ(omni.substr(plain.size()), "descriptor omni\n");
+    const EvalReply d = parse_eval_reply(run_gait_job(omni.substr(5)));
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(a.fitness), std::bit_cast<std::uint64_t>(d.fitness));
+    const EvalResult plain_result = evaluate(robot, controller, cfg);
+    EXPECT_EQ(d.descriptor, (std::vector<double>{plain_result.end[0] - plain_result.start[0],
+                                                 plain_result.end[1] - plain_result.start[1]}));
+    // An unknown descriptor is refused by name.
+    EXPECT_THROW(run_gait_job(plain.substr(5) + "descriptor speed\n"), std::invalid_argument);
+    EXPECT_THROW(run_gait_job(plain.substr(5) + "duty 1\n"), std::invalid_argument);
     EXPECT_THROW(run_gait_job(plain.substr(5) + "extra 1\n"), std::invalid_argument);
 }
 

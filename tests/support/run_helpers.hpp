@@ -127,6 +127,26 @@ inline const std::string kGoldenHypergp = "ab3a3e7d29aa37ad";
 inline const std::string kGoldenSymreg = "1267ae7aacf5fb20";
 inline const std::string kGoldenCpg = "45c972bee328b1dc";   // golden_cpg_settings
 
+// The golden MAP-Elites runs (docs/quality-diversity.md): HyperGP-gait genotypes
+// varied by crossover and subtree mutation, and gait vectors varied by
+// Gaussian mutation, on R1's 4-D duty-factor grid (3 bins) with 2.5 s
+// simulations: 60 evaluations in batches of 12, the first 24 made from nothing.
+inline std::string golden_map_elites_settings(const std::string& type, int workers) {
+    return R"(<settings>
+  <Experiment><type>)" + type + R"(</type><seed>6</seed><workers>)" + std::to_string(workers) + R"(</workers></Experiment>
+  <MapElites><enabled>1</enabled><bins>3</bins><batch>12</batch><initial>24</initial><evaluations>60</evaluations></MapElites>
+  <GP><numberOfTreesInForestGenotype>3</numberOfTreesInForestGenotype></GP>
+  <Neural><substrate>gait</substrate><clockInputs>0</clockInputs><frequencyMax>3</frequencyMax></Neural>
+  <Simulator><robot_type>1</robot_type><sample_to>2.5</sample_to><delayed_start>0.5</delayed_start></Simulator>
+</settings>
+)";
+}
+inline std::string golden_me_hypergp_settings(int workers) { return golden_map_elites_settings("hypergp", workers); }
+inline std::string golden_me_gait_settings(int workers) { return golden_map_elites_settings("gait", workers); }
+inline const std::string kGoldenMapElitesHypergp = "1a517220027ccb38";   // golden_me_hypergp_settings' final population.xml
+inline const std::string kGoldenMapElitesGait = "b42a2ab56a421959";      // golden_me_gait_settings' final population.xml
+
+
 // A sweep file of small HyperGP runs on R0 (2.5 s or `seconds` simulations,
 // tournament 3): `population` individuals, `generations` generations, the
 // given <grid> and `repeats` seeds from 1 (firstSeed), writing to `study`.

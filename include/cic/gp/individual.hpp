@@ -29,6 +29,9 @@ struct Individual {
     bool failed = false;      // its evaluation failed (physics blow-up, worker); fitness is failureFitness
     std::string failure;      // why it failed, when it did
     bool edited = false;      // its trees were changed by hand in a population file, so it is evaluated again
+    // The behaviour descriptor its evaluation measured, when one was asked for
+    // (MAP-Elites, map_elites.hpp); not saved in population files.
+    std::vector<double> descriptor;
     std::size_t size() const { return tree::total_size(genotype); }
     int depth(ForestDepth measure) const {
         return measure == ForestDepth::Sum ? tree::total_depth(genotype) : tree::max_depth(genotype);

@@ -1,18 +1,12 @@
 #pragma once
 // MAP-Elites over parameter vectors in the unit box (the gait experiment's
-// encoding): Mouret & Clune 2015, with the Gaussian variation of Vassiliades &
-// Mouret 2018 left out (plain isotropic Gaussian mutation, clamped to [0, 1]).
-// The first batches sample the box uniformly until `initial` solutions have
-// been evaluated; every later batch mutates elites drawn uniformly from the
-// archive. Batches are evaluated together (worker processes, MPI ranks) and
-// offered to the archive in batch order, so a run is the same for any number of
-// workers. Deterministic from its seed; its state saves and restores exactly.
+// encoding): uniform points first, then isotropic Gaussian mutation of elites
+// drawn uniformly, clamped to [0, 1] (Mouret & Clune 2015; the line mutation
+// of Vassiliades & Mouret 2018 is not used).
 #include <cstdint>
-#include <functional>
 #include <vector>
 
-#include "cic/core/rng.hpp"
-#include "cic/gp/grid_archive.hpp"
+#include "cic/gp/map_elites.hpp"
 
 namespace cic::gp {
 
@@ -27,45 +21,18 @@ struct VectorMapElitesConfig {
     void validate() const;
 };
 
-// What an evaluation gives back. A failed evaluation is counted, not archived.
-struct Evaluation {
-    double fitness = 0;
-    std::vector<double> descriptor;
-    bool failed = false;
-};
-using VectorBatch = std::function<std::vector<Evaluation>(const std::vector<std::vector<double>>&)>;
+using VectorBatch = MapElites<std::vector<double>>::Batch;
 
-class VectorMapElites {
+// The Gaussian emitter of `config` (its dimension and sigma).
+Emitter<std::vector<double>> gaussian_emitter(const VectorMapElitesConfig& config);
+
+class VectorMapElites : public MapElites<std::vector<double>> {
 public:
-    using Archive = GridArchive<std::vector<double>>;
-
-    VectorMapElites(VectorMapElitesConfig config, std::uint64_t seed);
-
-    // Evaluates one batch (the last may be smaller: at most `budget_left`) and
-    // offers it to the archive; returns how many solutions were kept.
-    int step(const VectorBatch& evaluate, long budget_left);
-
-    const VectorMapElitesConfig& config() const { return config_; }
-    const Archive& archive() const { return archive_; }
-    long evaluations() const { return evaluations_; }
-    long failed() const { return failed_; }
-    int batches() const { return batches_; }
-    const Rng& rng() const { return rng_; }
-
-    // A checkpoint's state: the archive's elites, the counters and the RNG.
-    void restore(const std::map<std::size_t, Archive::Elite>& elites, long evaluations, long failed, int batches,
-                 const Rng::State& rng);
+    VectorMapElites(const VectorMapElitesConfig& config, std::uint64_t seed);
+    const VectorMapElitesConfig& vector_config() const { return vector_config_; }
 
 private:
-    std::vector<double> random_point();
-    std::vector<double> mutant();
-
-    VectorMapElitesConfig config_;
-    Archive archive_;
-    Rng rng_;
-    long evaluations_ = 0;
-    long failed_ = 0;
-    int batches_ = 0;
+    VectorMapElitesConfig vector_config_;
 };
 
 } // namespace cic::gp

@@ -78,6 +78,21 @@ struct GaitConfig {
     double restart_tol_x = 1e-6;      // unit box: every coordinate's spread below this = collapse; 0 = off
 };
 
+// MAP-Elites (ours, beyond the thesis; docs/quality-diversity.md): the search
+// mode that fills a grid archive of elites over a behaviour descriptor instead
+// of the GP loop or the gait experiment's pagmo optimiser.
+struct MapElitesConfig {
+    bool enabled = false;
+    sim::Descriptor descriptor = sim::Descriptor::DutyFactor;
+    int bins = 5;                  // per descriptor dimension
+    double omni_range = 40.0;      // omni: the grid spans [-range, range] metres on x and on y
+    int batch = 100;               // solutions evaluated together
+    int initial = 100;             // made from nothing before any elite is varied
+    double sigma = 0.1;            // gait: the Gaussian mutation's standard deviation, in the unit box
+    long evaluations = 2500;       // budget
+    double qd_offset = -1.0;       // QD-score = sum over the elites of (fitness - qdOffset)
+};
+
 struct Settings {
     ExperimentConfig experiment;
     gp::GpConfig gp;
@@ -88,6 +103,7 @@ struct Settings {
     nn::NeuralConfig neural;
     SymregConfig symreg;
     GaitConfig gait;
+    MapElitesConfig map_elites;
     // The keys of sections that registered experiment types bring
     // (settings_extension.hpp): "Section.key" -> canonical text, absent = default.
     std::map<std::string, std::string> extra;

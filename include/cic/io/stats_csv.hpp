@@ -18,14 +18,23 @@ inline constexpr const char* kStatsColumns =
     "generation,best,mean,median,mean_depth,max_depth,mean_size,max_size,limit,illegal,evaluations,wall_seconds,"
     "mean_depth_sum,max_depth_sum,mean_depth_max,max_depth_max,failed";
 
+// A MAP-Elites run's stats.csv has these columns after kStatsColumns, one row
+// per batch: the QD-score (sum of fitness - MapElites.qdOffset over the
+// elites), the share of cells filled, the cells filled, and how many of the
+// batch's solutions the archive kept. Its `best` is the archive's best,
+// `mean` and `median` are over the archive's elites.
+inline constexpr const char* kArchiveStatsColumns = "qd_score,coverage,filled,kept";
+
 class StatsWriter {
 public:
-    explicit StatsWriter(const std::filesystem::path& path);   // throws std::runtime_error
+    // `extra_columns` follow kStatsColumns in the header (kArchiveStatsColumns
+    // or none); each write() then gives their cells. Throws std::runtime_error.
+    explicit StatsWriter(const std::filesystem::path& path, std::string extra_columns = {});
     // Continues an existing stats.csv (a run resumed in its own folder): keeps the
     // header and the rows up to generation `through`, drops later ones (written
     // after the checkpoint the run resumes from), then appends.
-    StatsWriter(const std::filesystem::path& path, int through);
-    void write(const gp::GenerationRecord& r);
+    StatsWriter(const std::filesystem::path& path, int through, std::string extra_columns = {});
+    void write(const gp::GenerationRecord& r, const std::string& extra_cells = {});
 private:
     std::filesystem::path path_;
     std::ofstream out_;

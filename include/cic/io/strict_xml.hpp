@@ -44,6 +44,7 @@ const Format& sweep_format();
 const Format& robot_format();
 const Format& population_format();
 const Format& gait_format();
+const Format& archive_format();
 
 // Steps 1-4 on a text; `name` stands for the file in messages.
 Document parse_strict(std::string_view text, const std::string& name, const Format& format);

@@ -1,12 +1,15 @@
 #pragma once
 // `cic export RUN|STUDY...`: every individual of every saved generation as one
 // CSV row, for pandas, R or a spreadsheet (docs/analysis.md):
-//   run,config,seed,generation,id,fitness,distance,elevation,depth,size,failed,tree
+//   run,config,seed,generation,id,fitness,distance,elevation,depth,size,failed,tree,cell,descriptor
 // A study (a folder with index.csv) gives each of its runs, with the config and
 // seed the index names. distance and elevation are eq. 7.1's terms, from a
 // replay of each distinct genotype when asked (`terms`: one simulation each);
 // empty otherwise and for symbolic regression. A gait run's individuals are
 // its candidates: id is their place in the generation, tree their parameters.
+// A MAP-Elites run (MapElites.enabled) gives the elites of its last archive:
+// generation is the batch, id the cell's number, cell its bins "I,J,..." and
+// descriptor the measured values; the two columns are empty for other runs.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -19,7 +22,7 @@ struct ExportRequest {
 };
 
 inline constexpr const char* kExportHeader =
-    "run,config,seed,generation,id,fitness,distance,elevation,depth,size,failed,tree\n";
+    "run,config,seed,generation,id,fitness,distance,elevation,depth,size,failed,tree,cell,descriptor\n";
 
 // The CSV text, header first. Throws cic::InputError naming the input for a
 // folder that is neither a run (settings.xml and populations/) nor a study.

@@ -40,6 +40,7 @@ ReplayItem replay_preset(const PresetReplay& preset, double fps, bool trace);
 struct ReplaySource {
     std::string input;                 // RUN_DIR or POPULATION.xml
     std::string individual = "best";
+    std::string cell;                  // a MAP-Elites run's elite: "I,J,..." or the cell's number
     std::string robot;                 // R0 | R1 | R2 | a robot file
     std::vector<std::string> overrides;  // --set Section.key=value (simulator keys)
     bool middle_legs = false;

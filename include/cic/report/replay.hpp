@@ -41,7 +41,9 @@ std::pair<double, double> eq71_terms(const sim::RobotSpec& robot, const sim::Eva
 void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalResult& result);
 
 // Individuals from a run folder (its latest population file) or a population
-// XML: `individual` is "best" (then the best `count`, best first) or an id.
+// XML: `individual` is "best" (then the best `count`, best first) or an id. In
+// a MAP-Elites run (an archive) it is "best" (the fittest `count` elites) or
+// "cell:I,J,..." / "cell:N" (one elite, by its bins or its cell's number).
 // Implemented by the HyperGP experiment wiring (src/report/replay.cpp).
 std::vector<ReplayItem> replay(const std::string& run_dir_or_population, const std::string& individual, int count,
                                double fps, bool trace);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "cic/io/archive_xml.hpp"
 #include "cic/io/gait_xml.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings.hpp"
@@ -28,6 +29,7 @@ struct PreparedRun {
     io::Settings settings;
     std::optional<io::PopulationFile> resume;   // populationXmlLoadFrom, parsed and checked
     std::optional<io::GaitFile> gait_resume;    // the same, for the gait experiment
+    std::optional<io::ArchiveFile> archive_resume;   // the same, for MAP-Elites (MapElites.enabled)
 };
 
 // Checks every input of a run: the experiment's own (robot file and its

@@ -11,6 +11,13 @@
 
 namespace cic::sim {
 
+// A behaviour descriptor a MAP-Elites archive keeps its elites by (evaluate.hpp
+// computes it):
+//   DutyFactor  each branch end's duty factor (Cully et al. 2015), in [0, 1];
+//   Omni        the centre's displacement (x, y) from the delayed start to the
+//               end, in metres (QDax's "omni" descriptor: where it went).
+enum class Descriptor { None, DutyFactor, Omni };
+
 // The longest physics step (sample_step / step_divider) that cic trusts, s.
 // Measured (docs/simulator.md, "Step size"): up to the thesis's own 0.5 s / 20 =
 // 0.025 s the R1 gaits keep their fitness within a few per cent of a 2.5 ms

@@ -53,6 +53,14 @@ std::vector<int> branch_ends(const RobotSpec& robot);
 // recorded the ground (EvalOptions::record_ground).
 std::vector<double> duty_factors(const RobotSpec& robot, const EvalResult& result);
 
+// Behaviour descriptors (Descriptor, config.hpp):
+std::string to_string(Descriptor d);             // "none", "duty-factor", "omni"
+Descriptor descriptor_from(const std::string& name);   // throws std::invalid_argument
+// Its values for one evaluation: empty for None. DutyFactor needs the ground
+// recorded (EvalOptions::record_ground; see needs_ground).
+std::vector<double> descriptor_of(Descriptor d, const RobotSpec& robot, const EvalResult& result);
+inline bool needs_ground(Descriptor d) { return d == Descriptor::DutyFactor; }
+
 // Deterministic: resets ODE's global random state (dRandSetSeed) before
 // building the world, and the world uses its own self-threaded implementation.
 // Throws std::invalid_argument for invalid config (e.g. step <= 0, or a physics

@@ -30,7 +30,7 @@ double parse_hexfloat(const std::string& s);   // also accepts decimal, "inf"
 // when the job asked for one, failed flag, failure text.
 struct EvalReply {
     double fitness = 0.0;
-    std::vector<double> descriptor;   // each foot's duty factor (jobs made with duty_factors)
+    std::vector<double> descriptor;   // the behaviour descriptor the job asked for (empty when failed)
     bool failed = false;
     std::string failure;   // the rest of the reply (may span lines)
 };
@@ -45,16 +45,17 @@ std::string make_sine_job(const RobotSpec& robot, const SimConfig& cfg,
 std::string run_sine_job(const std::string& body);
 
 // Job kind "gait": the first line is "gait", then robot, config and the spec.
-// With duty_factors the evaluation records the ground and its reply carries each
-// foot's duty factor (the MAP-Elites descriptor); the fitness is the same bits.
+// With a descriptor the job ends with "descriptor NAME" and its reply carries
+// that behaviour descriptor (MAP-Elites); the fitness is the same bits.
 std::string make_gait_job(const RobotSpec& robot, const SimConfig& cfg, const GaitSpec& gait,
-                          bool duty_factors = false);
+                          Descriptor descriptor = Descriptor::None);
 // Runs a "gait" job body; returns the reply.
 std::string run_gait_job(const std::string& body);
 
 // Job kind "cpg": the first line is "cpg", then robot, config and the CPG's
 // weights (sim/cpg.hpp). make_cpg_job validates the spec first.
-std::string make_cpg_job(const RobotSpec& robot, const SimConfig& cfg, const CpgSpec& cpg, bool duty_factors = false);
+std::string make_cpg_job(const RobotSpec& robot, const SimConfig& cfg, const CpgSpec& cpg,
+                         Descriptor descriptor = Descriptor::None);
 CpgSpec read_cpg_spec(std::istream& in);   // the part after robot and config
 // Runs a "cpg" job body; returns the reply.
 std::string run_cpg_job(const std::string& body);

@@ -48,8 +48,8 @@ Optimizer optimizer_of(io::GaitOptimizer o);
 // The robot (with at least one joint) and the population size; writes nothing.
 void check_inputs(const io::Settings& s);
 
-// With duty_factors the reply carries each foot's duty factor (sim/job_text.hpp).
-std::string make_job(const Setup& setup, std::span<const double> x, bool duty_factors = false);
+// With a descriptor the reply carries it (sim/job_text.hpp).
+std::string make_job(const Setup& setup, std::span<const double> x, sim::Descriptor descriptor = sim::Descriptor::None);
 
 // Evaluates batches of unit-box points on the context's runner. A job that
 // fails in the runner (its worker crashed or hung twice) scores the
@@ -59,14 +59,15 @@ public:
     Evaluator(const experiments::Context& ctx, const Setup& setup);
     ~Evaluator();
     std::vector<double> operator()(const std::vector<std::vector<double>>& xs);
-    // The same with each point's duty-factor descriptor, for MAP-Elites: a
+    // The same with each point's behaviour descriptor, for MAP-Elites: a
     // failed evaluation (physics or worker) is marked failed, not archived.
-    std::vector<gp::Evaluation> described(const std::vector<std::vector<double>>& xs);
+    std::vector<gp::Evaluation> described(const std::vector<std::vector<double>>& xs,
+                                          sim::Descriptor descriptor = sim::Descriptor::DutyFactor);
     long failed() const { return failed_; }   // evaluations that failed (physics or worker)
 
 private:
     // Each point's reply; a job the runner could not run scores the failure fitness.
-    std::vector<sim::EvalReply> run(const std::vector<std::vector<double>>& xs, bool duty_factors);
+    std::vector<sim::EvalReply> run(const std::vector<std::vector<double>>& xs, sim::Descriptor descriptor);
 
     const Setup& setup_;
     std::function<void(const std::string&)> warn_;

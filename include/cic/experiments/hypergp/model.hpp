@@ -44,11 +44,17 @@ void check_inputs(const io::Settings& s);
 Outcome run(const Model& m, const tree::Forest& genotype, const sim::EvalOptions& options = {},
             bool record_control = false);
 
-// Worker protocol: the job body is the trees, one S-expression per line; the
-// reply is sim's evaluation reply (sim/job_text.hpp), the same for every runner.
-std::string job_body(const tree::Forest& genotype);
-tree::Forest parse_job_body(const std::string& body);
-sim::EvalReply to_reply(const Outcome& o);
+// Worker protocol: the job body is the trees, one S-expression per line, and,
+// for MAP-Elites, a last line "descriptor NAME"; the reply is sim's evaluation
+// reply (sim/job_text.hpp), the same for every runner, with the descriptor's
+// values when one was asked for.
+struct Job {
+    tree::Forest genotype;
+    sim::Descriptor descriptor = sim::Descriptor::None;
+};
+std::string job_body(const tree::Forest& genotype, sim::Descriptor descriptor = sim::Descriptor::None);
+Job parse_job_body(const std::string& body);   // throws std::invalid_argument
+sim::EvalReply to_reply(const Outcome& o, std::vector<double> descriptor = {});
 
 // A fitness other than eq. 7.1 for the same simulation (a registered type's
 // own, examples/plugin): called for each evaluation that did not fail, with

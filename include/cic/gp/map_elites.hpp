@@ -1,0 +1,130 @@
+#pragma once
+// The MAP-Elites loop (Mouret & Clune 2015, "Illuminating search spaces by
+// mapping elites"), generic over the solution: a HyperGP genotype
+// (forest_map_elites.hpp) or a gait's parameter vector (vector_map_elites.hpp).
+// The variation is a block the caller plugs in (an Emitter, as pyribs calls
+// it): how to make a solution from nothing, and how to make one from the
+// archive. The first batches are made from nothing until `initial` solutions
+// have been evaluated (or while every one so far failed); every later batch
+// varies elites. A batch is evaluated together (worker processes, MPI ranks)
+// and offered to the archive in batch order, so a run is the same for any
+// number of workers. Deterministic from its seed; its state (archive, counters,
+// RNG) saves and restores exactly.
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cic/core/rng.hpp"
+#include "cic/gp/grid_archive.hpp"
+
+namespace cic::gp {
+
+// What an evaluation gives back. A failed evaluation is counted, not archived.
+struct Evaluation {
+    double fitness = 0;
+    std::vector<double> descriptor;
+    bool failed = false;
+};
+
+struct MapElitesConfig {
+    GridSpec grid;
+    int batch = 100;      // solutions evaluated together
+    int initial = 100;    // solutions made from nothing before any variation
+
+    // Throws std::invalid_argument naming the field.
+    void validate() const;
+};
+
+template <class Solution>
+struct Emitter {
+    std::function<Solution(Rng&)> random;
+    std::function<Solution(Rng&, const GridArchive<Solution>&)> vary;   // the archive is never empty here
+    // Optional: throws std::invalid_argument for a restored elite this run
+    // could not have made (a parameter vector of another size).
+    std::function<void(const Solution&)> check;
+};
+
+template <class Solution>
+class MapElites {
+public:
+    using Archive = GridArchive<Solution>;
+    using Batch = std::function<std::vector<Evaluation>(const std::vector<Solution>&)>;
+
+    MapElites(MapElitesConfig config, Emitter<Solution> emitter, std::uint64_t seed)
+        : config_((config.validate(), std::move(config))), emitter_(std::move(emitter)), archive_(config_.grid),
+          rng_(seed) {
+        if (!emitter_.random || !emitter_.vary) throw std::invalid_argument("map-elites: the emitter is incomplete");
+    }
+
+    // Makes one batch (the last may be smaller: at most `budget_left`),
+    // evaluates it and offers it to the archive; returns how many were kept.
+    int step(const Batch& evaluate, long budget_left) {
+        if (budget_left < 1) throw std::invalid_argument("map-elites: no evaluation left in the budget");
+        const long size = std::min<long>(config_.batch, budget_left);
+        std::vector<Solution> batch;
+        batch.reserve(static_cast<std::size_t>(size));
+        for (long i = 0; i < size; ++i)
+            batch.push_back(evaluations_ + i < config_.initial || archive_.empty() ? emitter_.random(rng_)
+                                                                                  : emitter_.vary(rng_, archive_));
+        const std::vector<Evaluation> results = evaluate(batch);
+        if (results.size() != batch.size())
+            throw std::logic_error("map-elites: " + std::to_string(results.size()) + " results for a batch of " +
+                                   std::to_string(batch.size()));
+        int kept = 0;
+        last_batch_.clear();
+        for (std::size_t i = 0; i < batch.size(); ++i) {
+            if (results[i].failed) {
+                ++failed_;
+                continue;
+            }
+            last_batch_.push_back(results[i].fitness);
+            if (archive_.offer(results[i].descriptor, results[i].fitness, std::move(batch[i]))) ++kept;
+        }
+        evaluations_ += size;
+        ++batches_;
+        return kept;
+    }
+
+    const MapElitesConfig& config() const { return config_; }
+    const Archive& archive() const { return archive_; }
+    long evaluations() const { return evaluations_; }
+    long failed() const { return failed_; }
+    int batches() const { return batches_; }
+    const Rng& rng() const { return rng_; }
+    // The fitness of each evaluation of the last batch that did not fail.
+    const std::vector<double>& last_batch() const { return last_batch_; }
+
+    // A checkpoint's state: the archive's elites, the counters and the RNG.
+    void restore(const std::map<std::size_t, typename Archive::Elite>& elites, long evaluations, long failed,
+                 int batches, const Rng::State& rng) {
+        if (evaluations < 0 || failed < 0 || failed > evaluations || batches < 0)
+            throw std::invalid_argument("map-elites: counters out of range");
+        Archive archive(config_.grid);
+        for (const auto& [cell, e] : elites) {
+            if (emitter_.check) emitter_.check(e.solution);
+            archive.restore(cell, e);
+        }
+        archive_ = std::move(archive);
+        evaluations_ = evaluations;
+        failed_ = failed;
+        batches_ = batches;
+        rng_.set_state(rng);
+        last_batch_.clear();
+    }
+
+private:
+    MapElitesConfig config_;
+    Emitter<Solution> emitter_;
+    Archive archive_;
+    Rng rng_;
+    long evaluations_ = 0;
+    long failed_ = 0;
+    int batches_ = 0;
+    std::vector<double> last_batch_;
+};
+
+} // namespace cic::gp

@@ -1,0 +1,195 @@
+#!/usr/bin/env python3
+"""The tables of docs/quality-diversity.md (issue 26).
+
+    scripts/qd-report.py [--studies DIR] [--results DIR] ledger|compare|cells RUN
+
+DIR (default runs/quality-diversity) holds the study folders that
+scripts/quality-diversity.sh writes (me-hgp-15000, me-gait-15000); --results
+(default experiments/quality-diversity/results) holds the ledger.
+
+  ledger   merges the finished MAP-Elites runs found in DIR into
+           results/qd-runs.csv, one row per run: the last stats.csv row's
+           QD-score (offset -1), coverage, cells filled and best elite, and the
+           evaluations spent. A run whose folder is gone keeps its row (run
+           folders are never committed); a run found again replaces it.
+  compare  from the ledger: per robot and method, median and IQR of QD-score,
+           coverage and best elite; MAP-Elites with HyperGP against MAP-Elites
+           with the gait vector on QD-score and coverage; and each MAP-Elites
+           method's best elite against the plain runs' best at the same budget
+           of 15,000 evaluations (HyperGP-gait and CMA-ES gait with IPOP, from
+           experiments/baselines/results/walk-runs.csv, scored alike: raw eq.
+           7.1 of the best individual; a MAP-Elites elite's stored fitness is
+           raw eq. 7.1, as these settings have no penalty). Two-sided
+           Mann-Whitney p (scipy), Holm over every test of the page at once,
+           A12 with a 95% bootstrap interval (2,000 resamples, seed 1).
+  cells    four elites of RUN far apart in the descriptor space, among those
+           that walk at least half as far as the best (greedy farthest points
+           from the best): one "I,J,...  fitness  descriptor" line each, for
+           the screenshot strip.
+"""
+import argparse
+import csv
+import pathlib
+import statistics as st
+import subprocess
+import sys
+
+from study_stats import a12, a12_interval, holm, mann_whitney_p, quartiles
+
+STUDIES_OF = {"me-hgp-15000": "MAP-Elites, HyperGP-gait", "me-gait-15000": "MAP-Elites, gait vector"}
+PLAIN_OF = {"walk-15000-hgp-gait": "HyperGP-gait (plain)", "walk-15000-cmaes-gait": "CMA-ES gait, IPOP"}
+FIELDS = ["study", "run_dir", "config", "seed", "evaluations", "batches", "best", "qd_score", "coverage", "filled",
+          "wall_seconds"]
+
+
+def fail(message):
+    print(f"qd-report.py: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def found_rows(studies):
+    rows = []
+    for study in STUDIES_OF:
+        index = studies / study / "index.csv"
+        if not index.exists():
+            continue
+        for r in read_csv(index):
+            if r["status"] != "done":
+                continue
+            stats = studies / study / r["run_dir"] / "stats.csv"
+            if not stats.exists():
+                fail(f"{stats}: missing for a run index.csv calls done")
+            last = read_csv(stats)[-1]
+            for column in ("qd_score", "coverage", "filled", "best", "evaluations"):
+                if column not in last:
+                    fail(f"{stats}:1: no column {column} (not a MAP-Elites run?)")
+            rows.append({"study": study, "run_dir": r["run_dir"], "config": r["config"], "seed": r["seed"],
+                         "evaluations": last["evaluations"], "batches": int(last["generation"]) + 1,
+                         "best": last["best"], "qd_score": last["qd_score"], "coverage": last["coverage"],
+                         "filled": last["filled"], "wall_seconds": r["wall_seconds"]})
+    return rows
+
+
+def ledger():
+    path = RESULTS / "qd-runs.csv"
+    rows = {(r["study"], r["run_dir"]): r for r in (read_csv(path) if path.exists() else [])}
+    for r in found_rows(STUDIES):
+        rows[(r["study"], r["run_dir"])] = r
+    RESULTS.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=FIELDS, lineterminator="\n")
+        w.writeheader()
+        for key in sorted(rows, key=lambda k: (k[0], rows[k]["config"], int(rows[k]["seed"]))):
+            w.writerow(rows[key])
+    print(f"qd-report.py: {len(rows)} runs in {path}", file=sys.stderr)
+
+
+def median_iqr(v, digits=2):
+    if not v:
+        return "–"
+    q1, q3 = quartiles(v)
+    return f"{st.median(v):.{digits}f} [{q1:.{digits}f}, {q3:.{digits}f}]"
+
+
+def verdict(p, a, first, second):
+    if p is None:
+        return "no scipy"
+    if p >= 0.05:
+        return "no difference shown at n = 10" if a is not None else "–"
+    return f"{first} higher" if a > 0.5 else f"{second} higher"
+
+
+def compare():
+    me = read_csv(RESULTS / "qd-runs.csv") if (RESULTS / "qd-runs.csv").exists() else []
+    plain = read_csv(WALK_LEDGER) if WALK_LEDGER.exists() else []
+    def values(study, config, column, source):
+        return [float(r[column]) for r in source if r["study"] == study and r["config"] == config and r[column]]
+    robots = sorted({r["config"] for r in me})
+    print("| robot | method | n | evaluations | QD-score | coverage | cells filled | best elite [m] |")
+    print("|---|---|---|---|---|---|---|---|")
+    for robot in robots:
+        for study, label in STUDIES_OF.items():
+            qd = values(study, robot, "qd_score", me)
+            if not qd:
+                continue
+            ev = sorted({int(float(e)) for e in values(study, robot, "evaluations", me)})
+            print(f"| {robot} | {label} | {len(qd)} | {', '.join(map(str, ev))} | {median_iqr(qd, 0)} | "
+                  f"{median_iqr(values(study, robot, 'coverage', me), 3)} | "
+                  f"{median_iqr(values(study, robot, 'filled', me), 0)} | {median_iqr(values(study, robot, 'best', me))} |")
+        for study, label in PLAIN_OF.items():
+            best = values(study, robot, "raw_fitness", plain)
+            if best:
+                ev = values(study, robot, "evaluations", plain)
+                span = f"{int(min(ev))}–{int(max(ev))}" if ev else "not recorded"
+                print(f"| {robot} | {label} | {len(best)} | {span} | – | – | – | {median_iqr(best)} |")
+    print()
+    tests = []   # (robot, what, first label, x, second label, y)
+    for robot in robots:
+        for column, what in (("qd_score", "QD-score"), ("coverage", "coverage")):
+            tests.append((robot, what, STUDIES_OF["me-hgp-15000"], values("me-hgp-15000", robot, column, me),
+                          STUDIES_OF["me-gait-15000"], values("me-gait-15000", robot, column, me)))
+        for me_study, plain_study in (("me-hgp-15000", "walk-15000-hgp-gait"), ("me-gait-15000", "walk-15000-cmaes-gait"),
+                                      ("me-hgp-15000", "walk-15000-cmaes-gait")):
+            tests.append((robot, "best", STUDIES_OF[me_study], values(me_study, robot, "best", me),
+                          PLAIN_OF[plain_study], values(plain_study, robot, "raw_fitness", plain)))
+    tests = [t for t in tests if len(t[3]) >= 2 and len(t[5]) >= 2]
+    ps = [mann_whitney_p(t[3], t[5]) for t in tests]
+    adjusted = holm(ps)
+    print("| robot | measure | method | median | against | median | n | p | p (Holm) | A12 [95% CI] | verdict |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for (robot, what, la, x, lb, y), p, ph in zip(tests, ps, adjusted):
+        a = a12(x, y)
+        lo, hi = a12_interval(x, y)
+        digits = 3 if what == "coverage" else 2
+        print(f"| {robot} | {what} | {la} | {st.median(x):.{digits}f} | {lb} | {st.median(y):.{digits}f} | "
+              f"{len(x)} vs {len(y)} | {p:.3g} | {ph:.3g} | {a:.2f} [{lo:.2f}, {hi:.2f}] | "
+              f"{verdict(ph, a, la, lb)} |" if p is not None else f"| {robot} | {what} | {la} | | {lb} | | | | | | no scipy |")
+    print()
+    print(f"{len(tests)} tests; Holm over all of them. A12 = P(first method's run > second's).")
+
+
+def cells(run):
+    out = subprocess.run([CIC, "export", str(run)], capture_output=True, text=True)
+    if out.returncode != 0:
+        fail(f"cic export {run}: {out.stderr.strip()}")
+    rows = list(csv.DictReader(out.stdout.splitlines()))
+    if not rows:
+        fail(f"{run}: the archive holds no elite")
+    for r in rows:
+        r["d"] = [float(v) for v in r["descriptor"].split()]
+        r["f"] = float(r["fitness"])
+    best = max(rows, key=lambda r: r["f"])
+    pool = [r for r in rows if r["f"] >= 0.5 * best["f"]]
+    chosen = [best]
+    while len(chosen) < min(4, len(pool)):
+        far = max((r for r in pool if r not in chosen),
+                  key=lambda r: min(sum((a - b) ** 2 for a, b in zip(r["d"], c["d"])) for c in chosen))
+        chosen.append(far)
+    for r in chosen:
+        print(f"{r['cell']}\t{r['f']:.2f}\t{' '.join(f'{v:.2f}' for v in r['d'])}")
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--studies", default="runs/quality-diversity")
+    parser.add_argument("--results", default="experiments/quality-diversity/results")
+    parser.add_argument("--walk-ledger", default="experiments/baselines/results/walk-runs.csv")
+    parser.add_argument("--cic", default="build/cic")
+    parser.add_argument("stage", choices=["ledger", "compare", "cells"])
+    parser.add_argument("run", nargs="?")
+    args = parser.parse_args()
+    STUDIES, RESULTS = pathlib.Path(args.studies), pathlib.Path(args.results)
+    WALK_LEDGER, CIC = pathlib.Path(args.walk_ledger), args.cic
+    if args.stage == "ledger":
+        ledger()
+    elif args.stage == "compare":
+        compare()
+    else:
+        if not args.run:
+            fail("cells needs a MAP-Elites run folder")
+        cells(pathlib.Path(args.run))

@@ -1,0 +1,228 @@
+// MAP-Elites archives as XML (see archive_xml.hpp).
+#include "cic/io/archive_xml.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "cic/core/error.hpp"
+#include "cic/io/strict_xml.hpp"
+#include "cic/io/xml.hpp"
+#include "cic/sim/evaluate.hpp"
+
+namespace cic::io {
+namespace {
+
+constexpr const char* kFormat = "cic-archive";
+constexpr int kVersion = 1;
+
+std::string exact(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+std::string exact_list(const std::vector<double>& values) {
+    std::string out;
+    for (double v : values) out += (out.empty() ? "" : " ") + exact(v);
+    return out;
+}
+
+template <class T>
+T parse_number(const xml::Node& n, std::string_view what, std::string_view text) {
+    T v{};
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size())
+        throw n.error("<" + std::string(n.name()) + "> " + std::string(what) + " \"" + std::string(text) +
+                      "\" is not a valid number");
+    if constexpr (std::is_floating_point_v<T>) {
+        if (!std::isfinite(v)) throw n.error("<" + std::string(n.name()) + "> " + std::string(what) + " is not finite");
+    }
+    return v;
+}
+
+template <class T>
+T attribute(const xml::Node& n, std::string_view name) {
+    const auto a = n.attribute(name);
+    if (!a) throw n.error("<" + std::string(n.name()) + "> is missing attribute " + std::string(name));
+    return parse_number<T>(n, name, *a);
+}
+
+std::vector<double> numbers(const xml::Node& n, std::string_view what, std::string_view text) {
+    std::vector<double> out;
+    std::istringstream in{std::string(text)};
+    for (std::string tok; in >> tok;) out.push_back(parse_number<double>(n, what, tok));
+    return out;
+}
+
+ArchiveElite read_elite(const xml::Node& e, const gp::GridArchive<int>& grid, bool& gait, bool& hypergp) {
+    ArchiveElite a;
+    a.cell = attribute<std::size_t>(e, "cell");
+    a.fitness = attribute<double>(e, "fitness");
+    a.descriptor = numbers(e, "descriptor", e.attribute("descriptor").value_or(""));
+    if (a.cell >= grid.cells())
+        throw e.error("<elite cell=\"" + std::to_string(a.cell) + "\"> is past the grid's " +
+                      std::to_string(grid.cells()) + " cells");
+    if (a.descriptor.size() != grid.spec().dimensions())
+        throw e.error("<elite> has a descriptor of " + std::to_string(a.descriptor.size()) + " values for a grid of " +
+                      std::to_string(grid.spec().dimensions()) + " dimensions");
+    if (grid.cell_of(a.descriptor) != a.cell)
+        throw e.error("<elite cell=\"" + std::to_string(a.cell) + "\"> has a descriptor of cell " +
+                      std::to_string(grid.cell_of(a.descriptor)) + " (edited?)");
+    for (const auto& c : e.children()) {
+        if (c.name() == "x") {
+            if (!a.x.empty()) throw c.error("<elite> has two <x>");
+            a.x = numbers(c, "parameter", c.text());
+            if (a.x.empty()) throw c.error("<x> holds no parameter");
+            gait = true;
+        } else if (c.name() == "tree") {
+            try {
+                a.genotype.push_back(tree::Tree::parse(c.text()));
+            } catch (const std::exception& ex) {
+                throw c.error(std::string("<tree>: ") + ex.what());
+            }
+            hypergp = true;
+        }
+    }
+    if (a.x.empty() == a.genotype.empty()) throw e.error("<elite> needs either <x> or <tree> elements");
+    return a;
+}
+
+// The document has passed the strict reader; these are the archive's own rules.
+ArchiveFile read_archive(const xml::Document& doc) {
+    const auto root = doc.root();
+    if (root.name() != "archive" || root.attribute("format").value_or("") != kFormat)
+        throw root.error("not a cic MAP-Elites archive (expected <archive format=\"cic-archive\">)");
+    if (attribute<int>(root, "version") != kVersion)
+        throw root.error("archive version " + *root.attribute("version") + " is not supported (this cic reads " +
+                         std::to_string(kVersion) + ")");
+    ArchiveFile a;
+    a.experiment = root.attribute("experiment").value_or("");
+    a.settings_digest = root.attribute("settingsDigest").value_or("");
+    a.seed = attribute<std::uint64_t>(root, "seed");
+    a.batches = attribute<int>(root, "batches");
+    a.evaluations = attribute<long>(root, "evaluations");
+    a.failed = attribute<long>(root, "failed");
+    if (a.batches < 1 || a.evaluations < a.batches || a.failed < 0 || a.failed > a.evaluations)
+        throw root.error("batches must be >= 1, evaluations >= batches and failed in [0, evaluations]");
+    try {
+        a.rng = Rng::parse_state(std::string(root.attribute("rng").value_or("")));
+    } catch (const std::invalid_argument& e) {
+        throw root.error(std::string("<archive> rng: ") + e.what());
+    }
+    std::optional<gp::GridArchive<int>> grid;
+    bool gait = false, hypergp = false;
+    for (const auto& c : root.children()) {
+        if (c.name() == "grid") {
+            a.descriptor = c.attribute("descriptor").value_or("");
+            try {
+                (void)sim::descriptor_from(a.descriptor);
+            } catch (const std::invalid_argument& e) {
+                throw c.error(std::string("<grid> descriptor: ") + e.what());
+            }
+            for (const auto& d : c.children()) {
+                a.grid.bins.push_back(attribute<int>(d, "bins"));
+                a.grid.lo.push_back(attribute<double>(d, "lo"));
+                a.grid.hi.push_back(attribute<double>(d, "hi"));
+            }
+            try {
+                grid.emplace(a.grid);
+            } catch (const std::invalid_argument& e) {
+                throw c.error(std::string("<grid>: ") + e.what());
+            }
+        } else if (c.name() == "elites") {
+            if (!grid) throw c.error("<elites> before <grid>");
+            const auto count = attribute<std::size_t>(c, "count");
+            for (const auto& e : c.children()) {
+                a.elites.push_back(read_elite(e, *grid, gait, hypergp));
+                if (a.elites.size() > 1 && a.elites[a.elites.size() - 2].cell >= a.elites.back().cell)
+                    throw e.error("elites must be in rising cell order, each cell once");
+            }
+            if (a.elites.size() != count)
+                throw c.error("<elites count=\"" + std::to_string(count) + "\"> holds " +
+                              std::to_string(a.elites.size()) + " (truncated or edited?)");
+        }
+    }
+    if (!grid) throw root.error("an archive needs a <grid> (truncated?)");
+    if (gait && hypergp) throw root.error("an archive holds either parameter vectors or trees, not both");
+    if (static_cast<long>(a.elites.size()) > a.evaluations - a.failed)
+        throw root.error("more elites than successful evaluations");
+    return a;
+}
+
+} // namespace
+
+const ArchiveElite* ArchiveFile::best() const {
+    const ArchiveElite* out = nullptr;
+    for (const auto& e : elites)
+        if (!out || e.fitness > out->fitness) out = &e;
+    return out;
+}
+
+const ArchiveElite* ArchiveFile::at(std::size_t cell) const {
+    for (const auto& e : elites)
+        if (e.cell == cell) return &e;
+    return nullptr;
+}
+
+std::string to_xml(const ArchiveFile& a) {
+    auto doc = xml::Document::create("archive");
+    auto root = doc.root();
+    root.set_attribute("format", kFormat);
+    root.set_attribute("version", std::to_string(kVersion));
+    root.set_attribute("experiment", a.experiment);
+    root.set_attribute("settingsDigest", a.settings_digest);
+    root.set_attribute("seed", std::to_string(a.seed));
+    root.set_attribute("batches", std::to_string(a.batches));
+    root.set_attribute("evaluations", std::to_string(a.evaluations));
+    root.set_attribute("failed", std::to_string(a.failed));
+    Rng rng;
+    rng.set_state(a.rng);
+    root.set_attribute("rng", rng.state_text());
+    auto grid = root.add_element("grid");
+    grid.set_attribute("descriptor", a.descriptor);
+    for (std::size_t d = 0; d < a.grid.dimensions(); ++d) {
+        auto dim = grid.add_element("dimension");
+        dim.set_attribute("bins", std::to_string(a.grid.bins[d]));
+        dim.set_attribute("lo", exact(a.grid.lo[d]));
+        dim.set_attribute("hi", exact(a.grid.hi[d]));
+    }
+    auto list = root.add_element("elites");
+    list.set_attribute("count", std::to_string(a.elites.size()));
+    for (const ArchiveElite& e : a.elites) {
+        auto el = list.add_element("elite");
+        el.set_attribute("cell", std::to_string(e.cell));
+        el.set_attribute("fitness", exact(e.fitness));
+        el.set_attribute("descriptor", exact_list(e.descriptor));
+        if (!e.x.empty()) el.add_child("x", exact_list(e.x));
+        for (const auto& t : e.genotype) el.add_child("tree", t.to_string());
+    }
+    return doc.to_string();
+}
+
+ArchiveFile parse_archive(std::string_view text, const std::string& name) {
+    return xml::read_strict(text, name, xml::archive_format(), read_archive);
+}
+
+ArchiveFile load_archive(const std::filesystem::path& path) {
+    return parse_archive(xml::read_file(path), path.string());
+}
+
+void check_compatible(const ArchiveFile& a, const Settings& s, const gp::GridSpec& grid, const std::string& file) {
+    if (!s.map_elites.enabled)
+        throw InputError("this is a MAP-Elites archive; the settings do not enable MapElites", file);
+    if (a.experiment != s.experiment.type)
+        throw InputError("the archive was made by a " + a.experiment + " run, the settings run " + s.experiment.type,
+                         file);
+    if (a.descriptor != sim::to_string(s.map_elites.descriptor))
+        throw InputError("the archive's descriptor is " + a.descriptor + ", the settings ask for " +
+                             sim::to_string(s.map_elites.descriptor),
+                         file);
+    if (a.grid.bins != grid.bins || a.grid.lo != grid.lo || a.grid.hi != grid.hi)
+        throw InputError("the archive's grid differs from the one these settings make (MapElites.bins, omniRange, "
+                         "or another robot?)",
+                         file);
+}
+
+} // namespace cic::io

@@ -1,0 +1,170 @@
+// MAP-Elites runs end to end (docs/quality-diversity.md): killed with SIGKILL
+// and resumed, or continued with a larger budget, they give the bytes of a run
+// that never stopped; bad settings exit 2 before anything is written; an elite
+// of any cell replays to its stored fitness; export and plot read the archive.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <random>
+#include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "support/run_helpers.hpp"
+
+#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
+
+namespace cic {
+namespace {
+
+using namespace cic::testing;
+namespace fs = std::filesystem;
+
+// R1's 4-D duty-factor grid with 3 bins, 2.5 s simulations, batches of 12.
+std::string settings(const std::string& type, int evaluations, int workers) {
+    return R"(<settings>
+  <Experiment><type>)" + type + R"(</type><seed>3</seed><workers>)" + std::to_string(workers) + R"(</workers></Experiment>
+  <MapElites><enabled>1</enabled><bins>3</bins><batch>12</batch><initial>24</initial><evaluations>)" +
+           std::to_string(evaluations) + R"(</evaluations></MapElites>
+  <GP><numberOfTreesInForestGenotype>3</numberOfTreesInForestGenotype></GP>
+  <Neural><substrate>gait</substrate><clockInputs>0</clockInputs><frequencyMax>3</frequencyMax></Neural>
+  <Simulator><robot_type>1</robot_type><sample_to>2.5</sample_to><delayed_start>0.5</delayed_start></Simulator>
+</settings>
+)";
+}
+
+TEST(MapElitesRun, KilledAtRandomMomentsAndResumedGivesTheSameArchive) {
+    const auto dir = temp_dir("me-crash");
+    write_text(dir / "run.xml", settings("hypergp", 96, 2));
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto reference = run_settings(dir, "reference", read_text(dir / "run.xml"));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ASSERT_EQ(reference.rc, 0) << reference.log;
+    const std::string want = read_text(reference.run / "population.xml");
+
+    std::mt19937 rng(20261203);   // fixed: the same moments every time the test runs
+    std::uniform_real_distribution<double> moment(0.1, 0.9);
+    for (int k = 0; k < 4; ++k) {
+        const double at = moment(rng) * seconds;
+        SCOPED_TRACE("killed after " + std::to_string(at) + " s of a " + std::to_string(seconds) + " s run");
+        const fs::path out = dir / ("killed-" + std::to_string(k));
+        const pid_t pid = start_cic(dir / "run.xml", out, dir / "killed.log", "");
+        ASSERT_GT(pid, 0);
+        std::this_thread::sleep_for(std::chrono::duration<double>(at));
+        kill(-pid, SIGKILL);   // cic and its workers
+        int status = 0;
+        waitpid(pid, &status, 0);
+        fs::path checkpoint;
+        if (fs::exists(out) && !only_run(out).empty() && fs::exists(only_run(out) / "population.xml"))
+            checkpoint = only_run(out) / "population.xml";
+        const fs::path resumed = dir / ("resumed-" + std::to_string(k));
+        const pid_t again = start_cic(dir / "run.xml", resumed, dir / "resumed.log",
+                                      checkpoint.empty() ? "" : "Control.populationXmlLoadFrom=" + checkpoint.string());
+        waitpid(again, &status, 0);
+        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(dir / "resumed.log");
+        EXPECT_EQ(read_text(only_run(resumed) / "population.xml"), want)
+            << (checkpoint.empty() ? "started again" : "resumed from " + checkpoint.string());
+    }
+    fs::remove_all(dir);
+}
+
+TEST(MapElitesRun, ResumeWithALargerBudgetGivesTheLongerRunsBytes) {
+    const auto dir = temp_dir("me-resume");
+    for (const std::string type : {"gait", "hypergp"}) {
+        SCOPED_TRACE(type);
+        const auto straight = run_settings(dir, type + "-straight", settings(type, 72, 1));
+        const auto part = run_settings(dir, type + "-part", settings(type, 36, 2));
+        ASSERT_EQ(straight.rc, 0) << straight.log;
+        ASSERT_EQ(part.rc, 0) << part.log;
+        EXPECT_EQ(run_command("resume " + part.run.string() + " --generations 3", dir / "no.log"), 2);
+        EXPECT_HAS(read_text(dir / "no.log"), "--set MapElites.evaluations=E");
+        EXPECT_EQ(run_command("resume " + part.run.string() + " --set MapElites.bins=4 --set MapElites.evaluations=72", dir / "no.log"), 2);
+        EXPECT_HAS(read_text(dir / "no.log"), "MapElites.bins");
+        ASSERT_EQ(run_command("--quiet resume " + part.run.string() + " --set MapElites.evaluations=72", dir / "r.log"), 0)
+            << read_text(dir / "r.log");
+        EXPECT_EQ(file_hash(part.run / "population.xml"), file_hash(straight.run / "population.xml"));
+        // stats.csv: one row per batch, the same numbers but the wall times.
+        const std::string a = read_text(part.run / "stats.csv"), b = read_text(straight.run / "stats.csv");
+        EXPECT_EQ(std::count(a.begin(), a.end(), '\n'), 7);
+        EXPECT_EQ(std::count(b.begin(), b.end(), '\n'), 7);
+        EXPECT_HAS(a, ",qd_score,coverage,filled,kept\n");
+    }
+    fs::remove_all(dir);
+}
+
+TEST(MapElitesRun, BadSettingsExitTwoBeforeAnythingIsWritten) {
+    const auto dir = temp_dir("me-bad");
+    struct Case {
+        std::string name, text, says;
+    };
+    const std::string good = settings("gait", 36, 1);
+    auto with = [&](const std::string& from, const std::string& to) {
+        std::string t = good;
+        t.replace(t.find(from), from.size(), to);
+        return t;
+    };
+    const std::vector<Case> cases = {
+        {"descriptor", with("<bins>3</bins>", "<descriptor>speed</descriptor>"), "one of: duty-factor, omni"},
+        {"symreg", with("<type>gait</type>", "<type>symreg</type>"), "hypergp and gait families"},
+        {"batch", with("<batch>12</batch>", "<batch>50</batch>"), "does not cover one batch"},
+        {"bins", with("<bins>3</bins>", "<bins>100</bins>"), "past the limit of 10000000"},
+        {"ipop", with("<Neural>", "<Gait><restarts>ipop</restarts></Gait><Neural>"), "Gait.restarts"},
+        {"key", with("<bins>3</bins>", "<bims>3</bims>"), "did you mean bins"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        const auto r = run_settings(dir, c.name, c.text);
+        EXPECT_EQ(r.rc, 2) << r.log;
+        EXPECT_HAS(r.log, c.says);
+        EXPECT_FALSE(fs::exists(dir / c.name)) << "wrote a run folder";
+    }
+    fs::remove_all(dir);
+}
+
+TEST(MapElitesRun, AnyEliteReplaysToItsStoredFitnessAndExportAndPlotReadTheArchive) {
+    const auto dir = temp_dir("me-replay");
+    for (const std::string type : {"gait", "hypergp"}) {
+        SCOPED_TRACE(type);
+        const auto r = run_settings(dir, type, settings(type, 36, 2));
+        ASSERT_EQ(r.rc, 0) << r.log;
+        ASSERT_EQ(run_command("export " + r.run.string(), dir / "export.csv"), 0) << read_text(dir / "export.csv");
+        const std::string csv = read_text(dir / "export.csv");
+        // Every elite: replayed in its cell to its stored fitness, by its bins.
+        std::istringstream rows(csv);
+        std::string row;
+        std::getline(rows, row);
+        EXPECT_EQ(row, "run,config,seed,generation,id,fitness,distance,elevation,depth,size,failed,tree,cell,descriptor");
+        int elites = 0;
+        while (std::getline(rows, row)) {
+            ++elites;
+            const auto open = row.rfind(",\"");   // the cell's bins, quoted: ...,"I,J,K,L",descriptor
+            const std::string bins = row.substr(open + 2, row.find('"', open + 2) - open - 2);
+            if (elites > 3) continue;   // three replays are enough
+            ASSERT_EQ(run_command("assess " + r.run.string() + " --cell " + bins, dir / "assess.csv"), 0)
+                << read_text(dir / "assess.csv");
+            const std::string assess = read_text(dir / "assess.csv");
+            const std::string line = assess.substr(assess.find('\n') + 1);
+            const std::string stored = line.substr(line.find(',') + 1, line.find(',', line.find(',') + 1) - line.find(',') - 1);
+            std::istringstream fields(row);
+            std::string fitness;
+            for (int f = 0; f < 6; ++f) std::getline(fields, fitness, ',');
+            EXPECT_EQ(std::stod(stored), std::stod(fitness)) << row;   // assess's replay is the stored fitness
+        }
+        EXPECT_GT(elites, 3);
+        EXPECT_HAS(read_text(r.run / "summary.txt"), "cells filled");
+        // A cell out of the grid, and --cell on a run without an archive, are refused.
+        EXPECT_EQ(run_command("assess " + r.run.string() + " --cell 3,0,0,0", dir / "no.log"), 2);
+        EXPECT_HAS(read_text(dir / "no.log"), "bins 0 to 2");
+        EXPECT_EQ(run_command("plot " + r.run.string() + " --archive --dims 2,3 --out " + (dir / "a.svg").string(),
+                              dir / "plot.log"),
+                  0)
+            << read_text(dir / "plot.log");
+        EXPECT_HAS(read_text(dir / "a.svg"), "duty factor, foot");
+    }
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace cic
