@@ -52,7 +52,7 @@ PY
   strips=()
   while IFS=$'\t' read -r cell fitness descriptor; do
     img="$HERE/results/.strip-$s-${cell//,/-}.png"
-    CIC="$CIC" bash "$ROOT/scripts/screenshot-strip.sh" "$run" "$img" --at "4 8 12" --width 280 --height 210 --view "--cell $cell" >/dev/null
+    CIC="$CIC" bash "$ROOT/scripts/screenshot-strip.sh" "$run" "$img" --at "4 8 12" --width 280 --height 210 --view "--cell $cell" >/dev/null </dev/null
     strips+=("$img")
     echo "$s R1 $(basename "$best"): cell $cell, fitness $fitness, duty factors $descriptor" >> "$HERE/results/strip-$s-R1.txt.new"
   done < <(report cells "$run")

@@ -44,8 +44,10 @@ void reexec_under_xvfb() {
 
 viz::ViewEntry to_entry(ReplayItem& item) {
     viz::ViewEntry e;
-    e.info.generation = item.generation;
-    e.info.individual = item.generation >= 0 ? std::to_string(item.id) : item.label;
+    // The HUD shows "generation G | individual I", or the label alone (a preset
+    // replay, or an archive's elite: "cell I,J,... (N), batch B").
+    e.info.generation = item.elite ? -1 : item.generation;
+    e.info.individual = item.generation >= 0 && !item.elite ? std::to_string(item.id) : item.label;
     e.info.fitness = item.replayed_fitness;
     e.recording = std::move(item.recording);
     e.centre_body = item.centre_body;

@@ -1,14 +1,12 @@
 // MAP-Elites archives as XML (see archive_xml.hpp).
 #include "cic/io/archive_xml.hpp"
 
-#include <charconv>
-#include <cmath>
-#include <cstdio>
-#include <sstream>
+#include <optional>
 
 #include "cic/core/error.hpp"
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
+#include "xml_numbers.hpp"
 #include "cic/sim/evaluate.hpp"
 
 namespace cic::io {
@@ -17,44 +15,11 @@ namespace {
 constexpr const char* kFormat = "cic-archive";
 constexpr int kVersion = 1;
 
-std::string exact(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
-std::string exact_list(const std::vector<double>& values) {
-    std::string out;
-    for (double v : values) out += (out.empty() ? "" : " ") + exact(v);
-    return out;
-}
-
-template <class T>
-T parse_number(const xml::Node& n, std::string_view what, std::string_view text) {
-    T v{};
-    const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size())
-        throw n.error("<" + std::string(n.name()) + "> " + std::string(what) + " \"" + std::string(text) +
-                      "\" is not a valid number");
-    if constexpr (std::is_floating_point_v<T>) {
-        if (!std::isfinite(v)) throw n.error("<" + std::string(n.name()) + "> " + std::string(what) + " is not finite");
-    }
-    return v;
-}
-
-template <class T>
-T attribute(const xml::Node& n, std::string_view name) {
-    const auto a = n.attribute(name);
-    if (!a) throw n.error("<" + std::string(n.name()) + "> is missing attribute " + std::string(name));
-    return parse_number<T>(n, name, *a);
-}
-
-std::vector<double> numbers(const xml::Node& n, std::string_view what, std::string_view text) {
-    std::vector<double> out;
-    std::istringstream in{std::string(text)};
-    for (std::string tok; in >> tok;) out.push_back(parse_number<double>(n, what, tok));
-    return out;
-}
+using detail::attribute;
+using detail::exact;
+using detail::exact_list;
+using detail::parse_number;
+constexpr auto numbers = detail::parse_numbers;
 
 ArchiveElite read_elite(const xml::Node& e, const gp::GridArchive<int>& grid, bool& gait, bool& hypergp) {
     ArchiveElite a;

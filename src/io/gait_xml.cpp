@@ -11,6 +11,7 @@
 #include "cic/core/error.hpp"
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
+#include "xml_numbers.hpp"
 
 namespace cic::io {
 namespace {
@@ -18,43 +19,19 @@ namespace {
 constexpr const char* kFormat = "cic-gait";
 constexpr int kVersion = 1;
 
-std::string exact(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
-template <class T>
-T parse_number(const xml::Node& n, std::string_view what, std::string_view text) {
-    T v{};
-    const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size())
-        throw n.error("<" + std::string(n.name()) + "> " + std::string(what) + " \"" + std::string(text) +
-                      "\" is not a valid number");
-    if constexpr (std::is_floating_point_v<T>) {
-        if (!std::isfinite(v)) throw n.error("<" + std::string(n.name()) + "> " + std::string(what) + " is not finite");
-    }
-    return v;
-}
-
-template <class T>
-T attribute(const xml::Node& n, std::string_view name) {
-    const auto a = n.attribute(name);
-    if (!a) throw n.error("<" + std::string(n.name()) + "> is missing attribute " + std::string(name));
-    return parse_number<T>(n, name, *a);
-}
+using detail::attribute;
+using detail::exact;
+using detail::exact_list;
+using detail::parse_number;
 
 void write_point(xml::Node parent, const char* element, const GaitPoint& p) {
-    std::string xs;
-    for (double v : p.x) xs += (xs.empty() ? "" : " ") + exact(v);
-    parent.add_child(element, xs).set_attribute("fitness", exact(p.fitness));
+    parent.add_child(element, exact_list(p.x)).set_attribute("fitness", exact(p.fitness));
 }
 
 GaitPoint read_point(const xml::Node& n, std::size_t dimension) {
     GaitPoint p;
     p.fitness = attribute<double>(n, "fitness");
-    std::istringstream in(n.text());
-    for (std::string tok; in >> tok;) p.x.push_back(parse_number<double>(n, "parameter", tok));
+    p.x = detail::parse_numbers(n, "parameter", n.text());
     if (p.x.size() != dimension)
         throw n.error("<" + std::string(n.name()) + "> has " + std::to_string(p.x.size()) + " parameters, the file says " +
                       std::to_string(dimension));
@@ -78,9 +55,7 @@ std::string to_xml(const GaitFile& g) {
     auto list = root.add_element("candidates");
     list.set_attribute("count", std::to_string(g.population.size()));
     for (const GaitPoint& p : g.population) write_point(list, "candidate", p);
-    std::string history;
-    for (double f : g.history) history += (history.empty() ? "" : " ") + exact(f);
-    root.add_child("history", history).set_attribute("count", std::to_string(g.history.size()));
+    root.add_child("history", exact_list(g.history)).set_attribute("count", std::to_string(g.history.size()));
     if (g.restarts) {
         auto r = root.add_element("restarts");
         r.set_attribute("count", std::to_string(g.restarts->count));

@@ -10,6 +10,8 @@
 #include "cic/core/limits.hpp"
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
+#include "xml_numbers.hpp"
+#include "xml_numbers.hpp"
 
 namespace cic::io {
 namespace {
@@ -17,11 +19,7 @@ namespace {
 constexpr const char* kFormat = "cic-population";
 constexpr int kVersion = 1;
 
-std::string exact(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
+using detail::exact;
 
 std::string hash_text(std::uint64_t h) {
     char buf[17];

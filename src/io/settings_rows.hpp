@@ -58,6 +58,18 @@ inline SettingKey int_row(std::string sec, std::string key, long long lo, long l
     return k;
 }
 
+// A count too large for int (an evaluation budget), in [lo, hi].
+template <class F>
+inline SettingKey long_row(std::string sec, std::string key, long long lo, long long hi, std::string doc, F ref) {
+    auto k = row(std::move(sec), std::move(key), ValueType::Int, std::move(doc));
+    k.min = static_cast<double>(lo);
+    k.max = static_cast<double>(hi);
+    SettingKey bounds = k;
+    k.get = [ref](const Settings& s) { return std::to_string(field(ref, s)); };
+    k.set = [ref, bounds](Settings& s, std::string_view t) { ref(s) = detail::parse_integer(bounds, t); };
+    return k;
+}
+
 struct Bounds {
     double min = -kHuge, max = kHuge;
     bool min_exclusive = false, allow_inf = false;

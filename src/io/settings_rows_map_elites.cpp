@@ -38,17 +38,10 @@ void map_elites_rows(std::vector<SettingKey>& t) {
                            "gait: the standard deviation of the Gaussian mutation of an elite's parameters, in the "
                            "unit box where each parameter's range is 1",
                            FIELD(map_elites.sigma)));
-    {
-        auto k = row("MapElites", "evaluations", ValueType::Int,
-                     "Budget of evaluations, whole batches only: the run stops before a batch that would pass it (so a "
-                     "multiple of batch is spent exactly)");
-        k.min = 1;
-        k.max = 100000000;
-        const SettingKey bounds = k;
-        k.get = [](const Settings& s) { return std::to_string(s.map_elites.evaluations); };
-        k.set = [bounds](Settings& s, std::string_view v) { s.map_elites.evaluations = detail::parse_integer(bounds, v); };
-        t.push_back(std::move(k));
-    }
+    t.push_back(long_row("MapElites", "evaluations", 1, 100000000,
+                         "Budget of evaluations, whole batches only: the run stops before a batch that would pass it "
+                         "(so a multiple of batch is spent exactly)",
+                         FIELD(map_elites.evaluations)));
     t.push_back(double_row("MapElites", "qdOffset", kAnyFinite,
                            "The QD-score is the sum over the archive's elites of (fitness - qdOffset): choose it below "
                            "every fitness a run can reach (eq. 7.1 falls below 0 only by the height the centre loses)",

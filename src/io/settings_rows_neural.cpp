@@ -155,16 +155,9 @@ void gait_rows(std::vector<SettingKey>& t) {
                                          {GaitOptimizer::Sade, {"sade"}}},
                                         "pagmo2 optimiser of the gait parameters: CMA-ES, xNES or self-adaptive DE",
                                         FIELD(gait.optimizer)));
-    {
-        auto k = row("Gait", "evaluations", ValueType::Int,
-                     "Budget of evaluations: the run stops before a generation that would exceed it");
-        k.min = 1;
-        k.max = 100000000;
-        const SettingKey bounds = k;
-        k.get = [](const Settings& s) { return std::to_string(s.gait.evaluations); };
-        k.set = [bounds](Settings& s, std::string_view v) { s.gait.evaluations = detail::parse_integer(bounds, v); };
-        t.push_back(std::move(k));
-    }
+    t.push_back(long_row("Gait", "evaluations", 1, 100000000,
+                         "Budget of evaluations: the run stops before a generation that would exceed it",
+                         FIELD(gait.evaluations)));
     t.push_back(int_row("Gait", "populationSize", 0, 100000,
                         "Candidates per generation (lambda); 0 = 4 + floor(3 ln n) for n parameters, at least 7 "
                         "for sade", FIELD(gait.population_size)));

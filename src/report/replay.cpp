@@ -184,6 +184,7 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
         item.stored_fitness = e->fitness;
         item.generation = a.batches - 1;
         item.id = e->cell;
+        item.elite = true;
         sim::EvalResult r;
         if (gait) {
             if (e->x.size() != setup->dimension())

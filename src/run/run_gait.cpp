@@ -26,13 +26,7 @@ gp::GenerationRecord record_of(const gait::Search& search, long failed, double w
     r.generation = search.generation();
     std::vector<double> f;
     for (const auto& c : search.population()) f.push_back(c.fitness);
-    std::sort(f.begin(), f.end());
-    r.best = f.back();
-    double sum = 0;
-    for (double v : f) sum += v;
-    r.mean = sum / static_cast<double>(f.size());
-    const std::size_t n = f.size();
-    r.median = n % 2 ? f[n / 2] : 0.5 * (f[n / 2 - 1] + f[n / 2]);
+    fill_fitness_stats(r, std::move(f));
     r.evaluations = search.evaluations();
     r.failed = static_cast<int>(failed);
     r.wall_seconds = wall;

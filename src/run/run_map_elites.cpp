@@ -80,15 +80,7 @@ gp::GenerationRecord record_of(const gp::GridArchive<Solution>& archive, int bat
     r.generation = batch;
     std::vector<double> f;
     for (const auto& [cell, e] : archive.elites()) f.push_back(e.fitness);
-    std::sort(f.begin(), f.end());
-    if (!f.empty()) {
-        r.best = f.back();
-        double sum = 0;
-        for (double v : f) sum += v;
-        r.mean = sum / static_cast<double>(f.size());
-        const std::size_t n = f.size();
-        r.median = n % 2 ? f[n / 2] : 0.5 * (f[n / 2 - 1] + f[n / 2]);
-    }
+    fill_fitness_stats(r, std::move(f));
     r.evaluations = evaluations;
     r.failed = failed;
     r.wall_seconds = wall;

@@ -1,6 +1,8 @@
 // What every run loop shares: stop signals, checkpoint file names, and the
 // end-of-run actions of the thesis's settings (see run_support.hpp).
 #include "run_support.hpp"
+
+#include <algorithm>
 #include "cic/io/experiment_types.hpp"
 
 #include <csignal>
@@ -191,5 +193,16 @@ void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& consol
     }
 }
 
+
+void fill_fitness_stats(gp::GenerationRecord& r, std::vector<double> f) {
+    if (f.empty()) return;
+    std::sort(f.begin(), f.end());
+    r.best = f.back();
+    double sum = 0;
+    for (double v : f) sum += v;
+    r.mean = sum / static_cast<double>(f.size());
+    const std::size_t n = f.size();
+    r.median = n % 2 ? f[n / 2] : 0.5 * (f[n / 2 - 1] + f[n / 2]);
+}
 
 } // namespace cic::app::detail

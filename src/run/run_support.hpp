@@ -13,6 +13,7 @@
 #include "cic/run/provenance.hpp"
 #include "cic/run/run.hpp"
 #include "cic/experiments/experiment.hpp"
+#include "cic/gp/evolution.hpp"
 #include "cic/io/settings.hpp"
 
 namespace cic::app::detail {
@@ -81,6 +82,10 @@ void write_checkpoint(const std::filesystem::path& run_dir, int generation, cons
 // The end-of-run actions of the settings: plot (useMatlabPlot), POV-Ray scenes
 // (generatePovrayFiles) and showing the best (isAutonomousExperiment = 0).
 void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& console);
+
+// best, mean and median of a generation's (or an archive's) fitness values;
+// leaves them 0 when there is none.
+void fill_fitness_stats(gp::GenerationRecord& r, std::vector<double> fitness);
 
 // The summary line that splits the best's score into eq. 7.1's terms.
 std::string eq71_line(double distance, double elevation);

@@ -49,23 +49,10 @@ TEST(MapElitesRun, KilledAtRandomMomentsAndResumedGivesTheSameArchive) {
     for (int k = 0; k < 4; ++k) {
         const double at = moment(rng) * seconds;
         SCOPED_TRACE("killed after " + std::to_string(at) + " s of a " + std::to_string(seconds) + " s run");
-        const fs::path out = dir / ("killed-" + std::to_string(k));
-        const pid_t pid = start_cic(dir / "run.xml", out, dir / "killed.log", "");
-        ASSERT_GT(pid, 0);
-        std::this_thread::sleep_for(std::chrono::duration<double>(at));
-        kill(-pid, SIGKILL);   // cic and its workers
-        int status = 0;
-        waitpid(pid, &status, 0);
-        fs::path checkpoint;
-        if (fs::exists(out) && !only_run(out).empty() && fs::exists(only_run(out) / "population.xml"))
-            checkpoint = only_run(out) / "population.xml";
-        const fs::path resumed = dir / ("resumed-" + std::to_string(k));
-        const pid_t again = start_cic(dir / "run.xml", resumed, dir / "resumed.log",
-                                      checkpoint.empty() ? "" : "Control.populationXmlLoadFrom=" + checkpoint.string());
-        waitpid(again, &status, 0);
-        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(dir / "resumed.log");
-        EXPECT_EQ(read_text(only_run(resumed) / "population.xml"), want)
-            << (checkpoint.empty() ? "started again" : "resumed from " + checkpoint.string());
+        fs::path resumed, from;
+        ASSERT_TRUE(kill_then_resume(dir, dir / "run.xml", k, at, true, resumed, from)) << read_text(dir / "resumed.log");
+        EXPECT_EQ(read_text(resumed / "population.xml"), want)
+            << (from.empty() ? "started again" : "resumed from " + from.string());
     }
     fs::remove_all(dir);
 }

@@ -1,5 +1,7 @@
 #pragma once
 // Helpers for end-to-end tests that run the real `cic` binary on a settings file.
+#include <chrono>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -7,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -73,6 +76,35 @@ inline pid_t start_cic(const std::filesystem::path& settings, const std::filesys
         _exit(127);
     }
     return pid;
+}
+
+// A crash and what a user does next: starts `cic --settings settings` writing
+// to dir/killed-K, SIGKILLs it after `at` seconds (with its workers when
+// `whole_group`), then runs the same settings to dir/resumed-K from the
+// killed run's population.xml, or from the start when it died before its
+// first checkpoint. Returns whether the resume exited 0 (its output in
+// dir/resumed.log) and sets `resumed` to its run folder and `from` to the
+// checkpoint it resumed from (empty: started again).
+inline bool kill_then_resume(const std::filesystem::path& dir, const std::filesystem::path& settings, int k, double at,
+                             bool whole_group, std::filesystem::path& resumed, std::filesystem::path& from) {
+    namespace fs = std::filesystem;
+    const fs::path out = dir / ("killed-" + std::to_string(k));
+    const pid_t pid = start_cic(settings, out, dir / "killed.log", "");
+    if (pid <= 0) return false;
+    std::this_thread::sleep_for(std::chrono::duration<double>(at));
+    kill(whole_group ? -pid : pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    from.clear();
+    if (fs::exists(out) && !only_run(out).empty() && fs::exists(only_run(out) / "population.xml"))
+        from = only_run(out) / "population.xml";
+    const fs::path again_out = dir / ("resumed-" + std::to_string(k));
+    const pid_t again = start_cic(settings, again_out, dir / "resumed.log",
+                                  from.empty() ? "" : "Control.populationXmlLoadFrom=" + from.string());
+    waitpid(again, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return false;
+    resumed = only_run(again_out);
+    return true;
 }
 
 // HyperGP with population 6 on R0 and 2.5 s simulations: seconds, not minutes.

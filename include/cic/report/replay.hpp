@@ -16,7 +16,8 @@ struct ReplayItem {
     std::string label;                               // e.g. "generation 12, individual 345"
     double stored_fitness = 0.0;                     // from the population file
     int generation = 0;
-    std::uint64_t id = 0;
+    std::uint64_t id = 0;                            // the individual's id; a MAP-Elites elite's cell number
+    bool elite = false;                              // an archive's elite: the label names its cell
     sim::Recording recording;                        // frames at the requested fps
     std::vector<sim::TraceRow> trace;                // when trace was requested
     std::vector<std::vector<double>> raw_outputs;    // per trace row: raw network outputs
