@@ -19,10 +19,14 @@ std::string format_duration(double seconds) {
     return fmt::format("{}h{:02}m", s / 3600, (s % 3600) / 60);
 }
 
-// "generation 2 (3/50)": the generation's number as stats.csv, the population
+// "generation 2 (3/50)" ("batch 2 (3/300)" in MAP-Elites runs): the generation's number as stats.csv, the population
 // files and the summary give it (from 0), then how many of how many are done.
 std::string format_line(const ProgressLine& r) {
     const std::string of = r.max_generations > 0 ? fmt::format("/{}", r.max_generations) : "";
+    if (r.coverage >= 0)
+        return fmt::format("batch {} ({}{})  {:.1f} eval/s  best {:.6g}  mean {:.6g}  coverage {:.3f}  eta {}",
+                           r.generation, r.generation + 1, of, r.evaluations_per_second, r.best, r.mean, r.coverage,
+                           format_duration(r.eta_seconds));
     return fmt::format("generation {} ({}{})  {:.1f} eval/s  best {:.6g}  mean {:.6g}  limit {}  eta {}",
                        r.generation, r.generation + 1, of, r.evaluations_per_second, r.best, r.mean, r.limit,
                        format_duration(r.eta_seconds));

@@ -163,6 +163,7 @@ int loop(gp::MapElites<Solution>& me, const Family<Solution>& family, const Prep
             seconds > 0 ? static_cast<double>(me.evaluations() - evaluations_before) / seconds : 0.0;
         p.best = r.best;
         p.mean = r.mean;
+        p.coverage = archive.coverage();
         const int done = me.batches() - first_batch;
         p.eta_seconds = done > 0 ? r.wall_seconds / done * (max_batches - me.batches()) : -1.0;
         console.progress(p);

@@ -153,5 +153,31 @@ TEST(MapElitesRun, AnyEliteReplaysToItsStoredFitnessAndExportAndPlotReadTheArchi
     fs::remove_all(dir);
 }
 
+// The omni descriptor: where the centre went, on a 2-D grid of x and y
+// displacements; the heatmap's axes say so.
+TEST(MapElitesRun, TheOmniDescriptorMapsWhereTheRobotWent) {
+    const auto dir = temp_dir("me-omni");
+    std::string text = settings("gait", 36, 2);
+    text.replace(text.find("<bins>3</bins>"), 14, "<descriptor>omni</descriptor><bins>8</bins><omniRange>2</omniRange>");
+    const auto r = run_settings(dir, "omni", text);
+    ASSERT_EQ(r.rc, 0) << r.log;
+    const std::string archive = read_text(r.run / "population.xml");
+    EXPECT_HAS(archive, "<grid descriptor=\"omni\">");
+    EXPECT_HAS(archive, "<dimension bins=\"8\" lo=\"-2\" hi=\"2\"/>");
+    EXPECT_HAS(read_text(r.run / "summary.txt"), "of 64 cells filled");
+    ASSERT_EQ(run_command("plot " + r.run.string() + " --archive --out " + (dir / "o.svg").string(), dir / "p.log"), 0)
+        << read_text(dir / "p.log");
+    EXPECT_HAS(read_text(dir / "o.svg"), "x displacement [m]");
+    // Its checkpoint cannot resume a run with the duty-factor descriptor.
+    text = settings("gait", 72, 1);
+    text.replace(text.find("<Simulator>"), 11,
+                 "<Control><populationXmlLoadFrom>" + (r.run / "population.xml").string() +
+                     "</populationXmlLoadFrom></Control><Simulator>");
+    const auto refused = run_settings(dir, "refused", text);
+    EXPECT_EQ(refused.rc, 2) << refused.log;
+    EXPECT_HAS(refused.log, "descriptor is omni");
+    fs::remove_all(dir);
+}
+
 } // namespace
 } // namespace cic

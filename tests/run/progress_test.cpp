@@ -36,6 +36,10 @@ TEST(Progress, RecordLineHoldsEveryField) {
     open.eta_seconds = -1;
     EXPECT_EQ(format_line(open).substr(0, 18), "generation 2 (3)  ");
     EXPECT_NE(format_line(open).find("eta ?"), std::string::npos);
+    // A MAP-Elites run counts batches and shows the archive's coverage.
+    ProgressLine batch = record(12);
+    batch.coverage = 0.25;
+    EXPECT_EQ(format_line(batch), "batch 11 (12/50)  123.4 eval/s  best 14.5  mean 1.25  coverage 0.250  eta 1m30s");
 }
 
 TEST(Progress, PlainLinesWhenNotATerminal) {

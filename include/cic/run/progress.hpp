@@ -18,6 +18,9 @@ struct ProgressLine {
     double mean = 0;
     int limit = 0;                    // dynamic depth limit (0 = none)
     double eta_seconds = -1;          // < 0 = unknown
+    // A MAP-Elites run (>= 0): the share of the archive filled. The line then
+    // counts batches and shows the coverage instead of a depth limit.
+    double coverage = -1;
 };
 
 enum class Verbosity { Quiet, Normal, Verbose };
