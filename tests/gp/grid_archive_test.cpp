@@ -37,6 +37,9 @@ TEST(GridArchive, BinsAreRowMajorAndEdgesClamp) {
     EXPECT_EQ(a.cell_of({0.2, 0.0}), 5u);
     EXPECT_EQ(a.cell_of({1.0, 1.0}), 24u);    // the upper bound is in the last bin
     EXPECT_EQ(a.cell_of({-3.0, 7.0}), 4u);    // outside the range: the nearest bin
+    // Far outside: no overflow on the way (fuzz/regressions/archive/ubsan-*).
+    EXPECT_EQ(a.cell_of({5e15, -1e300}), 20u);
+    EXPECT_EQ(a.cell_of({-1e300, 1e300}), 4u);
     EXPECT_EQ(a.coordinates(a.cell_of({0.45, 0.9})), (std::vector<int>{2, 4}));
 }
 

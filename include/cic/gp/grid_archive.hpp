@@ -64,9 +64,10 @@ public:
         for (std::size_t d = 0; d < descriptor.size(); ++d) {
             const double v = descriptor[d];
             if (!std::isfinite(v)) throw std::invalid_argument("grid archive: a descriptor value is not finite");
-            const double t = (v - spec_.lo[d]) / (spec_.hi[d] - spec_.lo[d]);
-            int bin = static_cast<int>(std::floor(t * spec_.bins[d]));
-            bin = std::max(0, std::min(spec_.bins[d] - 1, bin));
+            // Clamped as a double: a value far outside the range must not
+            // overflow the int (found by fuzzing the archive reader).
+            const double t = std::floor((v - spec_.lo[d]) / (spec_.hi[d] - spec_.lo[d]) * spec_.bins[d]);
+            const int bin = t < 0 ? 0 : t >= spec_.bins[d] ? spec_.bins[d] - 1 : static_cast<int>(t);
             cell = cell * static_cast<std::size_t>(spec_.bins[d]) + static_cast<std::size_t>(bin);
         }
         return cell;
