@@ -6,8 +6,8 @@
 #include "cic/core/error.hpp"
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
-#include "xml_numbers.hpp"
 #include "cic/sim/evaluate.hpp"
+#include "xml_numbers.hpp"
 
 namespace cic::io {
 namespace {
@@ -18,14 +18,13 @@ constexpr int kVersion = 1;
 using detail::attribute;
 using detail::exact;
 using detail::exact_list;
-using detail::parse_number;
-constexpr auto numbers = detail::parse_numbers;
+using detail::parse_numbers;
 
 ArchiveElite read_elite(const xml::Node& e, const gp::GridArchive<int>& grid, bool& gait, bool& hypergp) {
     ArchiveElite a;
     a.cell = attribute<std::size_t>(e, "cell");
     a.fitness = attribute<double>(e, "fitness");
-    a.descriptor = numbers(e, "descriptor", e.attribute("descriptor").value_or(""));
+    a.descriptor = parse_numbers(e, "descriptor", e.attribute("descriptor").value_or(""));
     if (a.cell >= grid.cells())
         throw e.error("<elite cell=\"" + std::to_string(a.cell) + "\"> is past the grid's " +
                       std::to_string(grid.cells()) + " cells");
@@ -38,7 +37,7 @@ ArchiveElite read_elite(const xml::Node& e, const gp::GridArchive<int>& grid, bo
     for (const auto& c : e.children()) {
         if (c.name() == "x") {
             if (!a.x.empty()) throw c.error("<elite> has two <x>");
-            a.x = numbers(c, "parameter", c.text());
+            a.x = parse_numbers(c, "parameter", c.text());
             if (a.x.empty()) throw c.error("<x> holds no parameter");
             gait = true;
         } else if (c.name() == "tree") {
