@@ -22,6 +22,9 @@ scripts/quality-diversity.sh writes (me-hgp-15000, me-gait-15000); --results
            raw eq. 7.1, as these settings have no penalty). Two-sided
            Mann-Whitney p (scipy), Holm over every test of the page at once,
            A12 with a 95% bootstrap interval (2,000 resamples, seed 1).
+  curves   QD-score and coverage against evaluations, median and IQR over
+           the finished runs of each method, one panel each per robot
+           (gnuplot), to results/qd-curves.svg.
   cells    four elites of RUN far apart in the descriptor space, among those
            that walk at least half as far as the best (greedy farthest points
            from the best): one "I,J,...  fitness  descriptor" line each, for
@@ -153,6 +156,58 @@ def compare():
     print(f"{len(tests)} tests; Holm over all of them. A12 = P(first method's run > second's).")
 
 
+def curves():
+    import shutil
+    import tempfile
+    panels = []   # (robot, column, label)
+    series = {}   # (study, robot) -> {evaluations: {column: [values]}}
+    for study in STUDIES_OF:
+        index = STUDIES / study / "index.csv"
+        if not index.exists():
+            continue
+        for r in read_csv(index):
+            if r["status"] != "done":
+                continue
+            for row in read_csv(STUDIES / study / r["run_dir"] / "stats.csv"):
+                cell = series.setdefault((study, r["config"]), {}).setdefault(int(row["evaluations"]), {})
+                for column in ("qd_score", "coverage"):
+                    cell.setdefault(column, []).append(float(row[column]))
+    if not series:
+        fail(f"no finished MAP-Elites run in {STUDIES}")
+    robots = sorted({robot for _, robot in series})
+    tmp = pathlib.Path(tempfile.mkdtemp(prefix="qd-curves-"))
+    plots = []
+    colours = {"me-hgp-15000": "#d62728", "me-gait-15000": "#1f77b4"}
+    for robot in robots:
+        for column, label in (("qd_score", "QD-score (offset -1)"), ("coverage", "coverage (share of 625 cells)")):
+            lines = []
+            for study in STUDIES_OF:
+                data = series.get((study, robot))
+                if not data:
+                    continue
+                f = tmp / f"{study}-{robot}-{column}.dat"
+                with open(f, "w") as out:
+                    for ev in sorted(data):
+                        v = data[ev][column]
+                        q1, q3 = quartiles(v)
+                        out.write(f"{ev} {st.median(v)} {q1} {q3}\n")
+                n = len(data[max(data)][column])
+                lines.append(f"'{f}' using 1:3:4 with filledcurves lc rgb '{colours[study]}' fs transparent solid 0.2 "
+                             f"notitle, '{f}' using 1:2 with lines lw 2 lc rgb '{colours[study]}' "
+                             f"title '{STUDIES_OF[study]} (n = {n})'")
+            plots.append(f"set title '{robot}: {label}'\nplot " + ", ".join(lines))
+    out_file = RESULTS / "qd-curves.svg"
+    script = (f"set terminal svg size 1000,{330 * len(robots)} dynamic noenhanced font 'Sans,12' background rgb 'white'\n"
+              f"set output '{out_file}'\nset multiplot layout {len(robots)},2\nset grid\nset key bottom right\n"
+              "set xlabel 'evaluations'\n" + "\n".join(plots) + "\nunset multiplot\n")
+    (tmp / "plot.gp").write_text(script)
+    done = subprocess.run(["gnuplot", str(tmp / "plot.gp")], capture_output=True, text=True)
+    shutil.rmtree(tmp)
+    if done.returncode != 0:
+        fail(f"gnuplot: {done.stderr.strip()}")
+    print(f"qd-report.py: wrote {out_file}", file=sys.stderr)
+
+
 def cells(run):
     out = subprocess.run([CIC, "export", str(run)], capture_output=True, text=True)
     if out.returncode != 0:
@@ -180,7 +235,7 @@ if __name__ == "__main__":
     parser.add_argument("--results", default="experiments/quality-diversity/results")
     parser.add_argument("--walk-ledger", default="experiments/baselines/results/walk-runs.csv")
     parser.add_argument("--cic", default="build/cic")
-    parser.add_argument("stage", choices=["ledger", "compare", "cells"])
+    parser.add_argument("stage", choices=["ledger", "compare", "curves", "cells"])
     parser.add_argument("run", nargs="?")
     args = parser.parse_args()
     STUDIES, RESULTS = pathlib.Path(args.studies), pathlib.Path(args.results)
@@ -189,6 +244,8 @@ if __name__ == "__main__":
         ledger()
     elif args.stage == "compare":
         compare()
+    elif args.stage == "curves":
+        curves()
     else:
         if not args.run:
             fail("cells needs a MAP-Elites run folder")

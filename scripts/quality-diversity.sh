@@ -37,6 +37,7 @@ mkdir -p "$HERE/results"
 report() { "$PY" "$ROOT/scripts/qd-report.py" --studies "$output" --results "$HERE/results" --cic "$CIC" "$@"; }
 report ledger
 report compare > "$HERE/results/qd.md"
+report curves
 # The best R1 run of each method: its archive, and four elites from distant cells.
 for s in "${studies[@]}"; do
   [ -f "$output/$s/index.csv" ] || continue
