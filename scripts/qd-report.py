@@ -99,11 +99,11 @@ def median_iqr(v, digits=2):
     return f"{st.median(v):.{digits}f} [{q1:.{digits}f}, {q3:.{digits}f}]"
 
 
-def verdict(p, a, first, second):
+def verdict(p, a, first, second, n):
     if p is None:
         return "no scipy"
     if p >= 0.05:
-        return "no difference shown at n = 10" if a is not None else "–"
+        return f"no difference shown at n = {n}"
     return f"{first} higher" if a > 0.5 else f"{second} higher"
 
 
@@ -151,7 +151,7 @@ def compare():
         digits = 3 if what == "coverage" else 2
         print(f"| {robot} | {what} | {la} | {st.median(x):.{digits}f} | {lb} | {st.median(y):.{digits}f} | "
               f"{len(x)} vs {len(y)} | {p:.3g} | {ph:.3g} | {a:.2f} [{lo:.2f}, {hi:.2f}] | "
-              f"{verdict(ph, a, la, lb)} |" if p is not None else f"| {robot} | {what} | {la} | | {lb} | | | | | | no scipy |")
+              f"{verdict(ph, a, la, lb, f'{len(x)} vs {len(y)}' if len(x) != len(y) else len(x))} |" if p is not None else f"| {robot} | {what} | {la} | | {lb} | | | | | | no scipy |")
     print()
     print(f"{len(tests)} tests; Holm over all of them. A12 = P(first method's run > second's).")
 
