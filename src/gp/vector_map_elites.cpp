@@ -43,7 +43,6 @@ Emitter<std::vector<double>> gaussian_emitter(const VectorMapElitesConfig& confi
 }
 
 VectorMapElites::VectorMapElites(const VectorMapElitesConfig& config, std::uint64_t seed)
-    : MapElites(MapElitesConfig{config.grid, config.batch, config.initial}, gaussian_emitter(config), seed),
-      vector_config_(config) {}
+    : MapElites(MapElitesConfig{config.grid, config.batch, config.initial}, gaussian_emitter(config), seed) {}
 
 } // namespace cic::gp

@@ -20,7 +20,7 @@ using detail::exact;
 using detail::exact_list;
 using detail::parse_numbers;
 
-ArchiveElite read_elite(const xml::Node& e, const gp::GridArchive<int>& grid, bool& gait, bool& hypergp) {
+ArchiveElite read_elite(const xml::Node& e, const gp::GridSpec& grid, bool& gait, bool& hypergp) {
     ArchiveElite a;
     a.cell = attribute<std::size_t>(e, "cell");
     a.fitness = attribute<double>(e, "fitness");
@@ -28,9 +28,9 @@ ArchiveElite read_elite(const xml::Node& e, const gp::GridArchive<int>& grid, bo
     if (a.cell >= grid.cells())
         throw e.error("<elite cell=\"" + std::to_string(a.cell) + "\"> is past the grid's " +
                       std::to_string(grid.cells()) + " cells");
-    if (a.descriptor.size() != grid.spec().dimensions())
+    if (a.descriptor.size() != grid.dimensions())
         throw e.error("<elite> has a descriptor of " + std::to_string(a.descriptor.size()) + " values for a grid of " +
-                      std::to_string(grid.spec().dimensions()) + " dimensions");
+                      std::to_string(grid.dimensions()) + " dimensions");
     if (grid.cell_of(a.descriptor) != a.cell)
         throw e.error("<elite cell=\"" + std::to_string(a.cell) + "\"> has a descriptor of cell " +
                       std::to_string(grid.cell_of(a.descriptor)) + " (edited?)");
@@ -75,7 +75,7 @@ ArchiveFile read_archive(const xml::Document& doc) {
     } catch (const std::invalid_argument& e) {
         throw root.error(std::string("<archive> rng: ") + e.what());
     }
-    std::optional<gp::GridArchive<int>> grid;
+    std::optional<gp::GridSpec> grid;
     bool gait = false, hypergp = false;
     for (const auto& c : root.children()) {
         if (c.name() == "grid") {
@@ -91,7 +91,8 @@ ArchiveFile read_archive(const xml::Document& doc) {
                 a.grid.hi.push_back(attribute<double>(d, "hi"));
             }
             try {
-                grid.emplace(a.grid);
+                a.grid.validate();
+                grid = a.grid;
             } catch (const std::invalid_argument& e) {
                 throw c.error(std::string("<grid>: ") + e.what());
             }

@@ -35,9 +35,8 @@ ArchiveMap collapse_archive(const io::ArchiveFile& a, std::size_t x_dim, std::si
     }
     m.best.assign(static_cast<std::size_t>(m.x_bins) * static_cast<std::size_t>(m.y_bins),
                   std::numeric_limits<double>::quiet_NaN());
-    const gp::GridArchive<int> grid(a.grid);
     for (const io::ArchiveElite& e : a.elites) {
-        const std::vector<int> bins = grid.coordinates(e.cell);
+        const std::vector<int> bins = a.grid.coordinates(e.cell);
         const int y = dims > 1 ? bins[y_dim] : 0;
         double& v = m.best[static_cast<std::size_t>(y) * static_cast<std::size_t>(m.x_bins) +
                            static_cast<std::size_t>(bins[x_dim])];
@@ -92,7 +91,7 @@ void plot_archive(const fs::path& input, const fs::path& out_file, const Archive
     const io::ArchiveElite* best = a.best();
     std::string heading = options.title.empty()
         ? fmt::format("{}: {} of {} cells, best {:.2f} m", run.filename().string(), a.elites.size(),
-                      gp::GridArchive<int>(a.grid).cells(), best ? best->fitness : 0.0)
+                      a.grid.cells(), best ? best->fitness : 0.0)
         : options.title;
     std::string script = detail::terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
     script += fmt::format("set output {}\n", detail::quote(out_file.string()));

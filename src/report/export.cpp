@@ -53,12 +53,10 @@ void export_elites(const fs::path& run, const io::Settings& s, const std::string
     std::optional<hypergp::Model> model;
     if (terms && gait) setup = gait::Setup::from_settings(s);
     if (terms && !gait) model = hypergp::Model::from_settings(s);
-    const gp::GridArchive<int> grid(a.grid);
     for (const io::ArchiveElite& e : a.elites) {
-        std::string solution, bins, descriptor;
+        std::string solution, descriptor;
         for (double x : e.x) solution += (solution.empty() ? "" : " ") + number(x);
         for (const auto& t : e.genotype) solution += (solution.empty() ? "" : " | ") + t.to_string();
-        for (int b : grid.coordinates(e.cell)) bins += (bins.empty() ? "" : ",") + std::to_string(b);
         for (double v : e.descriptor) descriptor += (descriptor.empty() ? "" : " ") + number(v);
         std::string dist, elev, depth, size;
         if (setup) {
@@ -75,7 +73,7 @@ void export_elites(const fs::path& run, const io::Settings& s, const std::string
             size = std::to_string(tree::total_size(e.genotype));
         }
         csv += prefix + fmt::format("{},{},{},{},{},{},{},0,{},{},{}\n", a.batches - 1, e.cell, number(e.fitness), dist,
-                                    elev, depth, size, cell(solution), cell(bins), cell(descriptor));
+                                    elev, depth, size, cell(solution), cell(a.grid.cell_name(e.cell)), cell(descriptor));
     }
 }
 

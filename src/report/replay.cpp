@@ -118,10 +118,9 @@ std::size_t cell_named(const std::string& text, const gp::GridSpec& grid, const 
                              text + "'");
         parts.push_back(v);
     }
-    const gp::GridArchive<int> archive(grid);
     if (parts.size() == 1 && grid.dimensions() > 1) {
-        if (static_cast<std::size_t>(parts[0]) >= archive.cells())
-            throw InputError(fmt::format("--cell {}: the grid has cells 0 to {}", text, archive.cells() - 1), file);
+        if (static_cast<std::size_t>(parts[0]) >= grid.cells())
+            throw InputError(fmt::format("--cell {}: the grid has cells 0 to {}", text, grid.cells() - 1), file);
         return static_cast<std::size_t>(parts[0]);
     }
     if (parts.size() != grid.dimensions())
@@ -153,14 +152,10 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
     } else if (individual.rfind("cell:", 0) == 0) {
         const std::size_t cell = cell_named(individual.substr(5), a.grid, src.population.string());
         const io::ArchiveElite* e = a.at(cell);
-        if (!e) {
-            const gp::GridArchive<int> grid(a.grid);
-            std::string bins;
-            for (int b : grid.coordinates(cell)) bins += (bins.empty() ? "" : ",") + std::to_string(b);
+        if (!e)
             throw InputError(fmt::format("cell {} ({}) is empty: {} of {} cells hold an elite (cic export lists them)",
-                                         bins, cell, a.elites.size(), grid.cells()),
+                                         a.grid.cell_name(cell), cell, a.elites.size(), a.grid.cells()),
                              src.population.string());
-        }
         chosen.push_back(e);
     } else {
         throw InputError("a MAP-Elites run's elites are chosen by --cell I,J,... or --individual best, not an id; got '" +
@@ -170,7 +165,6 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
     std::optional<gait::Setup> setup;
     if (gait) setup = gait::Setup::from_settings(settings);
     const sim::RobotSpec& robot = gait ? setup->robot : model.robot;
-    const gp::GridArchive<int> grid(a.grid);
     std::vector<ReplayItem> items;
     for (const io::ArchiveElite* e : chosen) {
         sim::EvalOptions opt;
@@ -178,9 +172,7 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
         opt.record_trace = trace;
         opt.record_ground = trace;
         ReplayItem item;
-        std::string bins;
-        for (int b : grid.coordinates(e->cell)) bins += (bins.empty() ? "" : ",") + std::to_string(b);
-        item.label = fmt::format("cell {} ({}), batch {}", bins, e->cell, a.batches - 1);
+        item.label = fmt::format("cell {} ({}), batch {}", a.grid.cell_name(e->cell), e->cell, a.batches - 1);
         item.stored_fitness = e->fitness;
         item.generation = a.batches - 1;
         item.id = e->cell;

@@ -174,9 +174,7 @@ int loop(gp::MapElites<Solution>& me, const Family<Solution>& family, const Prep
     std::string summary = fmt::format("stopped: {} after batch {}\n", reason, me.batches() - 1);
     if (const auto* best = archive.best()) {
         const auto cell = archive.cell_of(best->descriptor);
-        std::string coords;
-        for (int c : archive.coordinates(cell)) coords += (coords.empty() ? "" : ",") + std::to_string(c);
-        summary += fmt::format("best: fitness {:.17g} in cell {} ({}) {}\n", best->fitness, coords, cell,
+        summary += fmt::format("best: fitness {:.17g} in cell {} ({}) {}\n", best->fitness, archive.spec().cell_name(cell), cell,
                                family.describe(best->solution));
     } else {
         summary += "best: none (every evaluation failed)\n";

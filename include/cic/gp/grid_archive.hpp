@@ -35,6 +35,15 @@ struct GridSpec {
     void validate() const;
     std::size_t cells() const;
 
+    // The cell of a descriptor: row-major over the dimensions (the last
+    // fastest). Throws std::invalid_argument for a descriptor of another size
+    // or a value that is not finite.
+    std::size_t cell_of(const std::vector<double>& descriptor) const;
+    // The bin of each dimension of a cell; throws for a cell past the grid.
+    std::vector<int> coordinates(std::size_t cell) const;
+    // "I,J,...": the cell's bins, as `--cell` takes them and `cic export` writes them.
+    std::string cell_name(std::size_t cell) const;
+
     static constexpr std::size_t kMaxCells = 10'000'000;
 };
 
@@ -55,34 +64,8 @@ public:
     const GridSpec& spec() const { return spec_; }
     std::size_t cells() const { return cells_; }
 
-    // The cell of a descriptor: row-major over the dimensions (the last fastest).
-    std::size_t cell_of(const std::vector<double>& descriptor) const {
-        if (descriptor.size() != spec_.dimensions())
-            throw std::invalid_argument("grid archive: a descriptor of " + std::to_string(descriptor.size()) +
-                                        " values for a grid of " + std::to_string(spec_.dimensions()) + " dimensions");
-        std::size_t cell = 0;
-        for (std::size_t d = 0; d < descriptor.size(); ++d) {
-            const double v = descriptor[d];
-            if (!std::isfinite(v)) throw std::invalid_argument("grid archive: a descriptor value is not finite");
-            // Clamped as a double: a value far outside the range must not
-            // overflow the int (found by fuzzing the archive reader).
-            const double t = std::floor((v - spec_.lo[d]) / (spec_.hi[d] - spec_.lo[d]) * spec_.bins[d]);
-            const int bin = t < 0 ? 0 : t >= spec_.bins[d] ? spec_.bins[d] - 1 : static_cast<int>(t);
-            cell = cell * static_cast<std::size_t>(spec_.bins[d]) + static_cast<std::size_t>(bin);
-        }
-        return cell;
-    }
-
-    // The bin of each dimension of a cell.
-    std::vector<int> coordinates(std::size_t cell) const {
-        if (cell >= cells_) throw std::invalid_argument("grid archive: no cell " + std::to_string(cell));
-        std::vector<int> out(spec_.dimensions());
-        for (std::size_t d = spec_.dimensions(); d-- > 0;) {
-            out[d] = static_cast<int>(cell % static_cast<std::size_t>(spec_.bins[d]));
-            cell /= static_cast<std::size_t>(spec_.bins[d]);
-        }
-        return out;
-    }
+    std::size_t cell_of(const std::vector<double>& descriptor) const { return spec_.cell_of(descriptor); }
+    std::vector<int> coordinates(std::size_t cell) const { return spec_.coordinates(cell); }
 
     // Keeps the solution when its cell is empty or it is strictly fitter than
     // the cell's elite (a tie keeps the incumbent). Returns whether it was kept.

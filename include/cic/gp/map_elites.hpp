@@ -75,13 +75,11 @@ public:
             throw std::logic_error("map-elites: " + std::to_string(results.size()) + " results for a batch of " +
                                    std::to_string(batch.size()));
         int kept = 0;
-        last_batch_.clear();
         for (std::size_t i = 0; i < batch.size(); ++i) {
             if (results[i].failed) {
                 ++failed_;
                 continue;
             }
-            last_batch_.push_back(results[i].fitness);
             if (archive_.offer(results[i].descriptor, results[i].fitness, std::move(batch[i]))) ++kept;
         }
         evaluations_ += size;
@@ -95,8 +93,6 @@ public:
     long failed() const { return failed_; }
     int batches() const { return batches_; }
     const Rng& rng() const { return rng_; }
-    // The fitness of each evaluation of the last batch that did not fail.
-    const std::vector<double>& last_batch() const { return last_batch_; }
 
     // A checkpoint's state: the archive's elites, the counters and the RNG.
     void restore(const std::map<std::size_t, typename Archive::Elite>& elites, long evaluations, long failed,
@@ -113,7 +109,6 @@ public:
         failed_ = failed;
         batches_ = batches;
         rng_.set_state(rng);
-        last_batch_.clear();
     }
 
 private:
@@ -124,7 +119,6 @@ private:
     long evaluations_ = 0;
     long failed_ = 0;
     int batches_ = 0;
-    std::vector<double> last_batch_;
 };
 
 } // namespace cic::gp

@@ -29,10 +29,6 @@ Emitter<std::vector<double>> gaussian_emitter(const VectorMapElitesConfig& confi
 class VectorMapElites : public MapElites<std::vector<double>> {
 public:
     VectorMapElites(const VectorMapElitesConfig& config, std::uint64_t seed);
-    const VectorMapElitesConfig& vector_config() const { return vector_config_; }
-
-private:
-    VectorMapElitesConfig vector_config_;
 };
 
 } // namespace cic::gp
