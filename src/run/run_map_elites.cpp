@@ -33,6 +33,7 @@ using Clock = std::chrono::steady_clock;
 // What differs between the families: how a solution is stored, evaluated and replayed.
 template <class Solution>
 struct Family {
+    const sim::RobotSpec* robot = nullptr;   // the run's, already loaded
     typename gp::MapElites<Solution>::Batch evaluate;
     std::function<void(io::ArchiveElite&, const Solution&)> store;
     std::function<Solution(const io::ArchiveElite&)> load;
@@ -185,8 +186,7 @@ int loop(gp::MapElites<Solution>& me, const Family<Solution>& family, const Prep
                            archive.qd_score(offset), offset);
     if (reason != "interrupted" && archive.best()) {
         const sim::EvalResult replayed = family.replay(archive.best()->solution);
-        const sim::RobotSpec robot = hypergp::Model::from_settings(s).robot;
-        const auto [distance, elevation] = eq71_terms(robot, replayed);
+        const auto [distance, elevation] = eq71_terms(*family.robot, replayed);
         summary += eq71_line(distance, elevation);
     }
     console.summary(summary);
@@ -218,6 +218,7 @@ int run_gait_family(PreparedRun prepared, const RunOptions& opt, RunConsole& con
     vc.sigma = s.map_elites.sigma;
     gp::VectorMapElites me(vc, s.experiment.seed);
     Family<std::vector<double>> family;
+    family.robot = &setup.robot;
     family.evaluate = [&](const std::vector<std::vector<double>>& xs) { return evaluator.described(xs, descriptor); };
     family.store = [](io::ArchiveElite& e, const std::vector<double>& x) { e.x = x; };
     family.load = [&](const io::ArchiveElite& e) {
@@ -247,6 +248,7 @@ int run_hypergp_family(PreparedRun prepared, const RunOptions& opt, RunConsole& 
     const tree::PrimitiveSet ps(s.gp.primitives);
     gp::MapElites<tree::Forest> me(config_of(s, model.robot), gp::forest_emitter(s.gp, ps), s.experiment.seed);
     Family<tree::Forest> family;
+    family.robot = &model.robot;
     family.evaluate = [&](const std::vector<tree::Forest>& forests) {
         std::vector<gp::IndividualPtr> todo;
         for (std::size_t i = 0; i < forests.size(); ++i) {
