@@ -34,10 +34,17 @@ void map_elites_rows(std::vector<SettingKey>& t) {
                         "Solutions made from nothing (hypergp: the GP generator; gait: uniform points) before any "
                         "elite is varied",
                         FIELD(map_elites.initial)));
+    t.push_back(detail::emitter_row());
     t.push_back(double_row("MapElites", "sigma", kPositive,
                            "gait: the standard deviation of the Gaussian mutation of an elite's parameters, in the "
-                           "unit box where each parameter's range is 1",
+                           "unit box where each parameter's range is 1 (iso-line: the isotropic part, sigma_iso; "
+                           "Vassiliades & Mouret used 0.01)",
                            FIELD(map_elites.sigma)));
+    t.push_back(double_row("MapElites", "lineSigma", kNonNegative,
+                           "iso-line: the standard deviation of the step along the line from one elite to a second "
+                           "(sigma_line; Vassiliades & Mouret used 0.2)",
+                           FIELD(map_elites.line_sigma)));
+    t.back().digest_at_default = false;   // added after the first MAP-Elites runs
     t.push_back(long_row("MapElites", "evaluations", 1, 100000000,
                          "Budget of evaluations, whole batches only: the run stops before a batch that would pass it "
                          "(so a multiple of batch is spent exactly)",

@@ -1,6 +1,7 @@
 // Cross-field checks of Settings, run once after all layers are applied.
 // Single-key checks (type, range) happen in the table's setters.
 #include "cic/core/error.hpp"
+#include "cic/io/emitter_names.hpp"
 #include "cic/io/experiment_types.hpp"
 #include "cic/io/settings_table.hpp"
 #include "cic/io/xml.hpp"
@@ -141,7 +142,20 @@ void validate(const Settings& s, const Locations& locs) {
               "ipop restarts belong to the pagmo optimisers, which MAP-Elites replaces (allowed: Gait.restarts = none)");
     c.require(!s.map_elites.enabled || s.map_elites.batch <= s.map_elites.evaluations,
               {"MapElites.batch", "MapElites.evaluations"}, "the budget does not cover one batch");
-    c.require(!s.map_elites.enabled || s.gp.crossover_rate + s.gp.mutation_rate > 0,
+    if (s.map_elites.enabled && s.map_elites.emitter != "auto") {
+        const EmitterName* e = find_emitter_name(s.map_elites.emitter);
+        const ExperimentFamily family = family_of(s);
+        std::string allowed = "auto";
+        for (const auto& n : emitter_names())
+            if (n.family == family) allowed += " | " + n.name;
+        c.require(e && e->family == family, {"MapElites.emitter", "Experiment.type"},
+                  "this emitter varies " + std::string(e ? to_string(e->family) : "other") +
+                      "-family solutions, and a " + std::string(to_string(family)) +
+                      "-family run has other ones (allowed here: " + allowed + ")");
+    }
+    const bool gp_emitter = family_of(s) == ExperimentFamily::HyperGP &&
+                            (s.map_elites.emitter == "auto" || s.map_elites.emitter == "gp");
+    c.require(!s.map_elites.enabled || !gp_emitter || s.gp.crossover_rate + s.gp.mutation_rate > 0,
               {"GP.crossoverRate", "GP.mutationRate", "MapElites.enabled"},
               "MAP-Elites varies elites by crossover and mutation: their rates cannot both be 0");
 

@@ -1,6 +1,6 @@
 // The MAP-Elites loop (MapElites.enabled) of both robot families: HyperGP
-// genotypes varied by the GP operators (gp/forest_map_elites.hpp), or gait
-// parameter vectors varied by Gaussian mutation (gp/vector_map_elites.hpp).
+// genotypes or gait parameter vectors, varied by the emitter MapElites.emitter
+// names (experiments/map_elites_emitters.hpp).
 // One batch at a time, evaluated in the same worker processes or MPI ranks as
 // every other run, with the same run folder, stop signals and progress line.
 // A checkpoint is the archive itself (io/archive_xml.hpp); stats.csv gains the
@@ -14,10 +14,10 @@
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 #include "cic/experiments/map_elites_grid.hpp"
-#include "cic/gp/forest_map_elites.hpp"
-#include "cic/gp/vector_map_elites.hpp"
+#include "cic/experiments/map_elites_emitters.hpp"
 #include "cic/core/error.hpp"
 #include "cic/io/archive_xml.hpp"
+#include "cic/io/emitter_names.hpp"
 #include "cic/io/experiment_types.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/stats_csv.hpp"
@@ -200,6 +200,10 @@ int loop(gp::MapElites<Solution>& me, const Family<Solution>& family, const Prep
     return 0;
 }
 
+std::string emitter_name(const io::Settings& s) {
+    return s.map_elites.emitter == "auto" ? std::string(io::default_emitter(io::family_of(s))) : s.map_elites.emitter;
+}
+
 gp::MapElitesConfig config_of(const io::Settings& s, const sim::RobotSpec& robot) {
     return {experiments::map_elites_grid(s, robot), s.map_elites.batch, s.map_elites.initial};
 }
@@ -216,7 +220,8 @@ int run_gait_family(PreparedRun prepared, const RunOptions& opt, RunConsole& con
     vc.batch = s.map_elites.batch;
     vc.initial = s.map_elites.initial;
     vc.sigma = s.map_elites.sigma;
-    gp::VectorMapElites me(vc, s.experiment.seed);
+    gp::MapElites<std::vector<double>> me(gp::MapElitesConfig{vc.grid, vc.batch, vc.initial},
+                                          experiments::make_vector_emitter(s, vc), s.experiment.seed);
     Family<std::vector<double>> family;
     family.robot = &setup.robot;
     family.evaluate = [&](const std::vector<std::vector<double>>& xs) { return evaluator.described(xs, descriptor); };
@@ -233,10 +238,11 @@ int run_gait_family(PreparedRun prepared, const RunOptions& opt, RunConsole& con
         return sim::evaluate(setup.robot, *controller, setup.sim);
     };
     family.describe = [&](const std::vector<double>& x) { return "gait: " + setup.describe(x); };
-    console.say(fmt::format("cic {}: gait experiment by MAP-Elites ({} parameters, {} descriptor, {} cells, batches "
-                            "of {}, budget {} evaluations), seed {}, output {}",
-                            CIC_VERSION, setup.dimension(), sim::to_string(descriptor), me.archive().cells(),
-                            vc.batch, s.map_elites.evaluations, s.experiment.seed, opt.run_dir.string()));
+    console.say(fmt::format("cic {}: gait experiment by MAP-Elites ({} parameters, {} emitter, {} descriptor, {} "
+                            "cells, batches of {}, budget {} evaluations), seed {}, output {}",
+                            CIC_VERSION, setup.dimension(), emitter_name(s), sim::to_string(descriptor),
+                            me.archive().cells(), vc.batch, s.map_elites.evaluations, s.experiment.seed,
+                            opt.run_dir.string()));
     return loop(me, family, prepared, opt, console);
 }
 
@@ -246,7 +252,8 @@ int run_hypergp_family(PreparedRun prepared, const RunOptions& opt, RunConsole& 
     const experiments::Context ctx = make_context(s, opt, console);
     auto experiment = experiments::make_experiment(ctx);
     const tree::PrimitiveSet ps(s.gp.primitives);
-    gp::MapElites<tree::Forest> me(config_of(s, model.robot), gp::forest_emitter(s.gp, ps), s.experiment.seed);
+    gp::MapElites<tree::Forest> me(config_of(s, model.robot), experiments::make_forest_emitter(s, ps),
+                                   s.experiment.seed);
     Family<tree::Forest> family;
     family.robot = &model.robot;
     family.evaluate = [&](const std::vector<tree::Forest>& forests) {
@@ -277,9 +284,9 @@ int run_hypergp_family(PreparedRun prepared, const RunOptions& opt, RunConsole& 
         return fmt::format("size {} tree{}: {}", tree::total_size(f), f.size() > 1 ? "s" : "", trees);
     };
     family.session_note = [&] { return experiment->session_note(); };
-    console.say(fmt::format("cic {}: {} experiment by MAP-Elites ({} descriptor, {} cells, batches of {}, budget {} "
-                            "evaluations), seed {}, output {}",
-                            CIC_VERSION, s.experiment.type, sim::to_string(s.map_elites.descriptor),
+    console.say(fmt::format("cic {}: {} experiment by MAP-Elites ({} emitter, {} descriptor, {} cells, batches of {}, "
+                            "budget {} evaluations), seed {}, output {}",
+                            CIC_VERSION, s.experiment.type, emitter_name(s), sim::to_string(s.map_elites.descriptor),
                             me.archive().cells(), s.map_elites.batch, s.map_elites.evaluations, s.experiment.seed,
                             opt.run_dir.string()));
     return loop(me, family, prepared, opt, console);

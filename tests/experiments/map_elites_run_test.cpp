@@ -23,11 +23,12 @@ using namespace cic::testing;
 namespace fs = std::filesystem;
 
 // R1's 4-D duty-factor grid with 3 bins, 2.5 s simulations, batches of 12.
-std::string settings(const std::string& type, int evaluations, int workers) {
+std::string settings(const std::string& type, int evaluations, int workers, const std::string& emitter = "") {
     return R"(<settings>
   <Experiment><type>)" + type + R"(</type><seed>3</seed><workers>)" + std::to_string(workers) + R"(</workers></Experiment>
   <MapElites><enabled>1</enabled><bins>3</bins><batch>12</batch><initial>24</initial><evaluations>)" +
-           std::to_string(evaluations) + R"(</evaluations></MapElites>
+           std::to_string(evaluations) + "</evaluations>" + (emitter.empty() ? "" : "<emitter>" + emitter + "</emitter>") +
+           R"(</MapElites>
   <GP><numberOfTreesInForestGenotype>3</numberOfTreesInForestGenotype></GP>
   <Neural><substrate>gait</substrate><clockInputs>0</clockInputs><frequencyMax>3</frequencyMax></Neural>
   <Simulator><robot_type>1</robot_type><sample_to>2.5</sample_to><delayed_start>0.5</delayed_start></Simulator>
@@ -81,6 +82,23 @@ TEST(MapElitesRun, ResumeWithALargerBudgetGivesTheLongerRunsBytes) {
     fs::remove_all(dir);
 }
 
+TEST(MapElitesRun, TheIsoLineEmitterIsOneKeyAwayAndResumesBitForBit) {
+    const auto dir = temp_dir("me-iso-line");
+    const auto gaussian = run_settings(dir, "gaussian", settings("gait", 72, 1));
+    const auto straight = run_settings(dir, "straight", settings("gait", 72, 1, "iso-line"));
+    const auto part = run_settings(dir, "part", settings("gait", 36, 2, "iso-line"));
+    ASSERT_EQ(gaussian.rc, 0) << gaussian.log;
+    ASSERT_EQ(straight.rc, 0) << straight.log;
+    ASSERT_EQ(part.rc, 0) << part.log;
+    EXPECT_HAS(read_text(straight.run / "run.log"), "iso-line emitter");
+    EXPECT_HAS(read_text(gaussian.run / "run.log"), "gaussian emitter");   // auto, for the gait family
+    EXPECT_NE(file_hash(straight.run / "population.xml"), file_hash(gaussian.run / "population.xml"));
+    ASSERT_EQ(run_command("--quiet resume " + part.run.string() + " --set MapElites.evaluations=72", dir / "r.log"), 0)
+        << read_text(dir / "r.log");
+    EXPECT_EQ(file_hash(part.run / "population.xml"), file_hash(straight.run / "population.xml"));
+    fs::remove_all(dir);
+}
+
 TEST(MapElitesRun, BadSettingsExitTwoBeforeAnythingIsWritten) {
     const auto dir = temp_dir("me-bad");
     struct Case {
@@ -99,6 +117,10 @@ TEST(MapElitesRun, BadSettingsExitTwoBeforeAnythingIsWritten) {
         {"bins", with("<bins>3</bins>", "<bins>100</bins>"), "past the limit of 10000000"},
         {"ipop", with("<Neural>", "<Gait><restarts>ipop</restarts></Gait><Neural>"), "Gait.restarts"},
         {"key", with("<bins>3</bins>", "<bims>3</bims>"), "did you mean bins"},
+        {"emitter", with("<bins>3</bins>", "<bins>3</bins><emitter>cma-me</emitter>"), "auto, gp, gaussian, iso-line"},
+        {"emitter-family", with("<bins>3</bins>", "<bins>3</bins><emitter>gp</emitter>"),
+         "allowed here: auto | gaussian | iso-line"},
+        {"line-sigma", with("<bins>3</bins>", "<bins>3</bins><lineSigma>-1</lineSigma>"), "lineSigma"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);

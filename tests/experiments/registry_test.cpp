@@ -7,7 +7,9 @@
 #include "cic/core/error.hpp"
 #include "cic/experiments/hypergp/controller.hpp"
 #include "cic/experiments/hypergp/gait_substrate.hpp"
+#include "cic/experiments/map_elites_emitters.hpp"
 #include "cic/experiments/registry.hpp"
+#include "cic/io/emitter_names.hpp"
 #include "cic/sim/robot.hpp"
 #include "cic/tree/tree.hpp"
 #include "cic/io/population_xml.hpp"
@@ -202,6 +204,83 @@ TEST(ControllerRegistry, BadRegistrationsAndUnknownNamesThrow) {
                  std::invalid_argument);
     EXPECT_THROW((void)io::read_settings_string("<settings><Neural><substrate>nothing</substrate></Neural></settings>"),
                  InputError);
+}
+
+// An emitter of gait vectors registered from outside: every new solution is
+// the archive's first elite pulled halfway to the box's centre.
+gp::Emitter<std::vector<double>> halfway(const io::Settings&, const gp::VectorMapElitesConfig& c) {
+    gp::Emitter<std::vector<double>> e = gp::gaussian_emitter(c);
+    e.vary = [](Rng&, const gp::GridArchive<std::vector<double>>& archive) {
+        std::vector<double> x = archive.elites().begin()->second.solution;
+        for (double& v : x) v = (v + 0.5) / 2;
+        return x;
+    };
+    return e;
+}
+
+const experiments::EmitterRegistrar emitter_registrar{{"registry-halfway", "toward the centre", {}, &halfway}};
+
+io::Settings map_elites_settings(const std::string& type, const std::string& emitter) {
+    return io::read_settings_string("<settings><Experiment><type>" + type +
+                                        "</type></Experiment><MapElites><enabled>1</enabled><emitter>" + emitter +
+                                        "</emitter></MapElites></settings>",
+                                    "me.xml");
+}
+
+gp::VectorMapElitesConfig vector_config() {
+    gp::VectorMapElitesConfig c;
+    c.grid = gp::GridSpec{{4}, {0}, {1}};
+    c.dimension = 3;
+    return c;
+}
+
+std::vector<double> varied(const gp::Emitter<std::vector<double>>& e) {
+    gp::GridArchive<std::vector<double>> archive(vector_config().grid);
+    archive.offer({0.1}, 1.0, {0.25, 0.75, 0.5});
+    Rng rng(4);
+    return e.vary(rng, archive);
+}
+
+TEST(EmitterRegistry, ARegisteredEmitterIsChosenByItsKeyInItsFamilyOnly) {
+    const io::Settings s = map_elites_settings("gait", "registry-halfway");
+    EXPECT_EQ(s.map_elites.emitter, "registry-halfway");
+    EXPECT_EQ(io::read_settings_string(io::write_settings(s), "w.xml").map_elites.emitter, "registry-halfway");
+    EXPECT_EQ(varied(experiments::make_vector_emitter(s, vector_config())), (std::vector<double>{0.375, 0.625, 0.5}));
+    // auto is the family's own: the Gaussian mutation for gait vectors.
+    EXPECT_EQ(varied(experiments::make_vector_emitter(map_elites_settings("gait", "auto"), vector_config())),
+              varied(gp::gaussian_emitter(vector_config())));
+    EXPECT_NE(varied(experiments::make_vector_emitter(map_elites_settings("gait", "iso-line"), vector_config())),
+              varied(gp::gaussian_emitter(vector_config())));
+    // A gait emitter for a HyperGP run is refused when the settings are read,
+    // with the names that family allows.
+    try {
+        (void)map_elites_settings("hypergp", "registry-halfway");
+        FAIL() << "a gait-family emitter was accepted for hypergp";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("allowed here: auto | gp"), std::string::npos) << e.what();
+    }
+    try {
+        (void)map_elites_settings("gait", "gp");
+        FAIL() << "the GP emitter was accepted for gait";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("allowed here: auto | gaussian | iso-line | registry-halfway"),
+                  std::string::npos)
+            << e.what();
+    }
+    // Off the family, the factory lookup refuses too (a caller that skipped the check).
+    io::Settings wrong = s;
+    EXPECT_THROW((void)experiments::make_forest_emitter(wrong, tree::PrimitiveSet(wrong.gp.primitives)),
+                 std::invalid_argument);
+}
+
+TEST(EmitterRegistry, BadRegistrationsAndUnknownNamesThrow) {
+    EXPECT_THROW(experiments::register_emitter({"registry-halfway", "again", {}, &halfway}), std::invalid_argument);
+    EXPECT_THROW(experiments::register_emitter({"gaussian", "a built-in's name", {}, &halfway}), std::invalid_argument);
+    EXPECT_THROW(experiments::register_emitter({"auto", "the default's name", {}, &halfway}), std::invalid_argument);
+    EXPECT_THROW(experiments::register_emitter({"registry-none", "no factory", {}, {}}), std::invalid_argument);
+    EXPECT_THROW(experiments::register_emitter({"Bad Name", "bad", {}, &halfway}), std::invalid_argument);
+    EXPECT_EQ(io::find_emitter_name("registry-none"), nullptr);
+    EXPECT_THROW((void)map_elites_settings("gait", "cma-me"), InputError);
 }
 
 } // namespace

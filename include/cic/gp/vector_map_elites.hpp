@@ -1,8 +1,11 @@
 #pragma once
 // MAP-Elites over parameter vectors in the unit box (the gait experiment's
-// encoding): uniform points first, then isotropic Gaussian mutation of elites
-// drawn uniformly, clamped to [0, 1] (Mouret & Clune 2015; the line mutation
-// of Vassiliades & Mouret 2018 is not used).
+// encoding): uniform points first, then variation of elites drawn uniformly,
+// clamped to [0, 1]. Two emitters: isotropic Gaussian mutation of one elite
+// (Mouret & Clune 2015), and Iso+LineDD (Vassiliades & Mouret, GECCO 2018):
+//   x' = x_i + sigma_iso N(0, I) + sigma_line N(0, 1) (x_j - x_i),
+// two elites i and j, which moves along the directions in which the elites
+// already differ (the correlations of the elite hypervolume).
 #include <cstdint>
 #include <vector>
 
@@ -25,6 +28,9 @@ using VectorBatch = MapElites<std::vector<double>>::Batch;
 
 // The Gaussian emitter of `config` (its dimension and sigma).
 Emitter<std::vector<double>> gaussian_emitter(const VectorMapElitesConfig& config);
+// Iso+LineDD: config.sigma is sigma_iso, `line_sigma` sigma_line (the paper's
+// 0.01 and 0.2). Throws std::invalid_argument for a line_sigma < 0 or not finite.
+Emitter<std::vector<double>> iso_line_emitter(const VectorMapElitesConfig& config, double line_sigma);
 
 class VectorMapElites : public MapElites<std::vector<double>> {
 public:

@@ -88,7 +88,9 @@ struct MapElitesConfig {
     double omni_range = 40.0;      // omni: the grid spans [-range, range] metres on x and on y
     int batch = 100;               // solutions evaluated together
     int initial = 100;             // made from nothing before any elite is varied
+    std::string emitter = "auto";  // how elites are varied (emitter_names.hpp); auto = the family's own
     double sigma = 0.1;            // gait: the Gaussian mutation's standard deviation, in the unit box
+    double line_sigma = 0.2;       // iso-line: the step along the line between two elites
     long evaluations = 2500;       // budget
     double qd_offset = -1.0;       // QD-score = sum over the elites of (fitness - qdOffset)
 };
