@@ -141,8 +141,16 @@ std::size_t cell_named(const std::string& text, const gp::GridSpec& grid, const 
 std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& settings, const std::string& individual,
                                        int count, double fps, bool trace) {
     const io::ArchiveFile a = io::load_archive(src.population);
-    const hypergp::Model model = hypergp::Model::from_settings(settings);
-    io::check_compatible(a, settings, experiments::map_elites_grid(settings, model.robot), src.population.string());
+    // The family's own setup, which reads the robot once.
+    const bool gait = io::family_of(settings) == io::ExperimentFamily::Gait;
+    std::optional<gait::Setup> setup;
+    std::optional<hypergp::Model> model;
+    if (gait)
+        setup.emplace(gait::Setup::from_settings(settings));
+    else
+        model.emplace(hypergp::Model::from_settings(settings));
+    const sim::RobotSpec& robot = gait ? setup->robot : model->robot;
+    io::check_compatible(a, settings, experiments::map_elites_grid(settings, robot), src.population.string());
     std::vector<const io::ArchiveElite*> chosen;
     if (individual == "best") {
         for (const auto& e : a.elites) chosen.push_back(&e);
@@ -161,10 +169,6 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
         throw InputError("a MAP-Elites run's elites are chosen by --cell I,J,... or --individual best, not an id; got '" +
                          individual + "'");
     }
-    const bool gait = io::family_of(settings) == io::ExperimentFamily::Gait;
-    std::optional<gait::Setup> setup;
-    if (gait) setup = gait::Setup::from_settings(settings);
-    const sim::RobotSpec& robot = gait ? setup->robot : model.robot;
     std::vector<ReplayItem> items;
     for (const io::ArchiveElite* e : chosen) {
         sim::EvalOptions opt;
@@ -189,7 +193,7 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
             if (trace)
                 for (const auto& row : r.trace) item.raw_outputs.push_back(row.desired);
         } else {
-            const hypergp::Outcome o = hypergp::run(model, e->genotype, opt, trace);
+            const hypergp::Outcome o = hypergp::run(*model, e->genotype, opt, trace);
             r = o.result;
             item.replayed_fitness = o.fitness;
             item.raw_fitness = o.distance_fitness;
