@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The tables of docs/quality-diversity.md (issue 26).
 
-    scripts/qd-report.py [--studies DIR] [--results DIR] ledger|compare|cells RUN
+    scripts/qd-report.py [--studies DIR] [--baselines DIR] [--results DIR] ledger|compare|curves|cells RUN
 
 DIR (default runs/quality-diversity) holds the study folders that
 scripts/quality-diversity.sh writes (me-hgp-15000, me-gait-15000); --results
@@ -12,6 +12,15 @@ scripts/quality-diversity.sh writes (me-hgp-15000, me-gait-15000); --results
            QD-score (offset -1), coverage, cells filled and best elite, and the
            evaluations spent. A run whose folder is gone keeps its row (run
            folders are never committed); a run found again replaces it.
+           With the plain references' run folders (--baselines, default
+           runs/baselines: walk-15000-hgp-gait, walk-15000-cmaes-gait) it also
+           keeps results/qd-refs.csv, each reference's best_ever individual
+           replayed by `cic assess` as scripts/baselines.sh does (raw eq. 7.1,
+           as in walk-runs.csv, and each foot's duty factor), and
+           results/qd-cellmatch.csv: for every MAP-Elites run and every
+           reference best of its robot, the elite the archive holds in the
+           reference best's cell (its 5 bins per foot, from the duty factors
+           to 3 decimals), empty when the cell is.
   compare  from the ledger: per robot and method, median and IQR of QD-score,
            coverage and best elite; MAP-Elites with HyperGP against MAP-Elites
            with the gait vector on QD-score and coverage; and each MAP-Elites
@@ -22,6 +31,9 @@ scripts/quality-diversity.sh writes (me-hgp-15000, me-gait-15000); --results
            raw eq. 7.1, as these settings have no penalty). Two-sided
            Mann-Whitney p (scipy), Holm over every test of the page at once,
            A12 with a 95% bootstrap interval (2,000 resamples, seed 1).
+           Then, from qd-cellmatch.csv, the cells where the references walk:
+           how many of them each method's archives fill, and how far their
+           elites walk there against the references.
   curves   QD-score and coverage against evaluations, median and IQR over
            the finished runs of each method, one panel each per robot
            (gnuplot), to results/qd-curves.svg.
@@ -32,6 +44,7 @@ scripts/quality-diversity.sh writes (me-hgp-15000, me-gait-15000); --results
 """
 import argparse
 import csv
+import math
 import pathlib
 import statistics as st
 import subprocess
@@ -78,18 +91,89 @@ def found_rows(studies):
     return rows
 
 
-def ledger():
-    path = RESULTS / "qd-runs.csv"
-    rows = {(r["study"], r["run_dir"]): r for r in (read_csv(path) if path.exists() else [])}
-    for r in found_rows(STUDIES):
-        rows[(r["study"], r["run_dir"])] = r
+def merge(path, fields, key, found):
+    """Rewrites the ledger `path`: its rows, those of `found` replacing any with the same key."""
+    rows = {key(r): r for r in (read_csv(path) if path.exists() else [])}
+    for r in found:
+        rows[key(r)] = r
     RESULTS.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=FIELDS, lineterminator="\n")
+    tmp = path.with_suffix(".csv.tmp")
+    with open(tmp, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields, lineterminator="\n")
         w.writeheader()
-        for key in sorted(rows, key=lambda k: (k[0], rows[k]["config"], int(rows[k]["seed"]))):
-            w.writerow(rows[key])
-    print(f"qd-report.py: {len(rows)} runs in {path}", file=sys.stderr)
+        for k in sorted(rows):
+            w.writerow(rows[k])
+    tmp.replace(path)
+    print(f"qd-report.py: {len(rows)} rows in {path}", file=sys.stderr)
+    return list(rows.values())
+
+
+REF_FIELDS = ["study", "config", "seed", "raw_fitness", "duty_factors"]
+MATCH_FIELDS = ["me_study", "config", "seed", "ref_study", "ref_seed", "ref_fitness", "ref_cell", "elite_fitness"]
+BINS = 5   # per foot, as both MAP-Elites sweeps use (MapElites.bins)
+
+
+def cic_csv(*args):
+    out = subprocess.run([CIC, *map(str, args)], capture_output=True, text=True)
+    if out.returncode != 0:
+        fail(f"cic {' '.join(map(str, args))}: {out.stderr.strip()}")
+    return list(csv.DictReader(out.stdout.splitlines()))
+
+
+def best_ever_input(run):
+    """What scripts/baselines.sh replays for a run's best_ever: HyperGP without
+    elitism may lose it, so the checkpoint of the first generation that reached
+    it (RUN/populations/gen-NNNN.xml) when kept, else the run folder."""
+    best, generation = None, None
+    for row in read_csv(run / "stats.csv"):
+        if best is None or float(row["best"]) > best:
+            best, generation = float(row["best"]), int(row["generation"])
+    file = run / "populations" / f"gen-{generation:04d}.xml"
+    return file if generation is not None and file.exists() else run
+
+
+def found_refs():
+    rows = []
+    for study in PLAIN_OF:
+        index = BASELINES / study / "index.csv"
+        if not index.exists():
+            continue
+        for r in read_csv(index):
+            if r["status"] != "done":
+                continue
+            a = cic_csv("assess", best_ever_input(BASELINES / study / r["run_dir"]))[0]
+            duty = " ".join(part.rsplit(":", 1)[1] for part in a["duty_factors"].split())
+            rows.append({"study": study, "config": r["config"], "seed": r["seed"], "raw_fitness": a["raw_fitness"],
+                         "duty_factors": duty})
+    return rows
+
+
+def cell_of(duty):
+    return ",".join(str(min(BINS - 1, max(0, math.floor(float(v) * BINS)))) for v in duty.split())
+
+
+def found_matches(me_rows, refs):
+    rows = []
+    for r in me_rows:
+        elites = {e["cell"]: e["fitness"] for e in cic_csv("export", STUDIES / r["study"] / r["run_dir"])}
+        for ref in refs:
+            if ref["config"] != r["config"]:
+                continue
+            cell = cell_of(ref["duty_factors"])
+            rows.append({"me_study": r["study"], "config": r["config"], "seed": r["seed"], "ref_study": ref["study"],
+                         "ref_seed": ref["seed"], "ref_fitness": ref["raw_fitness"], "ref_cell": cell,
+                         "elite_fitness": elites.get(cell, "")})
+    return rows
+
+
+def ledger():
+    me = found_rows(STUDIES)
+    merge(RESULTS / "qd-runs.csv", FIELDS, lambda r: (r["study"], r["config"], int(r["seed"]), r["run_dir"]), me)
+    refs = merge(RESULTS / "qd-refs.csv", REF_FIELDS, lambda r: (r["study"], r["config"], int(r["seed"])),
+                 found_refs())
+    merge(RESULTS / "qd-cellmatch.csv", MATCH_FIELDS,
+          lambda r: (r["me_study"], r["config"], int(r["seed"]), r["ref_study"], int(r["ref_seed"])),
+          found_matches(me, refs))
 
 
 def median_iqr(v, digits=2):
@@ -154,6 +238,40 @@ def compare():
               f"{verdict(ph, a, la, lb, f'{len(x)} vs {len(y)}' if len(x) != len(y) else len(x))} |" if p is not None else f"| {robot} | {what} | {la} | | {lb} | | | | | | no scipy |")
     print()
     print(f"{len(tests)} tests; Holm over all of them. A12 = P(first method's run > second's).")
+    cellmatch()
+
+
+def cellmatch():
+    path = RESULTS / "qd-cellmatch.csv"
+    rows = read_csv(path) if path.exists() else []
+    if not rows:
+        return
+    print()
+    print("Where the references walk: the cell of each plain run's best gait (its feet's duty factors), and the elite "
+          "each MAP-Elites archive of the same robot holds there.")
+    print()
+    print("| robot | archive | reference | pairs | cells filled | reference best [m] | elite there [m] | "
+          "elite / reference |")
+    print("|---|---|---|---|---|---|---|---|")
+    for robot in sorted({r["config"] for r in rows}):
+        for me_study, me_label in STUDIES_OF.items():
+            for ref_study, ref_label in PLAIN_OF.items():
+                pairs = [r for r in rows if r["config"] == robot and r["me_study"] == me_study
+                         and r["ref_study"] == ref_study]
+                if not pairs:
+                    continue
+                filled = [r for r in pairs if r["elite_fitness"]]
+                refs = [float(r["ref_fitness"]) for r in pairs]
+                there = [float(r["elite_fitness"]) for r in filled]
+                ratio = [float(r["elite_fitness"]) / float(r["ref_fitness"]) for r in filled
+                         if float(r["ref_fitness"]) > 0]
+                n_me = len({r["seed"] for r in pairs})
+                n_ref = len({r["ref_seed"] for r in pairs})
+                print(f"| {robot} | {me_label} ({n_me} runs) | {ref_label} ({n_ref} runs) | {len(pairs)} | "
+                      f"{len(filled)} ({len(filled) / len(pairs):.0%}) | {median_iqr(refs)} | {median_iqr(there)} | "
+                      f"{median_iqr(ratio)} |")
+    print()
+    print("Medians [IQR] over the pairs; the elite column over the filled ones.")
 
 
 def curves():
@@ -232,13 +350,14 @@ def cells(run):
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--studies", default="runs/quality-diversity")
+    parser.add_argument("--baselines", default="runs/baselines")
     parser.add_argument("--results", default="experiments/quality-diversity/results")
     parser.add_argument("--walk-ledger", default="experiments/baselines/results/walk-runs.csv")
     parser.add_argument("--cic", default="build/cic")
     parser.add_argument("stage", choices=["ledger", "compare", "curves", "cells"])
     parser.add_argument("run", nargs="?")
     args = parser.parse_args()
-    STUDIES, RESULTS = pathlib.Path(args.studies), pathlib.Path(args.results)
+    STUDIES, RESULTS, BASELINES = pathlib.Path(args.studies), pathlib.Path(args.results), pathlib.Path(args.baselines)
     WALK_LEDGER, CIC = pathlib.Path(args.walk_ledger), args.cic
     if args.stage == "ledger":
         ledger()

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/quality-diversity.sh [--jobs N] [--output DIR] [--summary-only]
+# scripts/quality-diversity.sh [--jobs N] [--output DIR] [--baselines DIR] [--summary-only]
 # Issue 26's study (docs/quality-diversity.md): MAP-Elites with HyperGP-gait
 # genotypes and with the gait vector on R1 and R2 (4 legs, 625 duty-factor
 # cells), 15,000 evaluations, seeds 1..10 (experiments/quality-diversity/*.xml),
@@ -8,20 +8,24 @@
 # a screenshot strip of four elites of it from distant cells.
 # Resumable: rerun the same command after an interruption; finished runs are
 # kept. The plain references are issue 21's 15,000-evaluation cells
-# (scripts/baselines.sh walk-long, experiments/baselines/results/walk-runs.csv).
+# (scripts/baselines.sh walk-long, experiments/baselines/results/walk-runs.csv);
+# where their run folders are at hand (--baselines, default runs/baselines, the
+# output of baselines.sh) each one's best gait is replayed to find its cell in
+# the archives (results/qd-refs.csv, results/qd-cellmatch.csv).
 # Environment: CIC (default build/cic), PYTHON (default python3; needs scipy).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 HERE="$ROOT/experiments/quality-diversity"
 CIC=${CIC:-$ROOT/build/cic}
 PY=${PYTHON:-python3}
-jobs=1 output=runs/quality-diversity summary_only=0
+jobs=1 output=runs/quality-diversity baselines=runs/baselines summary_only=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --jobs) jobs="$2"; shift 2 ;;
     --output) output="$2"; shift 2 ;;
+    --baselines) baselines="$2"; shift 2 ;;
     --summary-only) summary_only=1; shift ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
     *) echo "quality-diversity.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -34,7 +38,7 @@ if [ "$summary_only" = 0 ]; then
   done
 fi
 mkdir -p "$HERE/results"
-report() { "$PY" "$ROOT/scripts/qd-report.py" --studies "$output" --results "$HERE/results" --cic "$CIC" "$@"; }
+report() { "$PY" "$ROOT/scripts/qd-report.py" --studies "$output" --baselines "$baselines" --results "$HERE/results" --cic "$CIC" "$@"; }
 report ledger
 report compare > "$HERE/results/qd.md"
 report curves
