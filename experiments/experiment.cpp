@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "cic/core/process_pool.hpp"
+#include "cic/experiments/map_elites_emitters.hpp"
 #include "cic/experiments/registry.hpp"
 
 namespace cic::experiments {
@@ -26,6 +27,7 @@ std::unique_ptr<JobRunner> make_job_runner(const Context& ctx) {
 void check_inputs(const io::Settings& s) {
     const ExperimentKind& kind = experiment_kind(s.experiment.type);
     if (kind.check_inputs) kind.check_inputs(s);
+    check_emitter(s);
 }
 
 } // namespace cic::experiments

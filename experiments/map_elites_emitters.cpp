@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "cic/experiments/gait/cma_me_emitter.hpp"
 #include "cic/gp/forest_map_elites.hpp"
 #include "cic/io/emitter_names.hpp"
 #include "cic/io/experiment_types.hpp"
@@ -11,18 +12,20 @@
 namespace cic::experiments {
 namespace {
 
-// The built-ins' names and docs are io's (emitter_names.cpp), registered there
+// The built-ins' names and docs are io's (emitter_names.cpp), known there
 // before any settings are read; here are their factories.
 std::vector<EmitterKind>& kinds() {
     static std::vector<EmitterKind> k{
         {"gp", "", [](const io::Settings& s, const tree::PrimitiveSet& ps) { return gp::forest_emitter(s.gp, ps); },
-         nullptr},
+         nullptr, nullptr},
         {"gaussian", "", nullptr,
-         [](const io::Settings&, const gp::VectorMapElitesConfig& c) { return gp::gaussian_emitter(c); }},
+         [](const io::Settings&, const gp::VectorMapElitesConfig& c) { return gp::gaussian_emitter(c); }, nullptr},
         {"iso-line", "", nullptr,
          [](const io::Settings& s, const gp::VectorMapElitesConfig& c) {
              return gp::iso_line_emitter(c, s.map_elites.line_sigma);
-         }},
+         },
+         nullptr},
+        {"cma-me", "", nullptr, &gait::cma_me_emitter, &gait::check_cma_me},
     };
     return k;
 }
@@ -44,6 +47,13 @@ void register_emitter(EmitterKind kind) {
     io::register_emitter_name({kind.name, kind.doc,
                                kind.forest ? io::ExperimentFamily::HyperGP : io::ExperimentFamily::Gait});
     kinds().push_back(std::move(kind));
+}
+
+void check_emitter(const io::Settings& s) {
+    if (!s.map_elites.enabled) return;
+    const io::ExperimentFamily family = io::family_of(s);
+    if (family != io::ExperimentFamily::HyperGP && family != io::ExperimentFamily::Gait) return;
+    if (const EmitterKind& k = find(s, family); k.check) k.check(s);
 }
 
 gp::Emitter<tree::Forest> make_forest_emitter(const io::Settings& s, const tree::PrimitiveSet& primitives) {

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "cic/core/error.hpp"
+#include "cic/io/emitter_names.hpp"
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/sim/evaluate.hpp"
@@ -107,6 +108,11 @@ ArchiveFile read_archive(const xml::Document& doc) {
             if (a.elites.size() != count)
                 throw c.error("<elites count=\"" + std::to_string(count) + "\"> holds " +
                               std::to_string(a.elites.size()) + " (truncated or edited?)");
+        } else if (c.name() == "emitter") {
+            a.emitter = c.attribute("name").value_or("");
+            a.emitter_state = c.text();
+            if (a.emitter.empty() || a.emitter_state.empty())
+                throw c.error("<emitter> needs a name and its state (truncated or edited?)");
         }
     }
     if (!grid) throw root.error("an archive needs a <grid> (truncated?)");
@@ -163,6 +169,10 @@ std::string to_xml(const ArchiveFile& a) {
         if (!e.x.empty()) el.add_child("x", exact_list(e.x));
         for (const auto& t : e.genotype) el.add_child("tree", t.to_string());
     }
+    if (!a.emitter_state.empty()) {
+        auto em = root.add_child("emitter", a.emitter_state);
+        em.set_attribute("name", a.emitter);
+    }
     return doc.to_string();
 }
 
@@ -183,6 +193,12 @@ void check_compatible(const ArchiveFile& a, const Settings& s, const gp::GridSpe
     if (a.descriptor != sim::to_string(s.map_elites.descriptor))
         throw InputError("the archive's descriptor is " + a.descriptor + ", the settings ask for " +
                              sim::to_string(s.map_elites.descriptor),
+                         file);
+    const std::string emitter = s.map_elites.emitter == "auto" ? std::string(default_emitter(family_of(s)))
+                                                               : s.map_elites.emitter;
+    if (!a.emitter.empty() && a.emitter != emitter)
+        throw InputError("the archive holds the state of a " + a.emitter + " emitter, the settings vary elites with " +
+                             emitter + " (MapElites.emitter)",
                          file);
     if (a.grid.bins != grid.bins || a.grid.lo != grid.lo || a.grid.hi != grid.hi)
         throw InputError("the archive's grid differs from the one these settings make (MapElites.bins, omniRange, "

@@ -9,13 +9,14 @@
 namespace cic::io {
 namespace {
 
-constexpr std::size_t kBuiltins = 3;
+constexpr std::size_t kBuiltins = 4;
 
 std::vector<EmitterName>& names() {
     static std::vector<EmitterName> n{
         {"gp", "HyperGP's crossover and subtree mutation of elites", ExperimentFamily::HyperGP},
         {"gaussian", "isotropic Gaussian mutation of a gait vector", ExperimentFamily::Gait},
         {"iso-line", "Iso+LineDD: Gaussian plus a step along the line to a second elite", ExperimentFamily::Gait},
+        {"cma-me", "CMA-ME's improvement emitter: a CMA-ES over the batch, from an elite", ExperimentFamily::Gait},
     };
     return n;
 }
@@ -23,9 +24,12 @@ std::vector<EmitterName>& names() {
 std::string emitter_doc() {
     std::string doc = "How elites are varied: auto (the family's own: gp for HyperGP genotypes, gaussian for gait "
                       "vectors), gp (crossover and subtree mutation; hypergp family), gaussian (isotropic Gaussian "
-                      "mutation with MapElites.sigma; gait family) or iso-line (Iso+LineDD, Vassiliades & Mouret "
+                      "mutation with MapElites.sigma; gait family), iso-line (Iso+LineDD, Vassiliades & Mouret "
                       "2018: MapElites.sigma isotropic plus MapElites.lineSigma along the line to a second elite; "
-                      "gait family)";
+                      "gait family) or cma-me (CMA-ME's improvement emitter, Fontaine et al. 2020: a CMA-ES whose "
+                      "population is the batch, started at an elite with step size MapElites.sigma, ranking its "
+                      "offspring by what they add to the archive, restarted at another elite when a generation adds "
+                      "nothing; gait family)";
     for (std::size_t i = kBuiltins; i < names().size(); ++i)
         doc += ". Registered: " + names()[i].name + " (" + std::string(to_string(names()[i].family)) + " family; " +
                names()[i].doc + ")";

@@ -112,6 +112,7 @@ SettingKey open_choice_row(std::string section, std::string key, const std::vect
 
 void refresh_open_choice_row(std::string_view section, std::string_view key, const std::vector<std::string>& names,
                              const std::string& doc) {
+    if (!settings_table_built()) return;
     for (auto& k : mutable_settings_table())
         if (k.section == section && k.key == key) {
             k.choices.clear();

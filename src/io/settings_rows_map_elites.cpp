@@ -38,7 +38,7 @@ void map_elites_rows(std::vector<SettingKey>& t) {
     t.push_back(double_row("MapElites", "sigma", kPositive,
                            "gait: the standard deviation of the Gaussian mutation of an elite's parameters, in the "
                            "unit box where each parameter's range is 1 (iso-line: the isotropic part, sigma_iso; "
-                           "Vassiliades & Mouret used 0.01)",
+                           "Vassiliades & Mouret used 0.01; cma-me: the first step size of each CMA-ES start)",
                            FIELD(map_elites.sigma)));
     t.push_back(double_row("MapElites", "lineSigma", kNonNegative,
                            "iso-line: the standard deviation of the step along the line from one elite to a second "

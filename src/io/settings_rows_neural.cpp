@@ -14,24 +14,30 @@ using detail::format_double;
 using detail::join;
 using detail::split_items;
 
-const std::vector<std::string> kSynapseNames{"ih", "ho", "hh", "oo", "oh"};   // by nn::SynapseType
+// By nn::SynapseType. A function, not a namespace-scope vector: the table may be
+// built while other files' statics are initialised (a registration in a
+// static initialiser), before such a vector would exist.
+const std::vector<std::string>& synapse_names() {
+    static const std::vector<std::string> names{"ih", "ho", "hh", "oo", "oh"};
+    return names;
+}
 
 SettingKey synapse_types_row() {
     auto k = row("Neural", "synapseTypes", ValueType::NameList,
                  "Synapse types the substrate builds: ih (input-hidden), ho, hh, oo, oh (thesis fig. 6.8)");
-    for (auto& n : kSynapseNames) k.choices.push_back({n});
+    for (auto& n : synapse_names()) k.choices.push_back({n});
     k.get = [](const Settings& s) {
         std::vector<std::string> names;
-        for (std::size_t i = 0; i < kSynapseNames.size() && i < s.neural.synapse_enabled.size(); ++i)
-            if (s.neural.synapse_enabled[i]) names.push_back(kSynapseNames[i]);
+        for (std::size_t i = 0; i < synapse_names().size() && i < s.neural.synapse_enabled.size(); ++i)
+            if (s.neural.synapse_enabled[i]) names.push_back(synapse_names()[i]);
         return join(names);
     };
     k.set = [](Settings& s, std::string_view t) {
-        std::vector<bool> on(kSynapseNames.size(), false);
+        std::vector<bool> on(synapse_names().size(), false);
         for (auto item : split_items(t)) {
-            auto it = std::find(kSynapseNames.begin(), kSynapseNames.end(), item);
-            if (it == kSynapseNames.end()) throw ValueError("unknown synapse type '" + std::string(item) + "'");
-            auto i = static_cast<std::size_t>(it - kSynapseNames.begin());
+            auto it = std::find(synapse_names().begin(), synapse_names().end(), item);
+            if (it == synapse_names().end()) throw ValueError("unknown synapse type '" + std::string(item) + "'");
+            auto i = static_cast<std::size_t>(it - synapse_names().begin());
             if (on[i]) throw ValueError("synapse type '" + std::string(item) + "' listed twice");
             on[i] = true;
         }
@@ -47,7 +53,7 @@ SettingKey forest_map_row() {
     k.min = 0;
     k.max = 15;
     k.min_items = 0;
-    k.max_items = kSynapseNames.size();
+    k.max_items = synapse_names().size();
     SettingKey bounds = k;
     k.get = [](const Settings& s) {
         std::vector<std::string> items;

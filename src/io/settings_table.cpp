@@ -305,10 +305,20 @@ std::vector<std::string>& mutable_settings_sections() {
     return s;
 }
 
+namespace {
+bool table_built = false;   // constant-initialised: safe to read from any static initialiser
+} // namespace
+
 std::vector<SettingKey>& mutable_settings_table() {
-    static std::vector<SettingKey> table = build_table();
+    static std::vector<SettingKey> table = [] {
+        auto t = build_table();
+        table_built = true;
+        return t;
+    }();
     return table;
 }
+
+bool settings_table_built() { return table_built; }
 } // namespace detail
 
 } // namespace cic::io

@@ -43,7 +43,12 @@ bool valid_registered_name(std::string_view name);
 // against the list when the value is read.
 SettingKey open_choice_row(std::string section, std::string key, const std::vector<std::string>& names,
                            std::string doc, std::string& (*field)(Settings&), bool (*known)(std::string_view));
-// The table's row of section.key, given the list's names and doc again (after a registration).
+// Whether the table exists yet. A registration in a static initialiser must not
+// build it: files whose statics the rows read may not be initialised yet.
+bool settings_table_built();
+// The table's row of section.key, given the list's names and doc again (after
+// a registration); nothing when the table is not built yet (it will be built
+// with the names as they are then).
 void refresh_open_choice_row(std::string_view section, std::string_view key, const std::vector<std::string>& names,
                              const std::string& doc);
 

@@ -38,6 +38,7 @@ PreparedRun prepare_run(io::Settings s) {
             io::ArchiveFile loaded = io::load_archive(from);
             const sim::RobotSpec robot = hypergp::Model::from_settings(s).robot;
             io::check_compatible(loaded, s, experiments::map_elites_grid(s, robot), from);
+            detail::check_archive_emitter(s, loaded, from);
             p.archive_resume = std::move(loaded);
         } catch (const InputError& e) {
             throw InputError("<Control> populationXmlLoadFrom: " + e.message(), e.file(), e.line());

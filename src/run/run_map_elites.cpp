@@ -42,6 +42,10 @@ struct Family {
     std::function<std::string()> session_note = [] { return std::string(); };
 };
 
+std::string emitter_name(const io::Settings& s) {
+    return s.map_elites.emitter == "auto" ? std::string(io::default_emitter(io::family_of(s))) : s.map_elites.emitter;
+}
+
 template <class Solution>
 io::ArchiveFile checkpoint_of(const gp::MapElites<Solution>& me, const Family<Solution>& family,
                               const io::Settings& s) {
@@ -55,6 +59,8 @@ io::ArchiveFile checkpoint_of(const gp::MapElites<Solution>& me, const Family<So
     a.rng = me.rng().state();
     a.descriptor = sim::to_string(s.map_elites.descriptor);
     a.grid = me.archive().spec();
+    a.emitter_state = me.emitter_state();
+    if (!a.emitter_state.empty()) a.emitter = emitter_name(s);
     for (const auto& [cell, e] : me.archive().elites()) {
         io::ArchiveElite out;
         out.cell = cell;
@@ -70,7 +76,7 @@ template <class Solution>
 void restore(gp::MapElites<Solution>& me, const Family<Solution>& family, const io::ArchiveFile& a) {
     std::map<std::size_t, typename gp::GridArchive<Solution>::Elite> elites;
     for (const auto& e : a.elites) elites.emplace(e.cell, typename gp::GridArchive<Solution>::Elite{e.descriptor, e.fitness, family.load(e)});
-    me.restore(elites, a.evaluations, a.failed, a.batches, a.rng);
+    me.restore(elites, a.evaluations, a.failed, a.batches, a.rng, a.emitter_state);
 }
 
 // One stats.csv row per batch: the archive as the population.
@@ -200,8 +206,14 @@ int loop(gp::MapElites<Solution>& me, const Family<Solution>& family, const Prep
     return 0;
 }
 
-std::string emitter_name(const io::Settings& s) {
-    return s.map_elites.emitter == "auto" ? std::string(io::default_emitter(io::family_of(s))) : s.map_elites.emitter;
+gp::VectorMapElitesConfig vector_config(const io::Settings& s, const gait::Setup& setup) {
+    gp::VectorMapElitesConfig vc;
+    vc.grid = experiments::map_elites_grid(s, setup.robot);
+    vc.dimension = setup.dimension();
+    vc.batch = s.map_elites.batch;
+    vc.initial = s.map_elites.initial;
+    vc.sigma = s.map_elites.sigma;
+    return vc;
 }
 
 gp::MapElitesConfig config_of(const io::Settings& s, const sim::RobotSpec& robot) {
@@ -214,12 +226,7 @@ int run_gait_family(PreparedRun prepared, const RunOptions& opt, RunConsole& con
     const experiments::Context ctx = make_context(s, opt, console);
     gait::Evaluator evaluator(ctx, setup);
     const sim::Descriptor descriptor = s.map_elites.descriptor;
-    gp::VectorMapElitesConfig vc;
-    vc.grid = experiments::map_elites_grid(s, setup.robot);
-    vc.dimension = setup.dimension();
-    vc.batch = s.map_elites.batch;
-    vc.initial = s.map_elites.initial;
-    vc.sigma = s.map_elites.sigma;
+    const gp::VectorMapElitesConfig vc = vector_config(s, setup);
     gp::MapElites<std::vector<double>> me(gp::MapElitesConfig{vc.grid, vc.batch, vc.initial},
                                           experiments::make_vector_emitter(s, vc), s.experiment.seed);
     Family<std::vector<double>> family;
@@ -293,6 +300,24 @@ int run_hypergp_family(PreparedRun prepared, const RunOptions& opt, RunConsole& 
 }
 
 } // namespace
+
+void check_archive_emitter(const io::Settings& s, const io::ArchiveFile& a, const std::string& file) {
+    if (a.emitter_state.empty()) return;
+    try {
+        if (io::family_of(s) == io::ExperimentFamily::Gait) {
+            const auto e = experiments::make_vector_emitter(s, vector_config(s, gait::Setup::from_settings(s)));
+            if (!e.load) throw std::invalid_argument("this emitter keeps no state");
+            e.load(a.emitter_state);
+        } else {
+            const tree::PrimitiveSet ps(s.gp.primitives);
+            const auto e = experiments::make_forest_emitter(s, ps);
+            if (!e.load) throw std::invalid_argument("this emitter keeps no state");
+            e.load(a.emitter_state);
+        }
+    } catch (const std::invalid_argument& e) {
+        throw InputError(std::string("<emitter>: ") + e.what(), file);
+    }
+}
 
 int run_map_elites(PreparedRun prepared, const RunOptions& opt) {
     RunConsole console(opt);

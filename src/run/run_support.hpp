@@ -94,5 +94,8 @@ std::string eq71_line(double distance, double elevation);
 int run_gait(PreparedRun prepared, const RunOptions& opt);
 // The MAP-Elites loop of either robot family (run_map_elites.cpp).
 int run_map_elites(PreparedRun prepared, const RunOptions& opt);
+// Throws cic::InputError naming `file` when the archive's emitter state is one
+// the settings' emitter cannot take back (before a resume writes anything).
+void check_archive_emitter(const io::Settings& s, const io::ArchiveFile& a, const std::string& file);
 
 } // namespace cic::app::detail

@@ -82,20 +82,52 @@ TEST(MapElitesRun, ResumeWithALargerBudgetGivesTheLongerRunsBytes) {
     fs::remove_all(dir);
 }
 
-TEST(MapElitesRun, TheIsoLineEmitterIsOneKeyAwayAndResumesBitForBit) {
-    const auto dir = temp_dir("me-iso-line");
+// Each gait-family emitter beyond the default is one key away, and its run
+// continued from a checkpoint (with 2 workers) gives the bytes of the run
+// that never stopped (1 worker). CMA-ME's checkpoint carries its CMA-ES state.
+TEST(MapElitesRun, EveryGaitEmitterIsOneKeyAwayAndResumesBitForBit) {
+    const auto dir = temp_dir("me-emitters");
     const auto gaussian = run_settings(dir, "gaussian", settings("gait", 72, 1));
-    const auto straight = run_settings(dir, "straight", settings("gait", 72, 1, "iso-line"));
-    const auto part = run_settings(dir, "part", settings("gait", 36, 2, "iso-line"));
     ASSERT_EQ(gaussian.rc, 0) << gaussian.log;
-    ASSERT_EQ(straight.rc, 0) << straight.log;
-    ASSERT_EQ(part.rc, 0) << part.log;
-    EXPECT_HAS(read_text(straight.run / "run.log"), "iso-line emitter");
     EXPECT_HAS(read_text(gaussian.run / "run.log"), "gaussian emitter");   // auto, for the gait family
-    EXPECT_NE(file_hash(straight.run / "population.xml"), file_hash(gaussian.run / "population.xml"));
-    ASSERT_EQ(run_command("--quiet resume " + part.run.string() + " --set MapElites.evaluations=72", dir / "r.log"), 0)
-        << read_text(dir / "r.log");
-    EXPECT_EQ(file_hash(part.run / "population.xml"), file_hash(straight.run / "population.xml"));
+    for (const std::string emitter : {"iso-line", "cma-me"}) {
+        SCOPED_TRACE(emitter);
+        const auto straight = run_settings(dir, emitter + "-straight", settings("gait", 72, 1, emitter));
+        const auto part = run_settings(dir, emitter + "-part", settings("gait", 36, 2, emitter));
+        ASSERT_EQ(straight.rc, 0) << straight.log;
+        ASSERT_EQ(part.rc, 0) << part.log;
+        EXPECT_HAS(read_text(straight.run / "run.log"), emitter + " emitter");
+        EXPECT_NE(file_hash(straight.run / "population.xml"), file_hash(gaussian.run / "population.xml"));
+        EXPECT_EQ(read_text(part.run / "population.xml").find("<emitter") != std::string::npos, emitter == "cma-me");
+        ASSERT_EQ(run_command("--quiet resume " + part.run.string() + " --set MapElites.evaluations=72",
+                              dir / (emitter + ".log")),
+                  0)
+            << read_text(dir / (emitter + ".log"));
+        EXPECT_EQ(file_hash(part.run / "population.xml"), file_hash(straight.run / "population.xml"));
+    }
+    // An edited emitter state, or another emitter, is refused before the resume writes anything.
+    const auto part = only_run(dir / "cma-me-part");
+    std::string archive = read_text(part / "population.xml");
+    const auto at = archive.find("\ngeneration ");
+    ASSERT_NE(at, std::string::npos);
+    archive.insert(at + 12, "oops ");
+    write_text(dir / "edited.xml", archive);
+    const std::string from = " --set Control.populationXmlLoadFrom=" + (dir / "edited.xml").string();
+    write_text(dir / "resume.xml", settings("gait", 96, 1, "cma-me"));
+    EXPECT_EQ(run_command("--quiet --settings " + (dir / "resume.xml").string() + " --output " +
+                              (dir / "edited-out").string() + from,
+                          dir / "edited.log"),
+              2);
+    EXPECT_HAS(read_text(dir / "edited.log"), "cma-me emitter state");
+    EXPECT_FALSE(fs::exists(dir / "edited-out"));
+    write_text(dir / "other.xml", settings("gait", 96, 1, "iso-line"));
+    EXPECT_EQ(run_command("--quiet --settings " + (dir / "other.xml").string() + " --output " +
+                              (dir / "other-out").string() + " --set Control.populationXmlLoadFrom=" +
+                              (part / "population.xml").string(),
+                          dir / "other.log"),
+              2);
+    EXPECT_HAS(read_text(dir / "other.log"), "state of a cma-me emitter");
+    EXPECT_FALSE(fs::exists(dir / "other-out"));
     fs::remove_all(dir);
 }
 
@@ -117,10 +149,13 @@ TEST(MapElitesRun, BadSettingsExitTwoBeforeAnythingIsWritten) {
         {"bins", with("<bins>3</bins>", "<bins>100</bins>"), "past the limit of 10000000"},
         {"ipop", with("<Neural>", "<Gait><restarts>ipop</restarts></Gait><Neural>"), "Gait.restarts"},
         {"key", with("<bins>3</bins>", "<bims>3</bims>"), "did you mean bins"},
-        {"emitter", with("<bins>3</bins>", "<bins>3</bins><emitter>cma-me</emitter>"), "auto, gp, gaussian, iso-line"},
+        {"emitter", with("<bins>3</bins>", "<bins>3</bins><emitter>cma-mae</emitter>"),
+         "auto, gp, gaussian, iso-line, cma-me"},
         {"emitter-family", with("<bins>3</bins>", "<bins>3</bins><emitter>gp</emitter>"),
          "allowed here: auto | gaussian | iso-line"},
         {"line-sigma", with("<bins>3</bins>", "<bins>3</bins><lineSigma>-1</lineSigma>"), "lineSigma"},
+        {"cma-me", with("<initial>24</initial>", "<initial>30</initial><emitter>cma-me</emitter>"),
+         "multiple of batch"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);

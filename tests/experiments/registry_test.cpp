@@ -218,7 +218,7 @@ gp::Emitter<std::vector<double>> halfway(const io::Settings&, const gp::VectorMa
     return e;
 }
 
-const experiments::EmitterRegistrar emitter_registrar{{"registry-halfway", "toward the centre", {}, &halfway}};
+const experiments::EmitterRegistrar emitter_registrar{{"registry-halfway", "toward the centre", {}, &halfway, {}}};
 
 io::Settings map_elites_settings(const std::string& type, const std::string& emitter) {
     return io::read_settings_string("<settings><Experiment><type>" + type +
@@ -263,9 +263,9 @@ TEST(EmitterRegistry, ARegisteredEmitterIsChosenByItsKeyInItsFamilyOnly) {
         (void)map_elites_settings("gait", "gp");
         FAIL() << "the GP emitter was accepted for gait";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("allowed here: auto | gaussian | iso-line | registry-halfway"),
-                  std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("allowed here: auto | gaussian | iso-line | "), std::string::npos)
             << e.what();
+        EXPECT_NE(std::string(e.what()).find("| registry-halfway"), std::string::npos) << e.what();
     }
     // Off the family, the factory lookup refuses too (a caller that skipped the check).
     io::Settings wrong = s;
@@ -274,13 +274,13 @@ TEST(EmitterRegistry, ARegisteredEmitterIsChosenByItsKeyInItsFamilyOnly) {
 }
 
 TEST(EmitterRegistry, BadRegistrationsAndUnknownNamesThrow) {
-    EXPECT_THROW(experiments::register_emitter({"registry-halfway", "again", {}, &halfway}), std::invalid_argument);
-    EXPECT_THROW(experiments::register_emitter({"gaussian", "a built-in's name", {}, &halfway}), std::invalid_argument);
-    EXPECT_THROW(experiments::register_emitter({"auto", "the default's name", {}, &halfway}), std::invalid_argument);
-    EXPECT_THROW(experiments::register_emitter({"registry-none", "no factory", {}, {}}), std::invalid_argument);
-    EXPECT_THROW(experiments::register_emitter({"Bad Name", "bad", {}, &halfway}), std::invalid_argument);
+    EXPECT_THROW(experiments::register_emitter({"registry-halfway", "again", {}, &halfway, {}}), std::invalid_argument);
+    EXPECT_THROW(experiments::register_emitter({"gaussian", "a built-in's name", {}, &halfway, {}}), std::invalid_argument);
+    EXPECT_THROW(experiments::register_emitter({"auto", "the default's name", {}, &halfway, {}}), std::invalid_argument);
+    EXPECT_THROW(experiments::register_emitter({"registry-none", "no factory", {}, {}, {}}), std::invalid_argument);
+    EXPECT_THROW(experiments::register_emitter({"Bad Name", "bad", {}, &halfway, {}}), std::invalid_argument);
     EXPECT_EQ(io::find_emitter_name("registry-none"), nullptr);
-    EXPECT_THROW((void)map_elites_settings("gait", "cma-me"), InputError);
+    EXPECT_THROW((void)map_elites_settings("gait", "cma-mae"), InputError);
 }
 
 } // namespace

@@ -6,8 +6,8 @@
 // family). A new emitter is one file with a static EmitterRegistrar: its name,
 // one line of doc, and a factory for its family. The name joins the choices of
 // MapElites.emitter (reader, schema, --help), and the settings check refuses
-// it for the other family. The built-ins (gp, gaussian, iso-line) register in
-// map_elites_emitters.cpp.
+// it for the other family. The built-ins (gp, gaussian, iso-line, cma-me) are
+// listed in map_elites_emitters.cpp.
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -36,6 +36,9 @@ struct EmitterKind {
     // Exactly one of the two: it says the family.
     ForestEmitterFactory forest;
     VectorEmitterFactory vector;
+    // Optional: throws cic::InputError naming the keys for settings this
+    // emitter cannot run with (checked before a run writes anything).
+    std::function<void(const io::Settings&)> check;
 };
 
 // Throws std::invalid_argument for a name registered twice or taken, or a kind
@@ -47,6 +50,9 @@ void register_emitter(EmitterKind kind);
 // whatever the factory throws.
 gp::Emitter<tree::Forest> make_forest_emitter(const io::Settings& s, const tree::PrimitiveSet& primitives);
 gp::Emitter<std::vector<double>> make_vector_emitter(const io::Settings& s, const gp::VectorMapElitesConfig& config);
+
+// The named emitter's own check of the settings (MapElites enabled only).
+void check_emitter(const io::Settings& s);
 
 struct EmitterRegistrar {
     explicit EmitterRegistrar(EmitterKind kind) { register_emitter(std::move(kind)); }

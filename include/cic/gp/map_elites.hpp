@@ -39,13 +39,31 @@ struct MapElitesConfig {
     void validate() const;
 };
 
+// What became of one solution of a batch, as an emitter that learns is told.
+struct Outcome {
+    enum class Kind { NewCell, Improved, NotKept, Failed };
+    Kind kind = Kind::Failed;
+    double fitness = 0;
+    double improvement = 0;   // fitness minus the cell's elite before (NewCell: the fitness itself)
+};
+
 template <class Solution>
 struct Emitter {
     std::function<Solution(Rng&)> random;
-    std::function<Solution(Rng&, const GridArchive<Solution>&)> vary;   // the archive is never empty here
+    // One solution from the archive (never empty here). An emitter that makes
+    // whole batches gives `ask` instead.
+    std::function<Solution(Rng&, const GridArchive<Solution>&)> vary;
     // Optional: throws std::invalid_argument for a restored elite this run
     // could not have made (a parameter vector of another size).
     std::function<void(const Solution&)> check;
+    // Optional, for an emitter that learns from the archive (CMA-ME): `ask`
+    // makes the varied part of a batch at once, `tell` then hears what became
+    // of each of them, in the same order, and `save` / `load` carry its state
+    // through a checkpoint (load gets what save gave; "" for a fresh emitter).
+    std::function<std::vector<Solution>(Rng&, const GridArchive<Solution>&, std::size_t count)> ask;
+    std::function<void(const std::vector<Outcome>&)> tell;
+    std::function<std::string()> save;
+    std::function<void(const std::string&)> load;
 };
 
 template <class Solution>
@@ -57,7 +75,9 @@ public:
     MapElites(MapElitesConfig config, Emitter<Solution> emitter, std::uint64_t seed)
         : config_((config.validate(), std::move(config))), emitter_(std::move(emitter)), archive_(config_.grid),
           rng_(seed) {
-        if (!emitter_.random || !emitter_.vary) throw std::invalid_argument("map-elites: the emitter is incomplete");
+        if (!emitter_.random || (!emitter_.vary && !emitter_.ask) || bool(emitter_.ask) != bool(emitter_.tell) ||
+            bool(emitter_.save) != bool(emitter_.load))
+            throw std::invalid_argument("map-elites: the emitter is incomplete");
     }
 
     // Makes one batch (the last may be smaller: at most `budget_left`),
@@ -67,21 +87,41 @@ public:
         const long size = std::min<long>(config_.batch, budget_left);
         std::vector<Solution> batch;
         batch.reserve(static_cast<std::size_t>(size));
-        for (long i = 0; i < size; ++i)
-            batch.push_back(evaluations_ + i < config_.initial || archive_.empty() ? emitter_.random(rng_)
-                                                                                  : emitter_.vary(rng_, archive_));
+        long fresh = 0;   // made from nothing: the first ones of the batch
+        while (fresh < size && (evaluations_ + fresh < config_.initial || archive_.empty())) {
+            batch.push_back(emitter_.random(rng_));
+            ++fresh;
+        }
+        if (emitter_.ask && fresh < size) {
+            std::vector<Solution> asked = emitter_.ask(rng_, archive_, static_cast<std::size_t>(size - fresh));
+            if (asked.size() != static_cast<std::size_t>(size - fresh))
+                throw std::logic_error("map-elites: the emitter made " + std::to_string(asked.size()) + " of " +
+                                       std::to_string(size - fresh) + " solutions");
+            for (auto& a : asked) batch.push_back(std::move(a));
+        } else {
+            for (long i = fresh; i < size; ++i) batch.push_back(emitter_.vary(rng_, archive_));
+        }
         const std::vector<Evaluation> results = evaluate(batch);
         if (results.size() != batch.size())
             throw std::logic_error("map-elites: " + std::to_string(results.size()) + " results for a batch of " +
                                    std::to_string(batch.size()));
         int kept = 0;
+        std::vector<Outcome> outcomes;
         for (std::size_t i = 0; i < batch.size(); ++i) {
+            Outcome o;
             if (results[i].failed) {
                 ++failed_;
-                continue;
+            } else {
+                const auto* before = archive_.at(archive_.cell_of(results[i].descriptor));
+                o.fitness = results[i].fitness;
+                o.improvement = before ? results[i].fitness - before->fitness : results[i].fitness;
+                const bool taken = archive_.offer(results[i].descriptor, results[i].fitness, std::move(batch[i]));
+                o.kind = !taken ? Outcome::Kind::NotKept : before ? Outcome::Kind::Improved : Outcome::Kind::NewCell;
+                kept += taken;
             }
-            if (archive_.offer(results[i].descriptor, results[i].fitness, std::move(batch[i]))) ++kept;
+            if (i >= static_cast<std::size_t>(fresh)) outcomes.push_back(o);
         }
+        if (emitter_.tell && !outcomes.empty()) emitter_.tell(outcomes);
         evaluations_ += size;
         ++batches_;
         return kept;
@@ -94,9 +134,15 @@ public:
     int batches() const { return batches_; }
     const Rng& rng() const { return rng_; }
 
-    // A checkpoint's state: the archive's elites, the counters and the RNG.
+    // The emitter's own state for a checkpoint ("" when it keeps none).
+    std::string emitter_state() const { return emitter_.save ? emitter_.save() : std::string(); }
+
+    // A checkpoint's state: the archive's elites, the counters, the RNG and
+    // the emitter's state (refused by an emitter that keeps none).
     void restore(const std::map<std::size_t, typename Archive::Elite>& elites, long evaluations, long failed,
-                 int batches, const Rng::State& rng) {
+                 int batches, const Rng::State& rng, const std::string& emitter_state = {}) {
+        if (!emitter_state.empty() && !emitter_.load)
+            throw std::invalid_argument("map-elites: an emitter state for an emitter that keeps none");
         if (evaluations < 0 || failed < 0 || failed > evaluations || batches < 0)
             throw std::invalid_argument("map-elites: counters out of range");
         Archive archive(config_.grid);
@@ -104,6 +150,7 @@ public:
             if (emitter_.check) emitter_.check(e.solution);
             archive.restore(cell, e);
         }
+        if (emitter_.load) emitter_.load(emitter_state);
         archive_ = std::move(archive);
         evaluations_ = evaluations;
         failed_ = failed;

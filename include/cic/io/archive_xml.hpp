@@ -37,6 +37,10 @@ struct ArchiveFile {
     std::string descriptor;       // "duty-factor" | "omni"
     gp::GridSpec grid;
     std::vector<ArchiveElite> elites;   // in cell order
+    // The emitter's own state, for an emitter that keeps one (CMA-ME), and
+    // its MapElites.emitter name; both empty otherwise.
+    std::string emitter;
+    std::string emitter_state;
 
     const ArchiveElite* best() const;   // the fittest (the first in cell order among equals); nullptr when empty
     const ArchiveElite* at(std::size_t cell) const;

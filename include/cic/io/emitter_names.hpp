@@ -1,6 +1,6 @@
 #pragma once
 // The names the MapElites.emitter key accepts: `auto` (the family's own), the
-// three built-in emitters (gp, gaussian, iso-line) and those an emitter
+// four built-in emitters (gp, gaussian, iso-line, cma-me) and those an emitter
 // registration adds (experiments::register_emitter, docs/extending.md). Each
 // name varies one family's solutions: GP genotypes or gait parameter vectors.
 #include <string>
