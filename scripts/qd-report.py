@@ -4,7 +4,8 @@
     scripts/qd-report.py [--studies DIR] [--baselines DIR] [--results DIR] ledger|compare|curves|cells RUN
 
 DIR (default runs/quality-diversity) holds the study folders that
-scripts/quality-diversity.sh writes (me-hgp-15000, me-gait-15000); --results
+scripts/quality-diversity.sh writes (me-hgp-15000, me-gait-15000,
+me-cmame-15000); --results
 (default experiments/quality-diversity/results) holds the ledger.
 
   ledger   merges the finished MAP-Elites runs found in DIR into
@@ -22,8 +23,10 @@ scripts/quality-diversity.sh writes (me-hgp-15000, me-gait-15000); --results
            reference best's cell (its 5 bins per foot, from the duty factors
            to 3 decimals), empty when the cell is.
   compare  from the ledger: per robot and method, median and IQR of QD-score,
-           coverage and best elite; MAP-Elites with HyperGP against MAP-Elites
-           with the gait vector on QD-score and coverage; and each MAP-Elites
+           coverage and best elite; MAP-Elites with HyperGP, and with the
+           CMA-ME emitter, against MAP-Elites with the gait vector's Gaussian
+           emitter on QD-score and coverage (CMA-ME on the best elite too);
+           and each MAP-Elites
            method's best elite against the plain runs' best at the same budget
            of 15,000 evaluations (HyperGP-gait and CMA-ES gait with IPOP, from
            experiments/baselines/results/walk-runs.csv, scored alike: raw eq.
@@ -52,7 +55,8 @@ import sys
 
 from study_stats import a12, a12_interval, holm, mann_whitney_p, quartiles
 
-STUDIES_OF = {"me-hgp-15000": "MAP-Elites, HyperGP-gait", "me-gait-15000": "MAP-Elites, gait vector"}
+STUDIES_OF = {"me-hgp-15000": "MAP-Elites, HyperGP-gait", "me-gait-15000": "MAP-Elites, gait vector",
+              "me-cmame-15000": "MAP-Elites, gait vector, CMA-ME"}
 PLAIN_OF = {"walk-15000-hgp-gait": "HyperGP-gait (plain)", "walk-15000-cmaes-gait": "CMA-ES gait, IPOP"}
 FIELDS = ["study", "run_dir", "config", "seed", "evaluations", "batches", "best", "qd_score", "coverage", "filled",
           "wall_seconds"]
@@ -218,10 +222,14 @@ def compare():
     tests = []   # (robot, what, first label, x, second label, y)
     for robot in robots:
         for column, what in (("qd_score", "QD-score"), ("coverage", "coverage")):
-            tests.append((robot, what, STUDIES_OF["me-hgp-15000"], values("me-hgp-15000", robot, column, me),
-                          STUDIES_OF["me-gait-15000"], values("me-gait-15000", robot, column, me)))
+            for first, second in (("me-hgp-15000", "me-gait-15000"), ("me-cmame-15000", "me-gait-15000")):
+                tests.append((robot, what, STUDIES_OF[first], values(first, robot, column, me),
+                              STUDIES_OF[second], values(second, robot, column, me)))
+        tests.append((robot, "best", STUDIES_OF["me-cmame-15000"], values("me-cmame-15000", robot, "best", me),
+                      STUDIES_OF["me-gait-15000"], values("me-gait-15000", robot, "best", me)))
         for me_study, plain_study in (("me-hgp-15000", "walk-15000-hgp-gait"), ("me-gait-15000", "walk-15000-cmaes-gait"),
-                                      ("me-hgp-15000", "walk-15000-cmaes-gait")):
+                                      ("me-hgp-15000", "walk-15000-cmaes-gait"),
+                                      ("me-cmame-15000", "walk-15000-cmaes-gait")):
             tests.append((robot, "best", STUDIES_OF[me_study], values(me_study, robot, "best", me),
                           PLAIN_OF[plain_study], values(plain_study, robot, "raw_fitness", plain)))
     tests = [t for t in tests if len(t[3]) >= 2 and len(t[5]) >= 2]
@@ -295,7 +303,7 @@ def curves():
     robots = sorted({robot for _, robot in series})
     tmp = pathlib.Path(tempfile.mkdtemp(prefix="qd-curves-"))
     plots = []
-    colours = {"me-hgp-15000": "#d62728", "me-gait-15000": "#1f77b4"}
+    colours = {"me-hgp-15000": "#d62728", "me-gait-15000": "#1f77b4", "me-cmame-15000": "#2ca02c"}
     for robot in robots:
         for column, label in (("qd_score", "QD-score (offset -1)"), ("coverage", "coverage (share of 625 cells)")):
             lines = []

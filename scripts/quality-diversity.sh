@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # scripts/quality-diversity.sh [--jobs N] [--output DIR] [--baselines DIR] [--summary-only]
 # Issue 26's study (docs/quality-diversity.md): MAP-Elites with HyperGP-gait
-# genotypes and with the gait vector on R1 and R2 (4 legs, 625 duty-factor
-# cells), 15,000 evaluations, seeds 1..10 (experiments/quality-diversity/*.xml),
+# genotypes and with the gait vector (Gaussian and CMA-ME emitters) on R1 and R2
+# (4 legs, 625 duty-factor cells), 15,000 evaluations, seeds 1..10
+# (experiments/quality-diversity/*.xml),
 # then the summary: results/qd-runs.csv (the ledger, merged across sittings),
 # results/qd.md (the tables), an archive heatmap of each method's best R1 run and
 # a screenshot strip of four elites of it from distant cells.
@@ -31,7 +32,7 @@ while [ $# -gt 0 ]; do
 done
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "quality-diversity.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
 [ -x "$CIC" ] || { echo "quality-diversity.sh: no cic binary at $CIC (build first, or set CIC)" >&2; exit 2; }
-studies=(me-gait-15000 me-hgp-15000)
+studies=(me-gait-15000 me-hgp-15000 me-cmame-15000)
 if [ "$summary_only" = 0 ]; then
   for s in "${studies[@]}"; do
     "$CIC" sweep "$HERE/$s.xml" --output "$output/$s" --jobs "$jobs"
