@@ -1,13 +1,16 @@
 // What a MAP-Elites run spends outside physics, per evaluation: making a
-// solution (Gaussian mutation of a gait vector, or GP crossover and mutation
-// of a 3-tree genotype) and offering it to a 625-cell duty-factor archive, and
+// solution (Gaussian mutation of a gait vector, a CMA-ME generation, or GP
+// crossover and mutation of a 3-tree genotype) and offering it to a 625-cell
+// duty-factor archive, and
 // writing the archive's checkpoint; against one physics evaluation of R1 with
 // the ground recorded for the duty factors (scripts/bench.sh prints the ratio).
 #include <benchmark/benchmark.h>
 
+#include "cic/experiments/gait/cma_me_emitter.hpp"
 #include "cic/gp/forest_map_elites.hpp"
 #include "cic/gp/vector_map_elites.hpp"
 #include "cic/io/archive_xml.hpp"
+#include "cic/io/settings_io.hpp"
 #include "cic/sim/controller.hpp"
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/robot.hpp"
@@ -41,6 +44,44 @@ void BM_ArchiveStepGait(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * 50);
 }
 BENCHMARK(BM_ArchiveStepGait);
+
+// The CMA-ME emitter: a CMA-ES generation of 50 over 37 parameters (pagmo's
+// cmaes, run twice: once to learn the points, once with their ranks).
+void BM_ArchiveStepCmaMe(benchmark::State& state) {
+    const cic::io::Settings s = cic::io::read_settings_string(
+        "<settings><Experiment><type>gait</type></Experiment><MapElites><enabled>1</enabled>"
+        "<emitter>cma-me</emitter><batch>50</batch><initial>100</initial><sigma>0.15</sigma></MapElites></settings>",
+        "bench.xml");
+    cic::gp::VectorMapElitesConfig c{kGrid, 37, 50, 100, 0.15};
+    cic::gp::MapElites<std::vector<double>> me({kGrid, 50, 100}, cic::gait::cma_me_emitter(s, c), 1);
+    cic::Rng rng(2);
+    auto evaluate = [&](const std::vector<std::vector<double>>& xs) { return fake(xs, rng); };
+    for (int i = 0; i < 40; ++i) me.step(evaluate, 1000);
+    for (auto _ : state) me.step(evaluate, 1000);
+    state.SetItemsProcessed(state.iterations() * 50);
+}
+BENCHMARK(BM_ArchiveStepCmaMe);
+
+// A resume's replay of a CMA-ME start 300 generations long (15,000
+// evaluations in batches of 50, the longest a start of the study can be).
+void BM_CmaMeResumeReplay(benchmark::State& state) {
+    const cic::io::Settings s = cic::io::read_settings_string(
+        "<settings><Experiment><type>gait</type></Experiment><MapElites><enabled>1</enabled>"
+        "<emitter>cma-me</emitter><batch>50</batch><initial>100</initial><sigma>0.15</sigma></MapElites></settings>",
+        "bench.xml");
+    cic::gp::VectorMapElitesConfig c{kGrid, 37, 50, 100, 0.15};
+    std::string text = "cma-me 1\nstart 1\nrestart 0\nx0";
+    for (int i = 0; i < 37; ++i) text += " 0.5";
+    cic::Rng rng(3);
+    for (int g = 0; g < 300; ++g) {
+        text += "\ngeneration";
+        for (int i = 0; i < 50; ++i) text += " " + std::to_string(rng.uniform());
+    }
+    text += "\n";
+    const auto e = cic::gait::cma_me_emitter(s, c);
+    for (auto _ : state) e.load(text);
+}
+BENCHMARK(BM_CmaMeResumeReplay)->Unit(benchmark::kMillisecond);
 
 void BM_ArchiveStepForest(benchmark::State& state) {
     cic::gp::GpConfig gp;

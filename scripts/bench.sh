@@ -71,12 +71,16 @@ def ms(name):
     b = runs[name]; unit = {"ns": 1e-6, "us": 1e-3, "ms": 1.0}[b["time_unit"]]
     return b["cpu_time"] * unit
 gait, forest = ms("BM_ArchiveStepGait") / 50, ms("BM_ArchiveStepForest") / 50
+cmame, replay = ms("BM_ArchiveStepCmaMe") / 50, ms("BM_CmaMeResumeReplay")
 ckpt, phys = ms("BM_ArchiveCheckpoint") / 50, ms("BM_PhysicsEvaluationDutyFactors")
 print(f"  vary + offer, gait vector (37):   {gait*1000:8.2f} us")
 print(f"  vary + offer, 3-tree genotype:    {forest*1000:8.2f} us")
+print(f"  ask + offer + tell, CMA-ME (37):  {cmame*1000:8.2f} us")
 print(f"  checkpoint (602 elites) / 50:     {ckpt*1000:8.2f} us")
 print(f"  physics, R1 15 s, duty factors:   {phys:8.2f} ms")
 print(f"  archive = {100*(forest+ckpt)/phys:.2f}% of physics (HyperGP, checkpoint every batch)")
+print(f"  archive = {100*(cmame+ckpt)/phys:.2f}% of physics (CMA-ME, checkpoint every batch)")
+print(f"  CMA-ME resume, replay of a 300-generation start: {replay:8.1f} ms, once")
 '
 if [ "$deap" != 0 ]; then
   echo
