@@ -218,7 +218,8 @@ gp::Emitter<std::vector<double>> halfway(const io::Settings&, const gp::VectorMa
     return e;
 }
 
-const experiments::EmitterRegistrar emitter_registrar{{"registry-halfway", "toward the centre", {}, &halfway, {}}};
+const experiments::EmitterRegistrar emitter_registrar{
+    {.name = "registry-halfway", .doc = "toward the centre", .vector = &halfway}};
 
 io::Settings map_elites_settings(const std::string& type, const std::string& emitter) {
     return io::read_settings_string("<settings><Experiment><type>" + type +
