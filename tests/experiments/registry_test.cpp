@@ -219,7 +219,7 @@ gp::Emitter<std::vector<double>> halfway(const io::Settings&, const gp::VectorMa
 }
 
 const experiments::EmitterRegistrar emitter_registrar{
-    {.name = "registry-halfway", .doc = "toward the centre", .vector = &halfway}};
+    {.name = "registry-halfway", .doc = "toward the centre", .forest = {}, .vector = &halfway, .check = {}}};
 
 io::Settings map_elites_settings(const std::string& type, const std::string& emitter) {
     return io::read_settings_string("<settings><Experiment><type>" + type +
