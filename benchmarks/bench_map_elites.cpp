@@ -45,14 +45,19 @@ void BM_ArchiveStepGait(benchmark::State& state) {
 }
 BENCHMARK(BM_ArchiveStepGait);
 
-// The CMA-ME emitter: a CMA-ES generation of 50 over 37 parameters (pagmo's
-// cmaes, run twice: once to learn the points, once with their ranks).
-void BM_ArchiveStepCmaMe(benchmark::State& state) {
-    const cic::io::Settings s = cic::io::read_settings_string(
+// A gait run's settings with the CMA-ME emitter, batches of 50, sigma 0.15.
+cic::io::Settings cma_me_settings() {
+    return cic::io::read_settings_string(
         "<settings><Experiment><type>gait</type></Experiment><MapElites><enabled>1</enabled>"
         "<emitter>cma-me</emitter><batch>50</batch><initial>100</initial><sigma>0.15</sigma></MapElites></settings>",
         "bench.xml");
-    cic::gp::VectorMapElitesConfig c{kGrid, 37, 50, 100, 0.15};
+}
+
+// The CMA-ME emitter: a CMA-ES generation of 50 over 37 parameters (pagmo's
+// cmaes, run twice: once to learn the points, once with their ranks).
+void BM_ArchiveStepCmaMe(benchmark::State& state) {
+    const cic::io::Settings s = cma_me_settings();
+    const cic::gp::VectorMapElitesConfig c{kGrid, 37, 50, 100, 0.15};
     cic::gp::MapElites<std::vector<double>> me({kGrid, 50, 100}, cic::gait::cma_me_emitter(s, c), 1);
     cic::Rng rng(2);
     auto evaluate = [&](const std::vector<std::vector<double>>& xs) { return fake(xs, rng); };
@@ -65,11 +70,8 @@ BENCHMARK(BM_ArchiveStepCmaMe);
 // A resume's replay of a CMA-ME start 300 generations long (15,000
 // evaluations in batches of 50, the longest a start of the study can be).
 void BM_CmaMeResumeReplay(benchmark::State& state) {
-    const cic::io::Settings s = cic::io::read_settings_string(
-        "<settings><Experiment><type>gait</type></Experiment><MapElites><enabled>1</enabled>"
-        "<emitter>cma-me</emitter><batch>50</batch><initial>100</initial><sigma>0.15</sigma></MapElites></settings>",
-        "bench.xml");
-    cic::gp::VectorMapElitesConfig c{kGrid, 37, 50, 100, 0.15};
+    const cic::io::Settings s = cma_me_settings();
+    const cic::gp::VectorMapElitesConfig c{kGrid, 37, 50, 100, 0.15};
     std::string text = "cma-me 1\nstart 1\nrestart 0\nx0";
     for (int i = 0; i < 37; ++i) text += " 0.5";
     cic::Rng rng(3);

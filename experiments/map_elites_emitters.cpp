@@ -31,8 +31,7 @@ std::vector<EmitterKind>& kinds() {
 }
 
 const EmitterKind& find(const io::Settings& s, io::ExperimentFamily family) {
-    const std::string_view name = s.map_elites.emitter == "auto" ? io::default_emitter(family)
-                                                                  : std::string_view(s.map_elites.emitter);
+    const std::string_view name = io::resolved_emitter(s);
     for (const auto& k : kinds())
         if (k.name == name && (family == io::ExperimentFamily::Gait ? bool(k.vector) : bool(k.forest))) return k;
     throw std::invalid_argument("map-elites: no " + std::string(io::to_string(family)) + "-family emitter named '" +

@@ -194,8 +194,7 @@ void check_compatible(const ArchiveFile& a, const Settings& s, const gp::GridSpe
         throw InputError("the archive's descriptor is " + a.descriptor + ", the settings ask for " +
                              sim::to_string(s.map_elites.descriptor),
                          file);
-    const std::string emitter = s.map_elites.emitter == "auto" ? std::string(default_emitter(family_of(s)))
-                                                               : s.map_elites.emitter;
+    const std::string emitter(resolved_emitter(s));
     if (!a.emitter.empty() && a.emitter != emitter)
         throw InputError("the archive holds the state of a " + a.emitter + " emitter, the settings vary elites with " +
                              emitter + " (MapElites.emitter)",

@@ -58,6 +58,10 @@ std::string_view default_emitter(ExperimentFamily family) {
     return family == ExperimentFamily::Gait ? "gaussian" : "gp";
 }
 
+std::string_view resolved_emitter(const Settings& s) {
+    return s.map_elites.emitter == "auto" ? default_emitter(family_of(s)) : std::string_view(s.map_elites.emitter);
+}
+
 void register_emitter_name(EmitterName name) {
     if (!detail::valid_registered_name(name.name) || name.name == "auto")
         throw std::invalid_argument("emitter name '" + name.name +

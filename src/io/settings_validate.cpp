@@ -153,8 +153,7 @@ void validate(const Settings& s, const Locations& locs) {
                       "-family solutions, and a " + std::string(to_string(family)) +
                       "-family run has other ones (allowed here: " + allowed + ")");
     }
-    const bool gp_emitter = family_of(s) == ExperimentFamily::HyperGP &&
-                            (s.map_elites.emitter == "auto" || s.map_elites.emitter == "gp");
+    const bool gp_emitter = family_of(s) == ExperimentFamily::HyperGP && resolved_emitter(s) == "gp";
     c.require(!s.map_elites.enabled || !gp_emitter || s.gp.crossover_rate + s.gp.mutation_rate > 0,
               {"GP.crossoverRate", "GP.mutationRate", "MapElites.enabled"},
               "MAP-Elites varies elites by crossover and mutation: their rates cannot both be 0");

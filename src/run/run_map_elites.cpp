@@ -42,10 +42,6 @@ struct Family {
     std::function<std::string()> session_note = [] { return std::string(); };
 };
 
-std::string emitter_name(const io::Settings& s) {
-    return s.map_elites.emitter == "auto" ? std::string(io::default_emitter(io::family_of(s))) : s.map_elites.emitter;
-}
-
 template <class Solution>
 io::ArchiveFile checkpoint_of(const gp::MapElites<Solution>& me, const Family<Solution>& family,
                               const io::Settings& s) {
@@ -60,7 +56,7 @@ io::ArchiveFile checkpoint_of(const gp::MapElites<Solution>& me, const Family<So
     a.descriptor = sim::to_string(s.map_elites.descriptor);
     a.grid = me.archive().spec();
     a.emitter_state = me.emitter_state();
-    if (!a.emitter_state.empty()) a.emitter = emitter_name(s);
+    if (!a.emitter_state.empty()) a.emitter = io::resolved_emitter(s);
     for (const auto& [cell, e] : me.archive().elites()) {
         io::ArchiveElite out;
         out.cell = cell;
@@ -247,7 +243,7 @@ int run_gait_family(PreparedRun prepared, const RunOptions& opt, RunConsole& con
     family.describe = [&](const std::vector<double>& x) { return "gait: " + setup.describe(x); };
     console.say(fmt::format("cic {}: gait experiment by MAP-Elites ({} parameters, {} emitter, {} descriptor, {} "
                             "cells, batches of {}, budget {} evaluations), seed {}, output {}",
-                            CIC_VERSION, setup.dimension(), emitter_name(s), sim::to_string(descriptor),
+                            CIC_VERSION, setup.dimension(), io::resolved_emitter(s), sim::to_string(descriptor),
                             me.archive().cells(), vc.batch, s.map_elites.evaluations, s.experiment.seed,
                             opt.run_dir.string()));
     return loop(me, family, prepared, opt, console);
@@ -293,7 +289,7 @@ int run_hypergp_family(PreparedRun prepared, const RunOptions& opt, RunConsole& 
     family.session_note = [&] { return experiment->session_note(); };
     console.say(fmt::format("cic {}: {} experiment by MAP-Elites ({} emitter, {} descriptor, {} cells, batches of {}, "
                             "budget {} evaluations), seed {}, output {}",
-                            CIC_VERSION, s.experiment.type, emitter_name(s), sim::to_string(s.map_elites.descriptor),
+                            CIC_VERSION, s.experiment.type, io::resolved_emitter(s), sim::to_string(s.map_elites.descriptor),
                             me.archive().cells(), s.map_elites.batch, s.map_elites.evaluations, s.experiment.seed,
                             opt.run_dir.string()));
     return loop(me, family, prepared, opt, console);

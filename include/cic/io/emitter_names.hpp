@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cic/io/experiment_types.hpp"
+#include "cic/io/settings.hpp"
 
 namespace cic::io {
 
@@ -23,6 +24,8 @@ const std::vector<EmitterName>& emitter_names();
 const EmitterName* find_emitter_name(std::string_view name);
 // The emitter `auto` stands for in a family: gp (HyperGP) or gaussian (Gait).
 std::string_view default_emitter(ExperimentFamily family);
+// The emitter the settings vary elites with: MapElites.emitter, `auto` resolved.
+std::string_view resolved_emitter(const Settings& s);
 // Adds a name; the MapElites.emitter key accepts it from then on. Register
 // before reading settings. Throws std::invalid_argument for a bad or taken
 // name, or a family other than HyperGP and Gait.
