@@ -23,7 +23,8 @@
 #             (walk-tune-hypergp.xml) and CMA-ES with IPOP restarts on the gait
 #             and on the CPG (walk-tune-cmaes.xml); results/walk-tune.md
 #   walk      issue 21's comparison at 2,500 evaluations, seeds 1..10, on R0,
-#             R1, R2, R1 6 legs and the cross (walk-2500-*.xml); results/walk.md
+#             R1, R2, R1 6 legs and the cross (walk-2500-*.xml); results/walk.md,
+#             and results/walk-winners.md with the settings/r{0,1,2}_best*.xml it ships
 #   walk-long the same at 15,000 evaluations, R1 and R2, for HyperGP's old best
 #             and the tuning stage's three strongest (walk-15000-*.xml)
 # Tables and plots go to experiments/baselines/results/.
@@ -198,6 +199,9 @@ for stage in "${stages[@]}"; do
       strips "${walk_studies[@]}"
       "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" ledger
       "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" compare > "$HERE/results/walk.md"
+      # The shipped settings/r{0,1,2}_best*.xml follow the winners (docs/baselines.md, "Shipped settings").
+      "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" winners > "$HERE/results/walk-winners.md"
+      CIC="$CIC" "${PYTHON:-python3}" "$ROOT/scripts/ship-winners.py"
       ;;
   esac
 done

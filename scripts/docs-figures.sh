@@ -17,11 +17,13 @@ mkdir -p "$OUT"
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 
-# A study: HyperGP's best configuration on R0, two tournament sizes, three seeds, 8 generations.
+# A study: HyperGP's best configuration before issue 21, on R0, two tournament sizes, three
+# seeds, 8 generations.
 cat > "$WORK/figures.xml" <<XML
 <sweep name="figures">
-  <base>$ROOT/settings/r0_best.xml</base>
+  <base>$ROOT/experiments/baselines/bases/hypergp-best.xml</base>
   <output>$WORK/study</output>
+  <set>Simulator.robot_type=0</set>
   <set>Control.maximumIterations=8</set>
   <set>GP.generatedPopulationSize=20</set>
   <set>Simulator.sample_to=8</set>

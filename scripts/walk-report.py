@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The tables of docs/baselines.md, "Walking like the best" (issue 21).
 
-    scripts/walk-report.py [--studies DIR] [--results DIR] tune|ledger|compare
+    scripts/walk-report.py [--studies DIR] [--results DIR] tune|ledger|compare|winners
 
 DIR (default runs/baselines) holds the study folders that scripts/baselines.sh
 writes; --results (default experiments/baselines/results) holds each study's
@@ -30,6 +30,16 @@ marked with *. Evaluations are the counts index.csv records.
            over every comparison of the table at once, A12 = P(HyperGP run >
            CMA-ES run) with a 95% bootstrap interval (2,000 resamples, seed 1);
            and the goal per cell.
+  winners  which configuration each of settings/r{0,1,2}_best.xml and
+           r{0,1,2}_best_hypergp.xml ships, by a rule fixed before R2 at 15,000
+           was in: on each robot, at the largest budget where every method run
+           there has 10 runs, the method with the highest median replaces
+           HyperGP's old best (hgp-best, the incumbent) only if it beats it,
+           two-sided Mann-Whitney p (Holm over the distinct challengers of the
+           table) < 0.05; _best draws from every method, _best_hypergp from the HyperGP
+           ones. Writes results/walk-winners.csv, which the test
+           SweepFile.ShippedBestSettingsAreTheComparisonWinners holds the shipped
+           files to, and prints the table.
 """
 import argparse
 import csv
@@ -43,7 +53,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 ap.add_argument("--studies", default="runs/baselines")
 ap.add_argument("--results", default=str(ROOT / "experiments" / "baselines" / "results"))
-ap.add_argument("mode", choices=["tune", "ledger", "compare"])
+ap.add_argument("mode", choices=["tune", "ledger", "compare", "winners"])
 args = ap.parse_args()
 STUDIES, RESULTS = pathlib.Path(args.studies), pathlib.Path(args.results)
 
@@ -327,9 +337,70 @@ def compare():
     print()
 
 
+WINNER_FIELDS = ["robot", "file", "budget", "study", "config", "n", "median", "incumbent_median", "p", "p_holm"]
+
+
+def winners():
+    try:
+        import scipy  # noqa: F401  (the rule needs its p-values: no winner without them)
+    except ImportError:
+        fail("winners needs scipy (Debian's python3-scipy): the rule decides by Mann-Whitney p")
+    ledger = merged_ledger()
+    picks = []   # [robot, file, budget, suffix, n, median, incumbent median, p]
+    for robot in ("R0", "R1", "R2"):
+        cells = {}
+        for budget in (2500, 15000):
+            cell = {}
+            for _, suffix, is_hgp in METHODS:
+                found = ledger_runs(ledger, f"walk-{budget}-{suffix}")
+                if found and robot in found:
+                    cell[suffix] = ([r["score"] for r in found[robot]], is_hgp)
+            if cell and "hgp-best" in cell and all(len(v) == 10 for v, _ in cell.values()):
+                cells[budget] = cell
+        if not cells:
+            fail(f"{robot}: no budget where every method has 10 runs")
+        budget = max(cells)
+        cell = cells[budget]
+        incumbent = cell["hgp-best"][0]
+        for file, pool in ((f"settings/{robot.lower()}_best.xml", cell),
+                           (f"settings/{robot.lower()}_best_hypergp.xml", {k: v for k, v in cell.items() if v[1]})):
+            top = max(pool, key=lambda k: st.median(pool[k][0]))
+            x = pool[top][0]
+            p = None if top == "hgp-best" else mann_whitney_p(x, incumbent)
+            picks.append([robot, file, budget, top, len(x), st.median(x), st.median(incumbent), p])
+    # One test per (robot, challenger): _best and _best_hypergp may name the same one.
+    tests = sorted({(t[0], t[3]): t[7] for t in picks if t[7] is not None}.items())
+    holm_of = dict(zip([k for k, _ in tests], holm([p for _, p in tests])))
+    adjusted = [holm_of.get((t[0], t[3])) for t in picks]
+    rows = []
+    print("| file | budget | highest median | median | HyperGP's old best | p | p (Holm) | ships |")
+    print("|---|---|---|---|---|---|---|---|")
+    for (robot, file, budget, top, n, med, inc, p), p_holm in zip(picks, adjusted):
+        wins = top == "hgp-best" or (p_holm < 0.05 and med > inc)
+        chosen = top if wins else "hgp-best"
+        label = {suffix: lab for lab, suffix, _ in METHODS}
+        ptext = "–" if p is None else f"{p:.3g}"
+        htext = "–" if p_holm is None else f"{p_holm:.3g}"
+        print(f"| `{file}` | {budget:,} | {label[top]} | {med:.2f} | {inc:.2f} | {ptext} | {htext} | {label[chosen]} |")
+        cm = med if wins else inc
+        rows.append({"robot": robot, "file": file, "budget": budget, "study": f"walk-{budget}-{chosen}",
+                     "config": robot, "n": n, "median": f"{cm:.4f}", "incumbent_median": f"{inc:.4f}",
+                     "p": "" if p is None else f"{p:.4g}", "p_holm": "" if p_holm is None else f"{p_holm:.4g}"})
+    path = RESULTS / "walk-winners.csv"
+    tmp = path.with_suffix(".csv.tmp")
+    with open(tmp, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=WINNER_FIELDS, lineterminator="\n")
+        w.writeheader()
+        w.writerows(rows)
+    tmp.replace(path)
+    print(f"\nwalk-report.py: the shipped winners in {path}", file=sys.stderr)
+
+
 if args.mode == "tune":
     tune()
 elif args.mode == "ledger":
     write_ledger()
+elif args.mode == "winners":
+    winners()
 else:
     compare()

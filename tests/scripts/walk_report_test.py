@@ -2,7 +2,9 @@
 """Scripts.WalkReportLedger: scripts/walk-report.py keeps the comparison's runs
 across sittings (results/walk-runs.csv): a run whose folder is gone keeps its
 row, a run found again replaces its row, a new run is added, compare reads the
-merged rows, and a broken ledger is refused with FILE:LINE and exit 2.
+merged rows, and a broken ledger is refused with FILE:LINE and exit 2; winners
+replaces HyperGP's old best only with a method that beats it after Holm, at the
+largest budget where every method has 10 runs.
 
     walk_report_test.py SOURCE_DIR WORK_DIR
 """
@@ -82,5 +84,41 @@ r = run("ledger")
 check(r.returncode == 2, f"a broken ledger was accepted: {r.returncode}")
 check(f"{results / 'walk-runs.csv'}:" in r.stderr and "best_ever" in r.stderr, f"message: {r.stderr}")
 check("nine" in (results / "walk-runs.csv").read_text(), "a refused ledger was rewritten")
+# winners: a ledger of its own. R0: HyperGP-gait far ahead (replaces the old best in both
+# files); R1: CMA-ES's median higher but not shown better (the old best stays); R2: the
+# 15,000 cell lacks a run, so 2,500 decides, where CMA-ES is far ahead.
+shutil.rmtree(studies)
+with open(results / "walk-runs.csv", "w", newline="") as f:
+    w = csv.DictWriter(f, fieldnames=FIELDS, lineterminator="\n")
+    w.writeheader()
+    cells = [("walk-2500-hgp-best", "R0", range(10)), ("walk-2500-hgp-gait", "R0", range(20, 30)),
+             ("walk-2500-cmaes-gait", "R0", range(5, 15)),
+             ("walk-2500-hgp-best", "R1", range(10)), ("walk-2500-cmaes-gait", "R1", range(1, 11)),
+             ("walk-2500-hgp-best", "R2", range(10)), ("walk-2500-cmaes-gait", "R2", range(40, 50)),
+             ("walk-15000-hgp-best", "R2", range(9)), ("walk-15000-cmaes-gait", "R2", range(10))]
+    for study_name, robot, scores in cells:
+        for seed, score in enumerate(scores, 1):
+            w.writerow({"study": study_name, "run_dir": f"runs/{robot}/s{seed}", "config": robot, "seed": seed,
+                        "best_ever": score, "evaluations": "", "wall_seconds": "", "fitness": score,
+                        "dominant_hz": "1.0", "mean_height": "0.8", "min_height": "0.5", "final_up": "1",
+                        "flipped": "0", "shaking": "0", "raw_fitness": score})
+r = run("winners")
+try:
+    import scipy  # noqa: F401
+except ImportError:   # no p-values, no winners: refused plainly, nothing written
+    check(r.returncode == 2 and "scipy" in r.stderr, f"winners without scipy: {r.returncode} {r.stderr}")
+    check(not (results / "walk-winners.csv").exists(), "winners without scipy wrote its CSV")
+    shutil.rmtree(work)
+    print("walk_report_test: ok (winners' rule not checked: no scipy)")
+    sys.exit(0)
+check(r.returncode == 0, f"winners failed: {r.stderr}")
+with open(results / "walk-winners.csv", newline="") as f:
+    won = {row["file"]: (row["study"], row["config"]) for row in csv.DictReader(f)}
+check(won == {"settings/r0_best.xml": ("walk-2500-hgp-gait", "R0"),
+              "settings/r0_best_hypergp.xml": ("walk-2500-hgp-gait", "R0"),
+              "settings/r1_best.xml": ("walk-2500-hgp-best", "R1"),
+              "settings/r1_best_hypergp.xml": ("walk-2500-hgp-best", "R1"),
+              "settings/r2_best.xml": ("walk-2500-cmaes-gait", "R2"),
+              "settings/r2_best_hypergp.xml": ("walk-2500-hgp-best", "R2")}, f"winners: {won}\n{r.stdout}")
 shutil.rmtree(work)
 print("walk_report_test: ok")

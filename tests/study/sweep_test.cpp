@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <csignal>
 #include <chrono>
+#include <sstream>
 #include <thread>
 
 #include <sys/wait.h>
@@ -122,21 +123,53 @@ TEST(SweepFile, ShippedStudiesAreValid) {
     fs::remove_all(dir);
 }
 
-// settings/r1_best.xml is the configuration that won the search of
-// docs/baselines.md (stage B's "threshold0.05" variant of search-b.xml), nothing
-// more and nothing less: the shipped file and the study that chose it agree.
-TEST(SweepFile, ShippedBestSettingsAreTheSearchWinner) {
-    const fs::path root = CIC_SOURCE_DIR;
-    const app::SweepPlan plan = app::read_sweep_file(root / "experiments" / "baselines" / "search-b.xml");
+// The settings of the seed-1 run of `config` in a sweep file, as the sweep runs
+// it, with the base's seed: what a shipped settings file must equal.
+std::string swept_settings(const fs::path& sweep, const std::string& config) {
+    const app::SweepPlan plan = app::read_sweep_file(sweep);
     const auto tasks = plan.tasks();
-    const auto winner = std::find_if(tasks.begin(), tasks.end(),
-                                     [&](const app::SweepTask& t) { return plan.configs[t.config].name == "threshold0.05"; });
-    ASSERT_NE(winner, tasks.end());
-    std::vector<std::string> overrides = plan.overrides(*winner);
-    ASSERT_EQ(overrides.back().rfind("Experiment.seed=", 0), 0u);
-    overrides.pop_back();   // the tuning seed; the shipped file keeps the base's
-    EXPECT_EQ(io::write_settings(io::load_settings(root / "settings" / "r1_best.xml", {})),
-              io::write_settings(io::load_settings(plan.base, overrides)));
+    const auto task = std::find_if(tasks.begin(), tasks.end(),
+                                   [&](const app::SweepTask& t) { return plan.configs[t.config].name == config; });
+    if (task == tasks.end()) throw std::runtime_error(sweep.string() + " has no configuration " + config);
+    std::vector<std::string> overrides = plan.overrides(*task);
+    if (overrides.empty() || overrides.back().rfind("Experiment.seed=", 0) != 0)
+        throw std::runtime_error(sweep.string() + ": the last override is not the seed");
+    overrides.pop_back();
+    return io::write_settings(io::load_settings(plan.base, overrides));
+}
+
+// experiments/baselines/bases/hypergp-best.xml, which every HyperGP study of
+// issue 21 starts from, is the configuration that won the search of
+// docs/baselines.md (stage B's "threshold0.05" variant of search-b.xml).
+TEST(SweepFile, FrozenHyperGpBaseIsTheSearchWinner) {
+    const fs::path root = CIC_SOURCE_DIR;
+    EXPECT_EQ(io::write_settings(io::load_settings(root / "experiments" / "baselines" / "bases" / "hypergp-best.xml", {})),
+              swept_settings(root / "experiments" / "baselines" / "search-b.xml", "threshold0.05"));
+}
+
+// settings/r{0,1,2}_best.xml and r{0,1,2}_best_hypergp.xml ship the winners of
+// issue 21's comparison: each is exactly the configuration that
+// experiments/baselines/results/walk-winners.csv (scripts/walk-report.py
+// winners) names, as its sweep ran it. scripts/ship-winners.py writes them.
+TEST(SweepFile, ShippedBestSettingsAreTheComparisonWinners) {
+    const fs::path root = CIC_SOURCE_DIR;
+    std::istringstream csv(read_text(root / "experiments" / "baselines" / "results" / "walk-winners.csv"));
+    std::string line;
+    ASSERT_TRUE(std::getline(csv, line));
+    ASSERT_EQ(line.rfind("robot,file,budget,study,config,", 0), 0u) << line;
+    int checked = 0;
+    while (std::getline(csv, line)) {
+        std::vector<std::string> cells;
+        std::istringstream row(line);
+        for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+        ASSERT_GE(cells.size(), 5u) << line;
+        const std::string& file = cells[1];
+        EXPECT_EQ(io::write_settings(io::load_settings(root / file, {})),
+                  swept_settings(root / "experiments" / "baselines" / (cells[3] + ".xml"), cells[4]))
+            << file << " is not " << cells[3] << " " << cells[4] << ": rerun scripts/ship-winners.py";
+        ++checked;
+    }
+    EXPECT_EQ(checked, 6);   // _best and _best_hypergp for R0, R1 and R2
 }
 
 // Each edit of `good` (find, replace) makes `cic sweep` exit 2 with the message
