@@ -173,15 +173,19 @@ def merged_ledger():
                                                   int(r["seed"])))
 
 
-def write_ledger():
-    rows = merged_ledger()
-    path = RESULTS / "walk-runs.csv"
+def write_csv_atomically(path, fields, rows):
     tmp = path.with_suffix(".csv.tmp")
     with open(tmp, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=LEDGER_FIELDS, lineterminator="\n")
+        w = csv.DictWriter(f, fieldnames=fields, lineterminator="\n")
         w.writeheader()
         w.writerows(rows)
     tmp.replace(path)
+
+
+def write_ledger():
+    rows = merged_ledger()
+    path = RESULTS / "walk-runs.csv"
+    write_csv_atomically(path, LEDGER_FIELDS, rows)
     print(f"walk-report.py: {len(rows)} runs in {path}", file=sys.stderr)
 
 
@@ -260,6 +264,41 @@ def tune():
         print()
 
 
+def compute(ledger):
+    """Run time summed over runs: the comparison from the ledger (a run made before the
+    ledger kept one row per run counts at its study's mean, and is said so), the tuning
+    stage from its `cic compare` tables (runs x mean wall seconds per configuration)."""
+    print("## Compute\n")
+    print("Wall seconds of each run summed (one run = one process with its worker processes, on the "
+          "2-core machine, usually beside other runs, which inflates the figures).\n")
+    print("| study | runs | hours | of which estimated |")
+    print("|---|---|---|---|")
+    total = estimated_total = 0.0
+    for study in TUNING:
+        path = RESULTS / f"{study}-configs.csv"
+        if not path.exists():
+            continue
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+        n = sum(int(r["runs"]) for r in rows)
+        hours = sum(int(r["runs"]) * float(r["wall_seconds_mean"]) for r in rows) / 3600
+        total += hours
+        print(f"| {study} | {n} | {hours:.1f} | – |")
+    for study in comparison_studies():
+        rows = [r for r in ledger if r["study"] == study]
+        if not rows:
+            continue
+        known = [float(r["wall_seconds"]) for r in rows if r["wall_seconds"]]
+        missing = len(rows) - len(known)
+        estimate = missing * (st.mean(known) if known else 0.0) / 3600
+        hours = sum(known) / 3600 + estimate
+        total += hours
+        estimated_total += estimate
+        print(f"| {study} | {len(rows)} | {hours:.1f} | {estimate:.1f} ({missing} runs) |" if missing
+              else f"| {study} | {len(rows)} | {hours:.1f} | – |")
+    print(f"| **total** | | **{total:.1f}** | {estimated_total:.1f} |\n")
+
+
 def compare():
     print("# Walking like the best: the comparison\n")
     print(f"Made by `scripts/walk-report.py compare` from `results/walk-runs.csv` (one row per finished run, kept "
@@ -321,6 +360,7 @@ def compare():
         print("Evaluations \"not recorded\": runs made before `results/walk-runs.csv` kept one row per run "
               "(R1 and R2 at 2,500, HyperGP's best at 15,000 on R1); their ranges are in the first table "
               "(`git show 075acaa:experiments/baselines/results/walk.md`).\n")
+    compute(ledger)
     print("## The goal, cell by cell\n")
     print("Some HyperGP method beats the best CMA-ES median with p (Holm) < 0.05 at 15,000 evaluations, and is not "
           "significantly worse at 2,500.\n")
@@ -387,12 +427,7 @@ def winners():
                      "config": robot, "n": n, "median": f"{cm:.4f}", "incumbent_median": f"{inc:.4f}",
                      "p": "" if p is None else f"{p:.4g}", "p_holm": "" if p_holm is None else f"{p_holm:.4g}"})
     path = RESULTS / "walk-winners.csv"
-    tmp = path.with_suffix(".csv.tmp")
-    with open(tmp, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=WINNER_FIELDS, lineterminator="\n")
-        w.writeheader()
-        w.writerows(rows)
-    tmp.replace(path)
+    write_csv_atomically(path, WINNER_FIELDS, rows)
     print(f"\nwalk-report.py: the shipped winners in {path}", file=sys.stderr)
 
 
