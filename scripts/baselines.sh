@@ -27,6 +27,11 @@
 #             and results/walk-winners.md with the settings/r{0,1,2}_best*.xml it ships
 #   walk-long the same at 15,000 evaluations, R1 and R2, for HyperGP's old best
 #             and the tuning stage's three strongest (walk-15000-*.xml)
+#   walk-ledger run nothing: assess the finished runs of every comparison study
+#             under --output and keep them in results/walk-runs.csv, cheaply
+#             (no plots, strips or winners). Run it, and commit the ledger, after
+#             each run: run folders are never committed, and a sitting's may be
+#             gone by the next one.
 # Tables and plots go to experiments/baselines/results/.
 #   --jobs N        runs at a time (default 2)
 #   CIC_WALK_METHODS="hgp-cpg cmaes-gait"  walk stages: only these methods
@@ -52,12 +57,12 @@ while [ $# -gt 0 ]; do
     --output) output="$2"; shift 2 ;;
     --summary-only) summary_only=1; shift ;;
     --config) only+=(--config "$2"); shift 2 ;;
-    -h|--help) sed -n '2,37p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    search|compare|long|gap|walk-tune|walk|walk-long) stages+=("$1"); shift ;;
+    -h|--help) sed -n '2,/^set /p' "$0" | grep '^#' | sed 's/^# \{0,1\}//'; exit 0 ;;
+    search|compare|long|gap|walk-tune|walk|walk-long|walk-ledger) stages+=("$1"); shift ;;
     *) echo "baselines.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-[ ${#stages[@]} -gt 0 ] || { echo "baselines.sh: name a stage: search, compare, long, gap, walk-tune, walk, walk-long (see --help)" >&2; exit 2; }
+[ ${#stages[@]} -gt 0 ] || { echo "baselines.sh: name a stage: search, compare, long, gap, walk-tune, walk, walk-long, walk-ledger (see --help)" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "baselines.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
 
 mkdir -p "$HERE/results"
@@ -203,11 +208,19 @@ for stage in "${stages[@]}"; do
       "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" winners > "$HERE/results/walk-winners.md"
       CIC="$CIC" "${PYTHON:-python3}" "$ROOT/scripts/ship-winners.py"
       ;;
+    walk-ledger)
+      # Only the studies that have a folder here: --index-only would make one for the others.
+      for f in "$HERE"/walk-[0-9]*-*.xml; do
+        s=$(basename "$f" .xml)
+        [ -f "$output/$s/index.csv" ] && summarise "$s"
+      done
+      "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" ledger
+      ;;
   esac
 done
 # results/report.md covers the stages before issue 21 (walk* stages have their own tables): only
 # those stages rewrite it, so a walk stage on a machine without their run folders leaves it be.
-if printf '%s\n' "${stages[@]}" | grep -qvx 'walk-tune\|walk\|walk-long'; then
+if printf '%s\n' "${stages[@]}" | grep -qvx 'walk-tune\|walk\|walk-long\|walk-ledger'; then
   "${PYTHON:-python3}" "$ROOT/scripts/baselines-report.py" --studies "$output" > "$HERE/results/report.md"
   echo "baselines.sh: tables and plots in $HERE/results (summary: results/report.md)" >&2
 else

@@ -4,7 +4,8 @@ across sittings (results/walk-runs.csv): a run whose folder is gone keeps its
 row, a run found again replaces its row, a new run is added, compare reads the
 merged rows, and a broken ledger is refused with FILE:LINE and exit 2; winners
 replaces HyperGP's old best only with a method that beats it after Holm, at the
-largest budget where every method has 10 runs.
+largest budget where every method has 10 runs; compare reads nothing from a
+cell until every method of its budget has its 10 runs there.
 
     walk_report_test.py SOURCE_DIR WORK_DIR
 """
@@ -120,5 +121,17 @@ check(won == {"settings/r0_best.xml": ("walk-2500-hgp-gait", "R0"),
               "settings/r1_best_hypergp.xml": ("walk-2500-hgp-best", "R1"),
               "settings/r2_best.xml": ("walk-2500-cmaes-gait", "R2"),
               "settings/r2_best_hypergp.xml": ("walk-2500-hgp-best", "R2")}, f"winners: {won}\n{r.stdout}")
+# compare on the same ledger: a cell is open until every method run at its budget has its
+# 10 runs there (R1 and R2 at 2,500 lack HyperGP-gait; R2 at 15,000 lacks a run).
+r = run("compare")
+check(r.returncode == 0, f"compare failed: {r.stderr}")
+check("- 2,500, R0: met by HyperGP-gait" in r.stdout, f"R0's cell:\n{r.stdout}")
+check("- 2,500, R1: open, 20 of 30 runs (CMA-ES gait, IPOP 10, HyperGP, best configuration 10, HyperGP-gait 0)"
+      in r.stdout, f"R1's open cell:\n{r.stdout}")
+check("- 15,000, R2: open, 19 of 20 runs (CMA-ES gait, IPOP 10, HyperGP, best configuration 9)" in r.stdout,
+      f"R2's open cell:\n{r.stdout}")
+check("| R2 | HyperGP, best configuration | 4.00 | CMA-ES gait, IPOP | 4.50 |" in r.stdout and
+      "cell open: n = 9 so far |" in r.stdout, f"an open cell's test was read:\n{r.stdout}")
+check("The goal is open" in r.stdout, f"goal line:\n{r.stdout}")
 shutil.rmtree(work)
 print("walk_report_test: ok")
