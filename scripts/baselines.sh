@@ -28,8 +28,9 @@
 #   walk-long the same at 15,000 evaluations, R1 and R2, for HyperGP's old best
 #             and the tuning stage's three strongest (walk-15000-*.xml)
 #   walk-ledger run nothing: assess the finished runs of every comparison study
-#             under --output and keep them in results/walk-runs.csv, cheaply
-#             (no plots, strips or winners). Run it, and commit the ledger, after
+#             under --output, keep them in results/walk-runs.csv and each
+#             study's best run per robot in results/best/ (replayable), cheaply:
+#             no plots, strips or winners. Run it, and commit results/, after
 #             each run: run folders are never committed, and a sitting's may be
 #             gone by the next one.
 # Tables and plots go to experiments/baselines/results/.
@@ -127,6 +128,47 @@ strips() {   # STUDY...
     done
   done
 }
+# The comparison's best run of each study and robot (walk-report.py best: the highest score in
+# the ledger), kept replayable in results/best/STUDY/ROBOT: its settings.xml and the population
+# file that holds its best individual, as population.xml (`cic view`, `assess`, `trace` and
+# screenshot-strip.sh take the folder). Copied from the run folder while it is here; a best run
+# whose folder is gone keeps what an earlier sitting kept. source.txt names the run and score.
+keep_best() {
+  local study config run_dir score dest kept src missing=0
+  while IFS=, read -r study config run_dir score; do
+    dest="$HERE/results/best/$study/$config"
+    kept="$run_dir $score"
+    [ -f "$dest/source.txt" ] && [ "$(cat "$dest/source.txt")" = "$kept" ] && continue
+    if [ ! -f "$output/$study/$run_dir/settings.xml" ]; then
+      # Kept from another run: it was the best once, and the best's own folder is gone.
+      [ -f "$dest/source.txt" ] && echo "baselines.sh: results/best/$study/$config keeps" \
+        "$(cat "$dest/source.txt"); the best run, $run_dir ($score), is not in $output" >&2
+      missing=$((missing + 1))
+      continue
+    fi
+    rm -rf "$dest.tmp" && mkdir -p "$dest.tmp"
+    cp "$output/$study/$run_dir/settings.xml" "$dest.tmp/settings.xml"
+    src=$(best_ever_input "$output/$study/$run_dir")
+    [ -d "$src" ] && src="$src/population.xml"   # a gait run keeps its best in population.xml
+    cp "$src" "$dest.tmp/population.xml"
+    echo "$kept" > "$dest.tmp/source.txt"
+    rm -rf "$dest" && mv "$dest.tmp" "$dest"
+  done < <("${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" best)
+  [ "$missing" = 0 ] || echo "baselines.sh: $missing best runs are neither here nor kept in results/best" \
+    "(their sittings were before it was kept)" >&2
+}
+# The strip of each kept best (results/strip-STUDY-ROBOT.png), drawn again only when the kept
+# run changed (results/best/STUDY/ROBOT/strip.txt: the source.txt it was drawn from).
+walk_strips() {
+  local dest study config
+  for dest in "$HERE"/results/best/*/*; do
+    [ -f "$dest/source.txt" ] || continue
+    config=$(basename "$dest") study=$(basename "$(dirname "$dest")")
+    cmp -s "$dest/source.txt" "$dest/strip.txt" && [ -f "$HERE/results/strip-$study-$config.png" ] && continue
+    CIC="$CIC" "$ROOT/scripts/screenshot-strip.sh" "$dest" "$HERE/results/strip-$study-$config.png" >&2
+    cp "$dest/source.txt" "$dest/strip.txt"
+  done
+}
 sine_strips() {   # from results/sine-grid.csv: robot,fitness,controller
   local robot fitness controller legs
   while IFS=, read -r robot fitness controller; do
@@ -201,8 +243,9 @@ for stage in "${stages[@]}"; do
         walk_studies+=("walk-$budget-$m")
       done
       for r in $robots; do curves walk- "$budget" "$r" "${walk_studies[@]}"; done
-      strips "${walk_studies[@]}"
       "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" ledger
+      keep_best
+      walk_strips
       "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" compare > "$HERE/results/walk.md"
       # The shipped settings/r{0,1,2}_best*.xml follow the winners (docs/baselines.md, "Shipped settings").
       "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" winners > "$HERE/results/walk-winners.md"
@@ -215,6 +258,7 @@ for stage in "${stages[@]}"; do
         [ -f "$output/$s/index.csv" ] && summarise "$s"
       done
       "${PYTHON:-python3}" "$ROOT/scripts/walk-report.py" --studies "$output" ledger
+      keep_best
       ;;
   esac
 done

@@ -43,16 +43,23 @@ report() { "$PY" "$ROOT/scripts/qd-report.py" --studies "$output" --baselines "$
 report ledger
 report compare > "$HERE/results/qd.md"
 report curves
-# The best R1 run of each method: its archive, and four elites from distant cells.
+# The best R1 run of each method (by the ledger, every sitting's runs): its archive, and four
+# elites from distant cells. Drawn while its folder is here, and again only when the best run
+# changed (strip-STUDY-R1.txt names the run drawn); a best run whose folder is gone keeps what
+# an earlier sitting drew.
 for s in "${studies[@]}"; do
-  [ -f "$output/$s/index.csv" ] || continue
-  best=$("$PY" - "$output/$s/index.csv" <<'PY'
+  best=$("$PY" - "$HERE/results/qd-runs.csv" "$s" <<'PY'
 import csv, sys
-rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["status"] == "done" and r["config"] == "R1" and r["final_best"]]
-print(max(rows, key=lambda r: float(r["final_best"]))["run_dir"] if rows else "")
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["study"] == sys.argv[2] and r["config"] == "R1" and r["best"]]
+print(max(rows, key=lambda r: float(r["best"]))["run_dir"] if rows else "")
 PY
 )
   [ -n "$best" ] || continue
+  if grep -qs "^$s R1 $(basename "$best"):" "$HERE/results/strip-$s-R1.txt"; then continue; fi
+  if [ ! -f "$output/$s/$best/settings.xml" ]; then
+    echo "quality-diversity.sh: $s's best R1 run ($best) is not in $output; its archive and strip stay as drawn" >&2
+    continue
+  fi
   run="$output/$s/$best"
   "$CIC" plot "$run" --archive --out "$HERE/results/archive-$s-R1.svg" --title "$s, R1, $(basename "$best"): best fitness per cell (feet 1 and 2; feet 3 and 4 collapsed)"
   strips=()

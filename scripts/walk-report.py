@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The tables of docs/baselines.md, "Walking like the best" (issue 21).
 
-    scripts/walk-report.py [--studies DIR] [--results DIR] tune|ledger|compare|winners
+    scripts/walk-report.py [--studies DIR] [--results DIR] tune|ledger|compare|winners|best
 
 DIR (default runs/baselines) holds the study folders that scripts/baselines.sh
 writes; --results (default experiments/baselines/results) holds each study's
@@ -41,6 +41,12 @@ marked with *. Evaluations are the counts index.csv records.
            ones. Writes results/walk-winners.csv, which the test
            SweepFile.ShippedBestSettingsAreTheComparisonWinners holds the shipped
            files to, and prints the table.
+  best     study,config,run_dir,score of each comparison study's best run per
+           robot (the highest score, the run whose gait compare describes), one
+           CSV line each: baselines.sh keeps each one replayable in
+           results/best/STUDY/CONFIG (its settings and the population file that
+           holds its best individual), so its strip and its gait outlive the
+           run folder.
 """
 import argparse
 import csv
@@ -54,7 +60,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 ap.add_argument("--studies", default="runs/baselines")
 ap.add_argument("--results", default=str(ROOT / "experiments" / "baselines" / "results"))
-ap.add_argument("mode", choices=["tune", "ledger", "compare", "winners"])
+ap.add_argument("mode", choices=["tune", "ledger", "compare", "winners", "best"])
 args = ap.parse_args()
 STUDIES, RESULTS = pathlib.Path(args.studies), pathlib.Path(args.results)
 
@@ -199,7 +205,7 @@ def ledger_runs(ledger, study):
             continue
         g = r if r["raw_fitness"] else None
         score = float(r["raw_fitness"]) if g else float(r["best_ever"])
-        out.setdefault(r["config"], []).append({"score": score, "star": g is None, "gait": g,
+        out.setdefault(r["config"], []).append({"score": score, "star": g is None, "gait": g, "run_dir": r["run_dir"],
                                                 "evaluations": int(float(r["evaluations"])) if r["evaluations"] else None})
     return out or None
 
@@ -458,11 +464,24 @@ def winners():
     print(f"\nwalk-report.py: the shipped winners in {path}", file=sys.stderr)
 
 
+def best():
+    """study,config,run_dir,score of each comparison study's best run per configuration (the run
+    whose gait `compare` describes), for baselines.sh to keep it replayable."""
+    ledger = merged_ledger()
+    w = csv.writer(sys.stdout, lineterminator="\n")
+    for study in comparison_studies():
+        for config, v in sorted((ledger_runs(ledger, study) or {}).items()):
+            top = max(v, key=lambda r: r["score"])
+            w.writerow([study, config, top["run_dir"], repr(top["score"])])
+
+
 if args.mode == "tune":
     tune()
 elif args.mode == "ledger":
     write_ledger()
 elif args.mode == "winners":
     winners()
+elif args.mode == "best":
+    best()
 else:
     compare()

@@ -78,6 +78,10 @@ check(r.returncode == 0, f"compare failed: {r.stderr}")
 check("| R1 | HyperGP, best configuration | 3 | 8.00* |" in r.stdout, f"compare table:\n{r.stdout}")
 check("2480–2500 (1 not recorded)" in r.stdout, f"evaluations:\n{r.stdout}")
 
+# best: the run whose gait compare describes (highest score, by raw eq. 7.1 where assessed).
+r = run("best")
+check(r.returncode == 0 and r.stdout == "walk-2500-hgp-best,R1,runs/R1/s1,9.5\n", f"best: {r.stdout!r} {r.stderr}")
+
 # A ledger cell that is not a number: FILE:LINE, exit 2, nothing rewritten.
 text = (results / "walk-runs.csv").read_text()
 (results / "walk-runs.csv").write_text(text.replace(",9.5,", ",nine,", 1))
