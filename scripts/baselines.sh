@@ -139,7 +139,11 @@ keep_best() {
     dest="$HERE/results/best/$study/$config"
     kept="$run_dir $score"
     [ -f "$dest/source.txt" ] && [ "$(cat "$dest/source.txt")" = "$kept" ] && continue
-    if [ ! -f "$output/$study/$run_dir/settings.xml" ]; then
+    # Only a finished run (index.csv says done): a folder may hold a run still going, or one
+    # cut off, whose row in the ledger came from an earlier sitting.
+    if ! awk -F, -v d="$run_dir" 'NR == 1 {for (i = 1; i <= NF; i++) h[$i] = i; next}
+        $h["run_dir"] == d && $h["status"] == "done" {found = 1} END {exit !found}' \
+        "$output/$study/index.csv" 2>/dev/null; then
       # Kept from another run: it was the best once, and the best's own folder is gone.
       [ -f "$dest/source.txt" ] && echo "baselines.sh: results/best/$study/$config keeps" \
         "$(cat "$dest/source.txt"); the best run, $run_dir ($score), is not in $output" >&2
