@@ -56,8 +56,11 @@ PY
 )
   [ -n "$best" ] || continue
   if grep -qs "^$s R1 $(basename "$best"):" "$HERE/results/strip-$s-R1.txt"; then continue; fi
-  if [ ! -f "$output/$s/$best/settings.xml" ]; then
-    echo "quality-diversity.sh: $s's best R1 run ($best) is not in $output; its archive and strip stay as drawn" >&2
+  # Only a finished run (index.csv says done): a folder may hold the same run still going.
+  if ! awk -F, -v d="$best" 'NR == 1 {for (i = 1; i <= NF; i++) h[$i] = i; next}
+      $h["run_dir"] == d && $h["status"] == "done" {found = 1} END {exit !found}' \
+      "$output/$s/index.csv" 2>/dev/null; then
+    echo "quality-diversity.sh: $s's best R1 run ($best) is not finished in $output; its archive and strip stay as drawn" >&2
     continue
   fi
   run="$output/$s/$best"
