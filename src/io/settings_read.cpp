@@ -224,11 +224,16 @@ const xml::Format& settings_format() {
 }
 
 Settings load_settings(const fs::path& file, const std::vector<std::string>& overrides) {
+    if (file.empty()) return load_settings_text({}, {}, overrides);
+    return load_settings_text(xml::read_file(file), file, overrides);
+}
+
+Settings load_settings_text(std::string_view text, const fs::path& file, const std::vector<std::string>& overrides) {
     Settings s;
     detail::Locations locs;
     if (!file.empty()) {
         const fs::path base = fs::absolute(file).parent_path();
-        xml::load_strict(file, settings_format(), [&](const xml::Document& doc) {
+        xml::read_strict(text, file.string(), settings_format(), [&](const xml::Document& doc) {
             infer_experiment_type(s, doc);
             apply_layer(s, gather_document(doc), locs, &base);
             return 0;

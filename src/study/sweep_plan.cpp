@@ -7,6 +7,7 @@
 
 #include "cic/study/sweep.hpp"
 #include "cic/core/error.hpp"
+#include "cic/io/settings_io.hpp"
 #include "cic/io/settings_table.hpp"
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
@@ -126,6 +127,7 @@ SweepPlan read_sweep(const io::xml::Document& doc, const fs::path& file, const f
             if (p.is_relative()) p = plan.file.parent_path() / p;
             plan.base = p.lexically_normal();
             if (!fs::is_regular_file(plan.base)) throw c.error("<base> " + plan.base.string() + ": no such file");
+            plan.base_xml = io::xml::read_file(plan.base);
         } else if (nm == "output") {
             out_text = c.text();
         } else if (nm == "store") {
@@ -255,6 +257,12 @@ std::vector<std::string> SweepPlan::overrides(const SweepTask& task) const {
     out.insert(out.end(), own.begin(), own.end());
     out.push_back("Experiment.seed=" + std::to_string(task.seed));
     return out;
+}
+
+io::Settings SweepPlan::settings(const SweepTask& task, const std::vector<std::string>& extra) const {
+    std::vector<std::string> all = overrides(task);
+    all.insert(all.end(), extra.begin(), extra.end());
+    return io::load_settings_text(base_xml, base, all);
 }
 
 } // namespace cic::app

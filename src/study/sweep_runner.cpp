@@ -66,7 +66,7 @@ void check_every_configuration(const SweepPlan& plan) {
         const SweepConfig& config = plan.configs[t.config];
         io::Settings settings;
         try {
-            settings = io::load_settings(plan.base, plan.overrides(t));
+            settings = plan.settings(t);
             prepare_run(settings);
         } catch (const InputError& e) {
             throw InputError(fmt::format("configuration {}: {}", config.name, e.what()), plan.file.string(),

@@ -146,7 +146,7 @@ TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
             st.mismatch = {std::string("its settings.xml cannot be read: ") + e.what()};
             return st;
         }
-        const io::Settings asked = io::load_settings(plan.base, plan.overrides(task));
+        const io::Settings asked = plan.settings(task);
         st.mismatch = settings_differences(ran, asked, "the sweep");
         if (!st.mismatch.empty() && !extends(ran, asked)) {
             st.status = TaskStatus::Mismatched;
@@ -258,20 +258,21 @@ const std::map<std::string, fs::path>& store_index(const fs::path& store) {
 
 fs::path store_dir(const SweepPlan& plan, const SweepTask& task) {
     if (plan.store.empty()) throw std::logic_error("store_dir: the sweep has no <store>");
-    const std::string key = run_fingerprint(io::load_settings(plan.base, plan.overrides(task)));
+    const std::string key = run_fingerprint(plan.settings(task));
     if (fs::exists(plan.store / key)) return plan.store / key;
     const auto& known = store_index(plan.store);
     if (auto it = known.find(key); it != known.end()) return it->second;
     return plan.store / key;
 }
 
-void link_to_store(const SweepPlan& plan) {
+void link_to_store(const SweepPlan& plan, StoreLinks which) {
     if (plan.store.empty()) return;
     for (const SweepTask& task : plan.tasks()) {
         const fs::path link = plan.study / task.run_dir;
         const bool linked = fs::is_symlink(link);
         if (!linked && fs::exists(link)) continue;   // a run folder of its own (a study made before its store)
         const fs::path target = store_dir(plan, task);
+        if (which == StoreLinks::StoredRunsOnly && !fs::exists(target / "settings.xml")) continue;
         fs::create_directories(target);
         if (linked && fs::exists(link) && fs::equivalent(link, target)) continue;
         // New, or the sweep's settings changed since the link was made (an edited sweep
@@ -293,7 +294,7 @@ namespace {
 // stays as it was, for the studies that link to it.
 void start_from_a_shorter_stored_run(const SweepPlan& plan, const SweepTask& task, const fs::path& target) {
     if (plan.store.empty() || fs::exists(target / "settings.xml") || !fs::is_directory(plan.store)) return;
-    const io::Settings asked = io::load_settings(plan.base, plan.overrides(task));
+    const io::Settings asked = plan.settings(task);
     fs::path longest;
     std::tuple<int, long, long> longest_budget{-1, -1, -1};
     for (const auto& e : fs::directory_iterator(plan.store)) {
@@ -337,13 +338,13 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
                          plan.file.string());
 
     if (!plan.store.empty()) start_from_a_shorter_stored_run(plan, task, fs::canonical(dir));
-    std::vector<std::string> overrides = plan.overrides(task);
-    if (workers > 0) overrides.push_back("Experiment.workers=" + std::to_string(workers));
-    overrides.push_back("Experiment.name=s" + std::to_string(task.seed));
+    std::vector<std::string> extra;
+    if (workers > 0) extra.push_back("Experiment.workers=" + std::to_string(workers));
+    extra.push_back("Experiment.name=s" + std::to_string(task.seed));
     const bool resume = fs::exists(dir / "population.xml") && fs::exists(dir / "settings.xml");
-    if (resume) overrides.push_back("Control.populationXmlLoadFrom=" + (dir / "population.xml").string());
+    if (resume) extra.push_back("Control.populationXmlLoadFrom=" + (dir / "population.xml").string());
 
-    PreparedRun prepared = prepare_run(io::load_settings(plan.base, overrides));
+    PreparedRun prepared = prepare_run(plan.settings(task, extra));
     fs::remove(dir / "failed.txt");
     if (!resume)   // a fresh start: clear what a run killed before its first checkpoint left
         for (const auto& e : fs::directory_iterator(dir))

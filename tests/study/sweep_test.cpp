@@ -346,6 +346,10 @@ TEST(Sweep, StudiesSharingAStoreRunACommonConfigurationOnce) {
     ASSERT_EQ(run_command("sweep " + (dir / "b.xml").string() + " --index-only", dir / "index.log"), 0);
     EXPECT_NE(read_text(dir / "b/index.csv").find(",done,"), std::string::npos) << read_text(dir / "b/index.csv");
     EXPECT_NE(read_text(dir / "b/index.csv").find(",pending,"), std::string::npos) << read_text(dir / "b/index.csv");
+    // ... and leaves no empty store folder, nor a link, for the run still to do.
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir / "store"), fs::directory_iterator()), 2);
+    EXPECT_FALSE(fs::exists(fs::symlink_status(dir / "b/runs/sampleAverageCount=2/s4")));
+    EXPECT_TRUE(fs::is_symlink(dir / "b/runs/sampleAverageCount=1/s4"));
     ASSERT_EQ(run_command("sweep " + (dir / "b.xml").string(), dir / "b.log"), 0) << read_text(dir / "b.log");
     EXPECT_NE(read_text(dir / "b.log").find("1 of 2 runs to do"), std::string::npos) << read_text(dir / "b.log");
     const fs::path shared_a = dir / "a/runs/elitism=0/s4", shared_b = dir / "b/runs/sampleAverageCount=1/s4";
@@ -430,6 +434,50 @@ TEST(Sweep, EditedSweepWithoutAStoreRefusesItsOldRuns) {
     fs::rename(dir / "n/runs/R0/s4", dir / "old-s4");   // moved away: the task runs with the new settings
     ASSERT_EQ(run_command(sweep, dir / "second.log"), 0) << read_text(dir / "second.log");
     EXPECT_NE(read_text(run / "settings.xml").find("<tournament_size>4</tournament_size>"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+// The base settings file edited while a task runs: the task runs and indexes
+// the settings it read when it started (its index says done, not mismatched);
+// a sweep started after the edit sees the run as one of other settings.
+TEST(Sweep, EditingTheBaseWhileATaskRunsChangesNeitherTheRunNorItsIndex) {
+    const auto dir = temp_dir("sweep-base-edited");
+    const std::string base = read_text(fs::path(CIC_SOURCE_DIR) / "settings/r0_settings.xml");
+    write_text(dir / "base.xml", base);
+    std::string text = tiny_sweep_text("b", dir / "study", 6, 12, 2.5, "<variant name=\"R0\"/>", 1);
+    const std::size_t at = text.find("<base>") + 6;
+    text.replace(at, text.find("</base>") - at, (dir / "base.xml").string());
+    write_text(dir / "s.xml", text);
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        freopen((dir / "task.log").c_str(), "w", stderr);
+        const std::string bin = cic_binary(), file = (dir / "s.xml").string();
+        execl(bin.c_str(), bin.c_str(), "sweep", file.c_str(), "--task", "0", "--workers", "1",
+              static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    const fs::path run = dir / "study/runs/R0/s1";
+    bool started = false;
+    for (int i = 0; i < 2400 && !started; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        started = fs::exists(run / "stats.csv");
+    }
+    ASSERT_TRUE(started) << read_text(dir / "task.log");
+    std::string edited = base;
+    const std::string from = "<expectedGeneratedTreeSize>30<", to = "<expectedGeneratedTreeSize>20<";
+    ASSERT_NE(edited.find(from), std::string::npos);
+    edited.replace(edited.find(from), from.size(), to);
+    write_text(dir / "base.xml", edited);
+    ASSERT_FALSE(fs::exists(run / "summary.txt")) << "the run ended before the edit: lengthen it";
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(dir / "task.log");
+    EXPECT_NE(read_text(dir / "study/index.csv").find(",1,done,"), std::string::npos)
+        << read_text(dir / "study/index.csv");
+    EXPECT_NE(read_text(run / "settings.xml").find("<expectedGeneratedTreeSize>30<"), std::string::npos);
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --dry-run", dir / "dry.log"), 0);
+    EXPECT_NE(read_text(dir / "dry.log").find("\n1 mismatched;"), std::string::npos) << read_text(dir / "dry.log");
     fs::remove_all(dir);
 }
 

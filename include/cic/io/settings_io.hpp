@@ -32,6 +32,12 @@ Settings read_settings_string(std::string_view xml, const std::string& name = "<
 // validates. This is what `cic` runs.
 Settings load_settings(const std::filesystem::path& file, const std::vector<std::string>& overrides);
 
+// The same on the text of `file` as it was read earlier (a sweep reads its base
+// once, so that an edit while its runs go on changes none of them); `file`
+// names it in messages and anchors its relative paths.
+Settings load_settings_text(std::string_view text, const std::filesystem::path& file,
+                            const std::vector<std::string>& overrides);
+
 // Cross-field checks (min depth <= max depth, rates sum <= 1, ...). Throws InputError.
 void validate_settings(const Settings& s);
 

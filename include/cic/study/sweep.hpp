@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "cic/io/settings.hpp"
+
 namespace cic::app {
 
 // How each repeat's seed follows from <repeats firstSeed="F" count="R">:
@@ -36,6 +38,7 @@ struct SweepPlan {
     std::filesystem::path file;                // the sweep file (absolute)
     std::string name;
     std::filesystem::path base;                // base settings file (absolute)
+    std::string base_xml;                      // its text when the plan was read
     std::vector<std::string> common;           // overrides for every run
     std::vector<std::string> varied_keys;      // index.csv columns between config and seed
     std::vector<SweepConfig> configs;
@@ -52,6 +55,10 @@ struct SweepPlan {
     std::vector<SweepTask> tasks() const;
     // Every --set of a task: common, the configuration's, then its seed.
     std::vector<std::string> overrides(const SweepTask& task) const;
+    // The settings a task asks for: the base as read with the plan (an edit of
+    // the base file while a task runs changes neither that run nor what its
+    // index says of it), then overrides(task), then `extra`.
+    io::Settings settings(const SweepTask& task, const std::vector<std::string>& extra = {}) const;
 };
 
 // Reads and checks a sweep file (format in docs/cluster.md, schema
@@ -100,7 +107,10 @@ std::filesystem::path store_dir(const SweepPlan& plan, const SweepTask& task);
 // With a store: makes every task's runs/CONFIG/sSEED a relative link to its
 // store folder, unless the study already has a real folder there (a study
 // begun without a store keeps its runs). Without a store: nothing.
-void link_to_store(const SweepPlan& plan);
+// StoredRunsOnly (for --index-only, which runs nothing): links only the tasks
+// whose store folder holds a run, and makes no folder in the store.
+enum class StoreLinks { Every, StoredRunsOnly };
+void link_to_store(const SweepPlan& plan, StoreLinks which = StoreLinks::Every);
 
 // Runs one task in its folder: skipped when done, resumed in place from its
 // checkpoint when one exists, started afresh otherwise. `workers` > 0 sets
