@@ -45,6 +45,7 @@
 # need scipy, Debian's python3-scipy).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/scripts/lib/study-index.sh"
 HERE="$ROOT/experiments/baselines"
 if [ -z "${CIC:-}" ]; then
   if [ -x "$ROOT/build/cic" ]; then CIC="$ROOT/build/cic"; else CIC="$(command -v cic || true)"; fi
@@ -84,7 +85,7 @@ summarise() {   # STUDY
   "$CIC" compare "$output/$1" --metric best_ever --out "$dest" > /dev/null
   "$CIC" plot "$output/$1" --title "$1 (median, Q1..Q3)" --median --out "$dest.svg"
   # Walking or shaking (thesis 7.3.2.1): each finished run's best, replayed.
-  mapfile -t done_runs < <(awk -F, -v s="$output/$1" 'NR > 1 && $0 ~ /,done,/ {print s "/" $1}' "$output/$1/index.csv")
+  mapfile -t done_runs < <(finished_runs "$output/$1")
   local inputs=() run
   for run in "${done_runs[@]}"; do inputs+=("$(best_ever_input "$run")"); done
   if [ ${#inputs[@]} -gt 0 ]; then
@@ -118,10 +119,7 @@ strips() {   # STUDY...
   for s in "$@"; do
     [ -f "$output/$s/index.csv" ] || continue
     for r in R0 R1 R2 R1-6legs cross; do
-      run=$(awk -F, -v r="$r" 'NR == 1 {for (i = 1; i <= NF; i++) h[$i] = i; next}
-        $h["config"] == r && $h["status"] == "done" && $h["best_ever"] != "" &&
-        (best == "" || $h["best_ever"] + 0 > best + 0) {best = $h["best_ever"]; dir = $h["run_dir"]}
-        END {print dir}' "$output/$s/index.csv")
+      run=$(best_finished_run "$output/$s" "$r")
       [ -n "$run" ] || continue
       CIC="$CIC" "$ROOT/scripts/screenshot-strip.sh" "$(best_ever_input "$output/$s/$run")" \
         "$HERE/results/strip-$s-$r.png" >&2
@@ -141,9 +139,7 @@ keep_best() {
     [ -f "$dest/source.txt" ] && [ "$(cat "$dest/source.txt")" = "$kept" ] && continue
     # Only a finished run (index.csv says done): a folder may hold a run still going, or one
     # cut off, whose row in the ledger came from an earlier sitting.
-    if ! awk -F, -v d="$run_dir" 'NR == 1 {for (i = 1; i <= NF; i++) h[$i] = i; next}
-        $h["run_dir"] == d && $h["status"] == "done" {found = 1} END {exit !found}' \
-        "$output/$study/index.csv" 2>/dev/null; then
+    if ! run_is_finished "$output/$study" "$run_dir"; then
       # Kept from another run: it was the best once, and the best's own folder is gone.
       [ -f "$dest/source.txt" ] && echo "baselines.sh: results/best/$study/$config keeps" \
         "$(cat "$dest/source.txt"); the best run, $run_dir ($score), is not in $output" >&2

@@ -16,6 +16,7 @@
 # Environment: CIC (default build/cic), PYTHON (default python3; needs scipy).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/scripts/lib/study-index.sh"
 HERE="$ROOT/experiments/quality-diversity"
 CIC=${CIC:-$ROOT/build/cic}
 PY=${PYTHON:-python3}
@@ -57,9 +58,7 @@ PY
   [ -n "$best" ] || continue
   if grep -qs "^$s R1 $(basename "$best"):" "$HERE/results/strip-$s-R1.txt"; then continue; fi
   # Only a finished run (index.csv says done): a folder may hold the same run still going.
-  if ! awk -F, -v d="$best" 'NR == 1 {for (i = 1; i <= NF; i++) h[$i] = i; next}
-      $h["run_dir"] == d && $h["status"] == "done" {found = 1} END {exit !found}' \
-      "$output/$s/index.csv" 2>/dev/null; then
+  if ! run_is_finished "$output/$s" "$best"; then
     echo "quality-diversity.sh: $s's best R1 run ($best) is not finished in $output; its archive and strip stay as drawn" >&2
     continue
   fi

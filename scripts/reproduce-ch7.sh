@@ -18,6 +18,7 @@
 # cic: $CIC, else build/cic of this checkout, else `cic` on PATH (an installed cic).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/scripts/lib/study-index.sh"
 HERE="$ROOT/experiments/thesis-ch7"
 if [ -z "${CIC:-}" ]; then
   if [ -x "$ROOT/build/cic" ]; then CIC="$ROOT/build/cic"; else CIC="$(command -v cic || true)"; fi
@@ -80,7 +81,7 @@ for s in "${studies[@]}"; do
   "$CIC" compare "$output/$s" --out "$HERE/results/$s" > /dev/null
   "$CIC" plot "$output/$s" --title "$s (mean, +-1 sd)" --out "$HERE/results/$s.svg"
   # Is each finished run's best gait walking or shaking (thesis 7.3.2.1)?
-  mapfile -t done_runs < <(awk -F, -v s="$output/$s" 'NR > 1 && $0 ~ /,done,/ {print s "/" $1}' "$output/$s/index.csv")
+  mapfile -t done_runs < <(finished_runs "$output/$s")
   if [ ${#done_runs[@]} -gt 0 ]; then
     "$CIC" --quiet assess "${done_runs[@]}" --out "$HERE/results/$s-gaits.csv"
   fi
