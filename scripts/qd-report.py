@@ -22,7 +22,9 @@ me-cmame-15000); --results
            reference best of its robot, the elite the archive holds in the
            reference best's cell (its 5 bins per foot, from the duty factors
            to 3 decimals), empty when the cell is.
-  compare  from the ledger: per robot and method, median and IQR of QD-score,
+  compare  from the ledger: first a line of how many of the design's 10
+           seeds each robot and method has (an arm with fewer is open, and
+           each of its tests says so); then per robot and method, median and IQR of QD-score,
            coverage and best elite; MAP-Elites with HyperGP, and with the
            CMA-ME emitter, against MAP-Elites with the gait vector's Gaussian
            emitter on QD-score and coverage (CMA-ME on the best elite too);
@@ -58,6 +60,7 @@ from study_stats import a12, a12_interval, holm, mann_whitney_p, quartiles
 STUDIES_OF = {"me-hgp-15000": "MAP-Elites, HyperGP-gait", "me-gait-15000": "MAP-Elites, gait vector",
               "me-cmame-15000": "MAP-Elites, gait vector, CMA-ME"}
 PLAIN_OF = {"walk-15000-hgp-gait": "HyperGP-gait (plain)", "walk-15000-cmaes-gait": "CMA-ES gait, IPOP"}
+SEEDS = 10   # the design: seeds 1-10 per robot and method; fewer in the ledger = the arm is still open
 FIELDS = ["study", "run_dir", "config", "seed", "evaluations", "batches", "best", "qd_score", "coverage", "filled",
           "wall_seconds"]
 
@@ -195,12 +198,42 @@ def verdict(p, a, first, second, n):
     return f"{first} higher" if a > 0.5 else f"{second} higher"
 
 
+def open_note(nx, ny):
+    """A test of an arm with fewer runs than the design's: its verdict may still change."""
+    short = min(nx, ny)
+    return f" (open: {short} of {SEEDS} runs)" if short < SEEDS else ""
+
+
+def ledger_status(counts):
+    """One line: how many of the design's runs each robot and method has, and which arms are open.
+    counts: {(robot, label): n}."""
+    robots = sorted({robot for robot, _ in counts})
+    parts = [f"{robot}: " + ", ".join(f"{label} {n}" for (r, label), n in counts.items() if r == robot)
+             for robot in robots]
+    open_arms = [f"{label} on {robot} ({n} of {SEEDS})" for (robot, label), n in counts.items() if n < SEEDS]
+    line = f"Runs in the ledger, of {SEEDS} seeds per robot and method: " + "; ".join(parts) + "."
+    if open_arms:
+        line += " Open (their tests may still change): " + ", ".join(open_arms) + "."
+    else:
+        line += " Every arm is complete."
+    return line
+
+
 def compare():
     me = read_csv(RESULTS / "qd-runs.csv") if (RESULTS / "qd-runs.csv").exists() else []
     plain = read_csv(WALK_LEDGER) if WALK_LEDGER.exists() else []
     def values(study, config, column, source):
         return [float(r[column]) for r in source if r["study"] == study and r["config"] == config and r[column]]
     robots = sorted({r["config"] for r in me})
+    counts = {}
+    for robot in robots:
+        for study, label in list(STUDIES_OF.items()) + list(PLAIN_OF.items()):
+            n = len(values(study, robot, "qd_score", me) if study in STUDIES_OF else
+                    values(study, robot, "raw_fitness", plain))
+            if n:
+                counts[(robot, label)] = n
+    print(ledger_status(counts))
+    print()
     print("| robot | method | n | evaluations | QD-score | coverage | cells filled | best elite [m] |")
     print("|---|---|---|---|---|---|---|---|")
     for robot in robots:
@@ -243,7 +276,8 @@ def compare():
         digits = 3 if what == "coverage" else 2
         print(f"| {robot} | {what} | {la} | {st.median(x):.{digits}f} | {lb} | {st.median(y):.{digits}f} | "
               f"{len(x)} vs {len(y)} | {p:.3g} | {ph:.3g} | {a:.2f} [{lo:.2f}, {hi:.2f}] | "
-              f"{verdict(ph, a, la, lb, f'{len(x)} vs {len(y)}' if len(x) != len(y) else len(x))} |" if p is not None else f"| {robot} | {what} | {la} | | {lb} | | | | | | no scipy |")
+              f"{verdict(ph, a, la, lb, f'{len(x)} vs {len(y)}' if len(x) != len(y) else len(x))}"
+              f"{open_note(len(x), len(y))} |" if p is not None else f"| {robot} | {what} | {la} | | {lb} | | | | | | no scipy |")
     print()
     print(f"{len(tests)} tests; Holm over all of them. A12 = P(first method's run > second's).")
     cellmatch()

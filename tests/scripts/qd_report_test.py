@@ -68,4 +68,11 @@ with contextlib.redirect_stdout(out):
 table = out.getvalue()
 want = "| R1 | MAP-Elites, gait vector (2 runs) | CMA-ES gait, IPOP (2 runs) | 3 | 2 (67%) | 30.00 [25.00, 30.00] | 9.00"
 check(want in table, f"cellmatch table:\n{table}")
+# Open arms: fewer runs than the design's 10 are named, in the status line and on their tests.
+status = qd.ledger_status({("R1", "A"): 10, ("R1", "B"): 3, ("R2", "A"): 10})
+check("R1: A 10, B 3; R2: A 10." in status and "Open (their tests may still change): B on R1 (3 of 10)." in status,
+      f"ledger status: {status}")
+check(qd.ledger_status({("R1", "A"): 10}).endswith("Every arm is complete."), "a complete ledger")
+check(qd.open_note(10, 3) == " (open: 3 of 10 runs)" and qd.open_note(10, 10) == "", "open note")
+
 print("qd_report_test: ok")
