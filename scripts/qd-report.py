@@ -40,8 +40,11 @@ me-cmame-15000); --results
            how many of them each method's archives fill, and how far their
            elites walk there against the references.
   curves   QD-score and coverage against evaluations, median and IQR over
-           the finished runs of each method, one panel each per robot
-           (gnuplot), to results/qd-curves.svg.
+           the runs of each method in results/qd-curve-points.csv (the ledger
+           stage keeps each finished run's QD-score, coverage and best every
+           500 evaluations and at its end, so the curves too outlive the run
+           folders), one panel each per robot (gnuplot), to
+           results/qd-curves.svg.
   cells    four elites of RUN far apart in the descriptor space, among those
            that walk at least half as far as the best (greedy farthest points
            from the best): one "I,J,...  fitness  descriptor" line each, for
@@ -115,6 +118,29 @@ def merge(path, fields, key, found):
     return list(rows.values())
 
 
+CURVE_FIELDS = ["study", "config", "seed", "evaluations", "qd_score", "coverage", "best"]
+CURVE_STEP = 500   # evaluations between the points a run keeps in the curve ledger (and its last)
+
+
+def found_curve_points(studies):
+    """Each finished run's QD-score, coverage and best every CURVE_STEP evaluations, and at its end."""
+    points = []
+    for study in STUDIES_OF:
+        index = studies / study / "index.csv"
+        if not index.exists():
+            continue
+        for r in read_csv(index):
+            if r["status"] != "done":
+                continue
+            rows = read_csv(studies / study / r["run_dir"] / "stats.csv")
+            for i, row in enumerate(rows):
+                if int(row["evaluations"]) % CURVE_STEP == 0 or i == len(rows) - 1:
+                    points.append({"study": study, "config": r["config"], "seed": r["seed"],
+                                   "evaluations": row["evaluations"], "qd_score": row["qd_score"],
+                                   "coverage": row["coverage"], "best": row["best"]})
+    return points
+
+
 REF_FIELDS = ["study", "config", "seed", "raw_fitness", "duty_factors"]
 MATCH_FIELDS = ["me_study", "config", "seed", "ref_study", "ref_seed", "ref_fitness", "ref_cell", "elite_fitness"]
 BINS = 5   # per foot, as both MAP-Elites sweeps use (MapElites.bins)
@@ -181,6 +207,8 @@ def ledger():
     merge(RESULTS / "qd-cellmatch.csv", MATCH_FIELDS,
           lambda r: (r["me_study"], r["config"], int(r["seed"]), r["ref_study"], int(r["ref_seed"])),
           found_matches(me, refs))
+    merge(RESULTS / "qd-curve-points.csv", CURVE_FIELDS,
+          lambda r: (r["study"], r["config"], int(r["seed"]), int(r["evaluations"])), found_curve_points(STUDIES))
 
 
 def median_iqr(v, digits=2):
@@ -316,24 +344,25 @@ def cellmatch():
     print("Medians [IQR] over the pairs; the elite column over the filled ones.")
 
 
+def curve_series(points):
+    """(study, robot) -> {evaluations: {column: [values over runs]}}, from the curve ledger's rows."""
+    series = {}
+    for row in points:
+        if row["study"] not in STUDIES_OF:
+            continue
+        cell = series.setdefault((row["study"], row["config"]), {}).setdefault(int(row["evaluations"]), {})
+        for column in ("qd_score", "coverage"):
+            cell.setdefault(column, []).append(float(row[column]))
+    return series
+
+
 def curves():
     import shutil
     import tempfile
-    panels = []   # (robot, column, label)
-    series = {}   # (study, robot) -> {evaluations: {column: [values]}}
-    for study in STUDIES_OF:
-        index = STUDIES / study / "index.csv"
-        if not index.exists():
-            continue
-        for r in read_csv(index):
-            if r["status"] != "done":
-                continue
-            for row in read_csv(STUDIES / study / r["run_dir"] / "stats.csv"):
-                cell = series.setdefault((study, r["config"]), {}).setdefault(int(row["evaluations"]), {})
-                for column in ("qd_score", "coverage"):
-                    cell.setdefault(column, []).append(float(row[column]))
+    series = curve_series(read_csv(RESULTS / "qd-curve-points.csv") if (RESULTS / "qd-curve-points.csv").exists()
+                          else [])
     if not series:
-        fail(f"no finished MAP-Elites run in {STUDIES}")
+        fail(f"no curve points in {RESULTS / 'qd-curve-points.csv'} (run the ledger stage first)")
     robots = sorted({robot for _, robot in series})
     tmp = pathlib.Path(tempfile.mkdtemp(prefix="qd-curves-"))
     plots = []

@@ -4,7 +4,8 @@
 # genotypes and with the gait vector (Gaussian and CMA-ME emitters) on R1 and R2
 # (4 legs, 625 duty-factor cells), 15,000 evaluations, seeds 1..10
 # (experiments/quality-diversity/*.xml),
-# then the summary: results/qd-runs.csv (the ledger, merged across sittings),
+# then the summary: results/qd-runs.csv (the ledger, merged across sittings;
+# results/qd-curve-points.csv keeps each run's curve),
 # results/qd.md (the tables), an archive heatmap of each method's best R1 run and
 # a screenshot strip of four elites of it from distant cells.
 # Resumable: rerun the same command after an interruption; finished runs are

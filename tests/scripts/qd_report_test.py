@@ -68,6 +68,20 @@ with contextlib.redirect_stdout(out):
 table = out.getvalue()
 want = "| R1 | MAP-Elites, gait vector (2 runs) | CMA-ES gait, IPOP (2 runs) | 3 | 2 (67%) | 30.00 [25.00, 30.00] | 9.00"
 check(want in table, f"cellmatch table:\n{table}")
+# The curve ledger: a finished run's points every 500 evaluations and its last; a run not done gives none.
+study = work / "studies" / "me-gait-15000"
+for seed, status in ((1, "done"), (2, "running")):
+    folder = study / "runs" / "R1" / f"s{seed}"
+    folder.mkdir(parents=True)
+    (folder / "stats.csv").write_text("generation,best,evaluations,qd_score,coverage\n" + "".join(
+        f"{g},{g + 1},{(g + 1) * 250},{10 * (g + 1)},{0.1 * (g + 1):.1f}\n" for g in range(5)))
+(study / "index.csv").write_text("run_dir,config,seed,status\nruns/R1/s1,R1,1,done\nruns/R1/s2,R1,2,running\n")
+points = qd.found_curve_points(work / "studies")
+check([(p["seed"], p["evaluations"]) for p in points] == [("1", "500"), ("1", "1000"), ("1", "1250")],
+      f"curve points: {[(p['seed'], p['evaluations']) for p in points]}")
+series = qd.curve_series(points)
+check(series[("me-gait-15000", "R1")][1250] == {"qd_score": [50.0], "coverage": [0.5]}, f"curve series: {series}")
+
 # Open arms: fewer runs than the design's 10 are named, in the status line and on their tests.
 status = qd.ledger_status({("R1", "A"): 10, ("R1", "B"): 3, ("R2", "A"): 10})
 check("R1: A 10, B 3; R2: A 10." in status and "Open (their tests may still change): B on R1 (3 of 10)." in status,
