@@ -28,7 +28,7 @@ while [ $# -gt 0 ]; do
     --output) output="$2"; shift 2 ;;
     --baselines) baselines="$2"; shift 2 ;;
     --summary-only) summary_only=1; shift ;;
-    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
     *) echo "quality-diversity.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
