@@ -48,7 +48,7 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
     cmd.option("--output", o->output, "study folder (default: the sweep file's <output>, else runs/NAME)");
     cmd.flag("--dry-run", o->dry_run, "list every run with its status and command; run nothing");
     cmd.flag("--index-only", o->index_only,
-                  "rewrite STUDY/index.csv from the run folders (and link runs another study stored); run and create nothing else");
+                  "rewrite STUDY/index.csv from the run folders, linking runs already stored; run nothing");
     cmd.flag("--slurm", o->slurm, "write STUDY/slurm.sh, a job array with one task per run");
     cmd.option("--slurm-partition", o->cluster.partition, "with --slurm: the partition (#SBATCH --partition)");
     cmd.option("--slurm-time", o->cluster.time, "with --slurm: each task's time limit (minutes, HH:MM:SS, D-HH:MM)");
