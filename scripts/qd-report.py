@@ -38,7 +38,9 @@ me-cmame-15000); --results
            A12 with a 95% bootstrap interval (2,000 resamples, seed 1).
            Then, from qd-cellmatch.csv, the cells where the references walk:
            how many of them each method's archives fill, and how far their
-           elites walk there against the references.
+           elites walk there against the references. Last, from the curve
+           ledger, whether the archives still fill at the budget: QD-score,
+           coverage and best 5,000 evaluations before the end and at it.
   curves   QD-score and coverage against evaluations, median and IQR over
            the runs of each method in results/qd-curve-points.csv (the ledger
            stage keeps each finished run's QD-score, coverage and best every
@@ -309,6 +311,42 @@ def compare():
     print()
     print(f"{len(tests)} tests; Holm over all of them. A12 = P(first method's run > second's).")
     cellmatch()
+    growth(read_csv(RESULTS / "qd-curve-points.csv") if (RESULTS / "qd-curve-points.csv").exists() else [])
+
+
+def growth(points, last=5000):
+    """Are the archives still filling at the budget? Per robot and method, over the runs in the curve
+    ledger: the share of the final QD-score reached `last` evaluations before the end, and the
+    coverage and best elite then and at the end."""
+    runs = {}
+    for r in points:
+        runs.setdefault((r["study"], r["config"], r["seed"]), {})[int(r["evaluations"])] = r
+    table = {}
+    for (study, robot, _), pts in runs.items():
+        end = max(pts)
+        if study not in STUDIES_OF or end - last not in pts:
+            continue
+        a, b = pts[end - last], pts[end]
+        t = table.setdefault((robot, study), {"share": [], "cov0": [], "cov1": [], "best0": [], "best1": [], "end": end})
+        t["share"].append(float(a["qd_score"]) / float(b["qd_score"]))
+        t["cov0"].append(float(a["coverage"]))
+        t["cov1"].append(float(b["coverage"]))
+        t["best0"].append(float(a["best"]))
+        t["best1"].append(float(b["best"]))
+    if not table:
+        return
+    print()
+    print(f"Still filling at the budget? The last {last:,} evaluations of each run in results/qd-curve-points.csv "
+          "(the runs whose folders a sitting had at hand; medians [IQR]).")
+    print()
+    print("| robot | method | runs | QD-score reached before them | coverage before | coverage at the end | "
+          "best before [m] | best at the end [m] |")
+    print("|---|---|---|---|---|---|---|---|")
+    for robot, study in sorted(table, key=lambda k: (k[0], list(STUDIES_OF).index(k[1]))):
+        t = table[(robot, study)]
+        print(f"| {robot} | {STUDIES_OF[study]} | {len(t['share'])} | {median_iqr(t['share'])} | "
+              f"{median_iqr(t['cov0'], 3)} | {median_iqr(t['cov1'], 3)} | {median_iqr(t['best0'])} | "
+              f"{median_iqr(t['best1'])} |")
 
 
 def cellmatch():

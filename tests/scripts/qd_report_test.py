@@ -82,6 +82,15 @@ check([(p["seed"], p["evaluations"]) for p in points] == [("1", "500"), ("1", "1
 series = qd.curve_series(points)
 check(series[("me-gait-15000", "R1")][1250] == {"qd_score": [50.0], "coverage": [0.5]}, f"curve series: {series}")
 
+# Still filling: the run above at 750 evaluations (500 before its end at 1,250) against its end.
+out = io.StringIO()
+with contextlib.redirect_stdout(out):
+    qd.growth(qd.found_curve_points(work / "studies") + [
+        {"study": "me-gait-15000", "config": "R1", "seed": "1", "evaluations": "750", "qd_score": "30",
+         "coverage": "0.3", "best": "3"}], last=500)
+want = "| R1 | MAP-Elites, gait vector | 1 | 0.60 [0.60, 0.60] | 0.300 [0.300, 0.300] | 0.500 [0.500, 0.500] |"
+check(want in out.getvalue(), f"growth table:\n{out.getvalue()}")
+
 # Open arms: fewer runs than the design's 10 are named, in the status line and on their tests.
 status = qd.ledger_status({("R1", "A"): 10, ("R1", "B"): 3, ("R2", "A"): 10})
 check("R1: A 10, B 3; R2: A 10." in status and "Open (their tests may still change): B on R1 (3 of 10)." in status,
