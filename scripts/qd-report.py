@@ -80,8 +80,8 @@ def read_csv(path):
         return list(csv.DictReader(f))
 
 
-def found_rows(studies):
-    rows = []
+def finished_runs(studies):
+    """(study, its index.csv row, the run's stats.csv rows) for every finished MAP-Elites run in `studies`."""
     for study in STUDIES_OF:
         index = studies / study / "index.csv"
         if not index.exists():
@@ -92,14 +92,21 @@ def found_rows(studies):
             stats = studies / study / r["run_dir"] / "stats.csv"
             if not stats.exists():
                 fail(f"{stats}: missing for a run index.csv calls done")
-            last = read_csv(stats)[-1]
+            rows = read_csv(stats)
             for column in ("qd_score", "coverage", "filled", "best", "evaluations"):
-                if column not in last:
+                if not rows or column not in rows[-1]:
                     fail(f"{stats}:1: no column {column} (not a MAP-Elites run?)")
-            rows.append({"study": study, "run_dir": r["run_dir"], "config": r["config"], "seed": r["seed"],
-                         "evaluations": last["evaluations"], "batches": int(last["generation"]) + 1,
-                         "best": last["best"], "qd_score": last["qd_score"], "coverage": last["coverage"],
-                         "filled": last["filled"], "wall_seconds": r["wall_seconds"]})
+            yield study, r, rows
+
+
+def found_rows(studies):
+    rows = []
+    for study, r, stats in finished_runs(studies):
+        last = stats[-1]
+        rows.append({"study": study, "run_dir": r["run_dir"], "config": r["config"], "seed": r["seed"],
+                     "evaluations": last["evaluations"], "batches": int(last["generation"]) + 1,
+                     "best": last["best"], "qd_score": last["qd_score"], "coverage": last["coverage"],
+                     "filled": last["filled"], "wall_seconds": r["wall_seconds"]})
     return rows
 
 
@@ -127,19 +134,12 @@ CURVE_STEP = 500   # evaluations between the points a run keeps in the curve led
 def found_curve_points(studies):
     """Each finished run's QD-score, coverage and best every CURVE_STEP evaluations, and at its end."""
     points = []
-    for study in STUDIES_OF:
-        index = studies / study / "index.csv"
-        if not index.exists():
-            continue
-        for r in read_csv(index):
-            if r["status"] != "done":
-                continue
-            rows = read_csv(studies / study / r["run_dir"] / "stats.csv")
-            for i, row in enumerate(rows):
-                if int(row["evaluations"]) % CURVE_STEP == 0 or i == len(rows) - 1:
-                    points.append({"study": study, "config": r["config"], "seed": r["seed"],
-                                   "evaluations": row["evaluations"], "qd_score": row["qd_score"],
-                                   "coverage": row["coverage"], "best": row["best"]})
+    for study, r, rows in finished_runs(studies):
+        for i, row in enumerate(rows):
+            if int(row["evaluations"]) % CURVE_STEP == 0 or i == len(rows) - 1:
+                points.append({"study": study, "config": r["config"], "seed": r["seed"],
+                               "evaluations": row["evaluations"], "qd_score": row["qd_score"],
+                               "coverage": row["coverage"], "best": row["best"]})
     return points
 
 

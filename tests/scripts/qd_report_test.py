@@ -73,12 +73,15 @@ study = work / "studies" / "me-gait-15000"
 for seed, status in ((1, "done"), (2, "running")):
     folder = study / "runs" / "R1" / f"s{seed}"
     folder.mkdir(parents=True)
-    (folder / "stats.csv").write_text("generation,best,evaluations,qd_score,coverage\n" + "".join(
-        f"{g},{g + 1},{(g + 1) * 250},{10 * (g + 1)},{0.1 * (g + 1):.1f}\n" for g in range(5)))
-(study / "index.csv").write_text("run_dir,config,seed,status\nruns/R1/s1,R1,1,done\nruns/R1/s2,R1,2,running\n")
+    (folder / "stats.csv").write_text("generation,best,evaluations,qd_score,coverage,filled\n" + "".join(
+        f"{g},{g + 1},{(g + 1) * 250},{10 * (g + 1)},{0.1 * (g + 1):.1f},{g + 1}\n" for g in range(5)))
+(study / "index.csv").write_text("run_dir,config,seed,status,wall_seconds\nruns/R1/s1,R1,1,done,9.5\n"
+                                 "runs/R1/s2,R1,2,running,1.0\n")
 points = qd.found_curve_points(work / "studies")
 check([(p["seed"], p["evaluations"]) for p in points] == [("1", "500"), ("1", "1000"), ("1", "1250")],
       f"curve points: {[(p['seed'], p['evaluations']) for p in points]}")
+check([(r["seed"], r["batches"], r["qd_score"]) for r in qd.found_rows(work / "studies")] == [("1", 5, "50")],
+      "the run ledger takes a finished run's last row")
 series = qd.curve_series(points)
 check(series[("me-gait-15000", "R1")][1250] == {"qd_score": [50.0], "coverage": [0.5]}, f"curve series: {series}")
 
