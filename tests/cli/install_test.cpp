@@ -278,7 +278,7 @@ TEST(Install, PythonPackageImportsFromThePrefixAndScores) {
     const ScratchDir scratch("install-python");
     const Shell r = sh("cd " + q(scratch.path) + " && env -u CIC_EXECUTABLE PYTHONPATH=" + q(site) +
                        " /usr/bin/python3 -c \"import cic; ev = cic.Evaluator('r1_gait.xml', "
-                       "set={'Simulator.sample_to': 1}); print(cic.executable()); print(ev.settings_file); "
+                       "set={'Simulator.sample_to': 1, 'Simulator.delayed_start': 0}); print(cic.executable()); print(ev.settings_file); "
                        "print(len(ev.evaluate([[0.5] * ev.dimension]).fitness))\" 2>&1");
     ASSERT_EQ(r.rc, 0) << r.out;
     EXPECT_HAS(r.out, (p / "bin" / "cic").string() + "\n");
