@@ -21,6 +21,7 @@
 #include "cic/experiments/map_elites_grid.hpp"
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
+#include "cic/experiments/registry.hpp"
 
 namespace cic::app {
 namespace fs = std::filesystem;
@@ -56,15 +57,6 @@ Source locate(const std::string& what) {
     return s;
 }
 
-std::vector<std::string> joint_names_of(const sim::RobotSpec& robot) {
-    std::vector<std::string> names;
-    for (int m : robot.actuated()) {
-        const auto& mod = robot.modules[static_cast<std::size_t>(m)];
-        names.push_back(mod.name.empty() ? fmt::format("m{}", m) : mod.name);
-    }
-    return names;
-}
-
 int centre_body_of(const sim::RobotSpec& robot) {
     const sim::BodyLayout layout = sim::make_body_layout(robot);
     return layout.geoms[static_cast<std::size_t>(layout.chassis_geom[static_cast<std::size_t>(robot.centre)])].body;
@@ -95,7 +87,7 @@ std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& setti
     item.replayed_fitness = r.fitness;
     item.raw_fitness = r.fitness;   // no penalty in the gait experiment
     item.centre_body = centre_body_of(setup.robot);
-    item.joint_names = joint_names_of(setup.robot);
+    item.joint_names = sim::joint_names(setup.robot);
     fill_walk(item, setup.robot, r);
     return {std::move(item)};
 }
@@ -193,7 +185,7 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
             if (trace)
                 for (const auto& row : r.trace) item.raw_outputs.push_back(row.desired);
         } else {
-            const hypergp::Outcome o = hypergp::run(*model, e->genotype, opt, trace);
+            const hypergp::Outcome o = experiments::evaluate_as_type(*model, settings, e->genotype, opt, trace);
             r = o.result;
             item.replayed_fitness = o.fitness;
             item.raw_fitness = o.distance_fitness;
@@ -207,7 +199,7 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
         if (r.recording) item.recording = *r.recording;
         item.trace = r.trace;
         item.centre_body = centre_body_of(robot);
-        item.joint_names = joint_names_of(robot);
+        item.joint_names = sim::joint_names(robot);
         fill_walk(item, robot, r);
         items.push_back(std::move(item));
     }
@@ -225,10 +217,7 @@ void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalRes
     std::tie(item.distance, item.elevation) = eq71_terms(robot, r);
     if (r.module_ground_steps.empty()) return;
     item.duty_factors = sim::duty_factors(robot, r);
-    for (int m : sim::branch_ends(robot)) {
-        const std::string& name = robot.modules[static_cast<std::size_t>(m)].name;
-        item.foot_names.push_back(name.empty() ? "m" + std::to_string(m) : name);
-    }
+    item.foot_names = sim::foot_names(robot);
 }
 
 std::vector<ReplayItem> replay(const std::string& source, const std::string& individual, int count, double fps,
@@ -267,7 +256,7 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
 
     const hypergp::Model model = hypergp::Model::from_settings(settings);
     const int centre_body = centre_body_of(model.robot);
-    const std::vector<std::string> joint_names = joint_names_of(model.robot);
+    const std::vector<std::string> joint_names = sim::joint_names(model.robot);
 
     std::vector<ReplayItem> items;
     for (const auto& ind : chosen) {
@@ -275,7 +264,8 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
         opt.record_fps = fps;
         opt.record_trace = trace;
         opt.record_ground = trace;
-        const hypergp::Outcome o = hypergp::run(model, ind->genotype, opt, trace);
+        // Scored as the run's type scores it (a registered type's own fitness), eq. 7.1 beside it.
+        const hypergp::Outcome o = experiments::evaluate_as_type(model, settings, ind->genotype, opt, trace);
         ReplayItem item;
         item.label = fmt::format("generation {}, individual {}", pop.population.generation, ind->id);
         item.stored_fitness = ind->fitness;
