@@ -47,7 +47,8 @@ viz::ViewEntry to_entry(ReplayItem& item) {
     // The HUD shows "generation G | individual I", or the label alone (a preset
     // replay, or an archive's elite: "cell I,J,... (N), batch B").
     e.info.generation = item.elite ? -1 : item.generation;
-    e.info.individual = item.generation >= 0 && !item.elite ? std::to_string(item.id) : item.label;
+    e.info.individual = item.generation >= 0 && !item.elite ? (item.who.empty() ? std::to_string(item.id) : item.who)
+                                                            : item.label;
     e.info.fitness = item.replayed_fitness;
     e.recording = std::move(item.recording);
     e.centre_body = item.centre_body;

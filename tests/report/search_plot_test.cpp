@@ -1,0 +1,222 @@
+// Plots that fit each search (GP, gait CMA-ES with IPOP, MAP-Elites), the
+// archive heatmap's labels and best-cell frame, the centre's path from above,
+// and one meaning of "best" (stats.csv's best_so_far, the gait replay's
+// generation), on real tiny runs.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "cic/core/error.hpp"
+#include "cic/io/archive_xml.hpp"
+#include "cic/report/archive_plot.hpp"
+#include "cic/report/path_plot.hpp"
+#include "cic/report/plot.hpp"
+#include "cic/report/replay.hpp"
+#include "support/png_image.hpp"
+#include "support/run_helpers.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace cic;
+using namespace cic::app;
+using cic::testing::read_text;
+
+// IPOP CMA-ES on R0 that restarts (as golden_test's), and the golden MAP-Elites gait run.
+std::string ipop_settings() {
+    return R"(<settings>
+  <Experiment><type>gait</type><seed>4</seed><workers>2</workers></Experiment>
+  <Gait><optimizer>cmaes</optimizer><evaluations>150</evaluations><populationSize>7</populationSize>
+      <bounds>reflect</bounds><restarts>ipop</restarts><restartPatience>3</restartPatience></Gait>
+  <Simulator><robot_type>0</robot_type><sample_to>2.5</sample_to><delayed_start>0.5</delayed_start></Simulator>
+</settings>
+)";
+}
+
+class SearchPlots : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        dir_ = new fs::path(cic::testing::temp_dir("search-plots"));
+        const auto gp = cic::testing::run_settings(*dir_, "gp", cic::testing::tiny_hypergp_settings(3, 2));
+        const auto gait = cic::testing::run_settings(*dir_, "ipop", ipop_settings());
+        const auto me = cic::testing::run_settings(*dir_, "me", cic::testing::golden_me_gait_settings(2));
+        ASSERT_EQ(gp.rc, 0) << gp.log;
+        ASSERT_EQ(gait.rc, 0) << gait.log;
+        ASSERT_EQ(me.rc, 0) << me.log;
+        gp_ = new fs::path(gp.run);
+        gait_ = new fs::path(gait.run);
+        me_ = new fs::path(me.run);
+    }
+    static void TearDownTestSuite() {
+        fs::remove_all(*dir_);
+        delete dir_, delete gp_, delete gait_, delete me_;
+    }
+    static inline fs::path *dir_ = nullptr, *gp_ = nullptr, *gait_ = nullptr, *me_ = nullptr;
+};
+
+TEST_F(SearchPlots, KnowsEachRunsSearch) {
+    EXPECT_EQ(search_kind_of(*gp_), SearchKind::GP);
+    EXPECT_EQ(search_kind_of(*gait_), SearchKind::Gait);
+    EXPECT_EQ(search_kind_of(*me_), SearchKind::MapElites);
+    EXPECT_EQ(x_axis_name(SearchKind::MapElites), "batch");
+    EXPECT_TRUE(restart_generations(*gp_).empty());
+    const auto restarts = restart_generations(*gait_);
+    ASSERT_FALSE(restarts.empty()) << "the IPOP run should restart";
+    EXPECT_GT(restarts.front(), 0);
+    EXPECT_TRUE(is_archive_run(*me_));
+    EXPECT_FALSE(is_archive_run(*gait_));
+}
+
+TEST_F(SearchPlots, GaitStatsHoldBothBestsAndAgreeWithTheChampion) {
+    const auto rows = read_stats_csv(*gait_ / "stats.csv");
+    ASSERT_GT(rows.size(), 3u);
+    EXPECT_NE(read_text(*gait_ / "stats.csv").find(",failed,best_so_far\n"), std::string::npos);
+    double so_far = -INFINITY;
+    bool differ = false;
+    for (const auto& r : rows) {
+        so_far = std::max(so_far, r.best);
+        EXPECT_EQ(r.best_so_far, so_far) << "generation " << r.generation;
+        differ = differ || r.best != r.best_so_far;
+    }
+    EXPECT_TRUE(differ) << "a run whose generations' bests never fall cannot show the two columns apart";
+    // The replay's fitness is the last best so far, and it names the generation that found it.
+    const auto items = replay(gait_->string(), "best", 1, 10.0, false);
+    ASSERT_EQ(items.size(), 1u);
+    EXPECT_EQ(items[0].stored_fitness, rows.back().best_so_far);
+    const auto found = std::find_if(rows.begin(), rows.end(), [&](const StatsRow& r) { return r.best == rows.back().best_so_far; });
+    ASSERT_NE(found, rows.end());
+    EXPECT_EQ(items[0].generation, found->generation);
+    EXPECT_NE(items[0].label.find("found in generation " + std::to_string(found->generation)), std::string::npos)
+        << items[0].label;
+    // The run log's last line agrees too ("champion" is the best so far).
+    EXPECT_NE(read_text(*gait_ / "run.log").find(fmt::format("champion {:.17g}", rows.back().best_so_far)),
+              std::string::npos);
+}
+
+TEST_F(SearchPlots, StatsWithoutBestSoFarGetTheRunningMaximum) {
+    const auto rows = read_stats_csv(*gp_ / "stats.csv");
+    double so_far = -INFINITY;
+    for (const auto& r : rows) {
+        so_far = std::max(so_far, r.best);
+        EXPECT_EQ(r.best_so_far, so_far);
+        EXPECT_TRUE(std::isnan(r.qd_score));
+    }
+    const auto me = read_stats_csv(*me_ / "stats.csv");
+    EXPECT_GT(me.back().qd_score, 0.0);
+    EXPECT_GT(me.back().coverage, 0.0);
+    EXPECT_LE(me.back().coverage, 1.0);
+}
+
+TEST_F(SearchPlots, EachSearchGetsItsOwnPanelsAndXAxis) {
+    const fs::path gp = *dir_ / "gp.svg", gait = *dir_ / "gait.svg", me = *dir_ / "me.svg";
+    plot_runs({*gp_}, gp);
+    plot_runs({*gait_}, gait);
+    plot_runs({*me_}, me);
+    const std::string g = read_text(gp), c = read_text(gait), m = read_text(me);
+    EXPECT_NE(g.find("depth (solid: max"), std::string::npos);
+    EXPECT_NE(g.find(">generation<"), std::string::npos);
+    // Gait: best so far and each generation's best, restarts marked; no tree panels.
+    EXPECT_NE(c.find("solid: so far, dashed: each generation"), std::string::npos);
+    EXPECT_NE(c.find("IPOP restarts"), std::string::npos);
+    EXPECT_EQ(c.find("depth"), std::string::npos);
+    EXPECT_EQ(c.find("size (solid"), std::string::npos);
+    // MAP-Elites: QD-score, coverage, the best elite, per batch; no tree panels.
+    EXPECT_NE(m.find("QD-score"), std::string::npos);
+    EXPECT_NE(m.find("coverage (share of cells filled)"), std::string::npos);
+    EXPECT_NE(m.find("best elite"), std::string::npos);
+    EXPECT_NE(m.find(">batch<"), std::string::npos);
+    EXPECT_EQ(m.find(">generation<"), std::string::npos);
+    EXPECT_EQ(m.find("depth"), std::string::npos);
+    // Runs of two searches do not share panels.
+    EXPECT_THROW(plot_runs({*gp_, *gait_}, *dir_ / "mixed.svg"), InputError);
+}
+
+TEST_F(SearchPlots, PlotOnAnArchiveRunAlsoDrawsTheHeatmap) {
+    const fs::path log = *dir_ / "plot.log";
+    ASSERT_EQ(cic::testing::run_command("plot " + me_->string() + " --out " + (*dir_ / "curves.svg").string(), log), 0)
+        << read_text(log);
+    EXPECT_TRUE(fs::exists(*dir_ / "curves.svg"));
+    ASSERT_TRUE(fs::exists(*dir_ / "curves-archive.svg")) << read_text(log);
+    EXPECT_NE(read_text(*dir_ / "curves-archive.svg").find("(framed)"), std::string::npos);
+}
+
+TEST_F(SearchPlots, HeatmapShowsEveryDimensionLabelsBinsAndFramesTheBestCell) {
+    const io::ArchiveFile a = io::load_archive(*me_ / "population.xml");
+    ASSERT_EQ(a.grid.dimensions(), 4u);
+    const ArchiveSlices l = slice_layout(a.grid, 0, 1);
+    EXPECT_EQ(l.outer, (std::vector<std::size_t>{2, 3}));
+    EXPECT_EQ(l.blocks_x, 3);
+    EXPECT_EQ(l.blocks_y, 3);
+    EXPECT_EQ(l.centre_of({2, 1, 0, 0}), (std::array<double, 2>{2.5, 1.5}));
+    EXPECT_EQ(l.centre_of({0, 0, 1, 2}), (std::array<double, 2>{4.5, 8.5}));
+    EXPECT_THROW(slice_layout(a.grid, 0, 0), InputError);
+    EXPECT_THROW(slice_layout(a.grid, 0, 4), InputError);
+
+    const fs::path svg = *dir_ / "heat.svg";
+    plot_archive(*me_, svg);
+    const std::string text = read_text(svg);
+    const io::ArchiveElite* best = a.best();
+    EXPECT_NE(text.find("in cell " + a.grid.cell_name(best->cell) + " (framed)"), std::string::npos);
+    for (int d = 1; d <= 4; ++d)
+        EXPECT_NE(text.find("dimension " + std::to_string(d) + " (duty factor, foot"), std::string::npos) << d;
+    EXPECT_NE(text.find("block: bin of dimension 3"), std::string::npos);
+    EXPECT_NE(text.find("block: bin of dimension 4"), std::string::npos);
+
+    // The frame's pixels: magenta, centred on the best cell's place in the plot area.
+    ArchivePlotOptions o;
+    o.width = 900;
+    o.height = 760;
+    const fs::path png = *dir_ / "heat.png";
+    plot_archive(*me_, png, o);
+    const auto image = cic::testing::read_png(png);
+    ASSERT_EQ(image.width, 900);
+    double sx = 0, sy = 0;
+    int n = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const auto c = image.at(x, y);
+            if (c[0] > 230 && c[2] > 230 && c[1] < 60) sx += x, sy += y, ++n;
+        }
+    ASSERT_GT(n, 40) << "no magenta frame";
+    const auto centre = l.centre_of(a.grid.coordinates(best->cell));
+    const double px = (kHeatmapArea[0] + (centre[0] + 0.5) / (l.width() + 1) * (kHeatmapArea[1] - kHeatmapArea[0])) * 900;
+    // Image rows run from the top, the plot's y from the bottom.
+    const double py =
+        (1 - (kHeatmapArea[2] + (centre[1] + 0.5) / (l.height() + 1) * (kHeatmapArea[3] - kHeatmapArea[2]))) * 760;
+    const double cell_px = (kHeatmapArea[1] - kHeatmapArea[0]) * 900 / (l.width() + 1);
+    EXPECT_NEAR(sx / n, px, cell_px / 3);
+    EXPECT_NEAR(sy / n, py, cell_px / 3);
+}
+
+TEST_F(SearchPlots, PathFromAboveMarksThePreferredAxis) {
+    const auto items = replay(gp_->string(), "best", 1, 10.0, true);
+    const CentrePath p = centre_path(items.front(), "gp");
+    EXPECT_EQ(p.xy.size(), items.front().trace.size());
+    EXPECT_EQ(p.preferred_axis, 0);   // R0 walks along x
+    EXPECT_EQ(p.xy.back()[0], items.front().trace.back().centre[0]);
+    EXPECT_NEAR(std::fabs(p.measured_to[0] - p.measured_from[0]), p.distance, 1e-12);
+    const auto paths = best_paths({*gp_, *gait_});
+    ASSERT_EQ(paths.size(), 2u);
+    EXPECT_EQ(paths[0].label, gp_->filename().string());
+    EXPECT_EQ(paths[0].xy, p.xy);
+    const fs::path svg = *dir_ / "path.svg";
+    plot_paths(paths, svg);
+    const std::string text = read_text(svg);
+    EXPECT_NE(text.find("preferred axis x (eq. 7.1)"), std::string::npos);
+    EXPECT_NE(text.find(paths[1].label + ": "), std::string::npos);
+    EXPECT_THROW(plot_paths({}, svg), std::invalid_argument);
+    ReplayItem empty;
+    EXPECT_THROW(centre_path(empty, "x"), std::invalid_argument);
+    // Through the command line, with a bad combination refused (exit 2).
+    const fs::path log = *dir_ / "path.log";
+    EXPECT_EQ(cic::testing::run_command("plot --path " + gp_->string() + " --out " + (*dir_ / "p.png").string(), log), 0)
+        << read_text(log);
+    EXPECT_TRUE(fs::exists(*dir_ / "p.png"));
+    EXPECT_EQ(cic::testing::run_command("plot --path --archive " + me_->string(), log), 2);
+}
+
+} // namespace
