@@ -34,6 +34,8 @@ MORE_PACKAGES=(
   python3-deap
   # docs/analysis.md: a study read into pandas, a figure redrawn with matplotlib
   python3-pandas python3-matplotlib
+  # cic report's test: the page rendered in headless Chromium, which must fetch nothing
+  chromium
 )
 
 PACKAGES=("${RUN_PACKAGES[@]}")

@@ -25,7 +25,13 @@ std::string folder_name(const fs::path& dir) {
     return fs::weakly_canonical(p).filename().string();
 }
 
-// A study's run to show for a configuration: the one with the highest best.
+CentrePath replayed_path(const fs::path& run, std::string label) {
+    auto items = replay(run.string(), "best", 1, 10.0, true);
+    return centre_path(items.front(), std::move(label));
+}
+
+} // namespace
+
 const StudyRun* best_run_of(const StudyGroup& group) {
     const StudyRun* best = nullptr;
     auto score = [](const StudyRun& r) { return r.best_ever ? *r.best_ever : r.final_best.value_or(-INFINITY); };
@@ -33,13 +39,6 @@ const StudyRun* best_run_of(const StudyGroup& group) {
         if (!best || score(*r) > score(*best)) best = r;
     return best;
 }
-
-CentrePath replayed_path(const fs::path& run, std::string label) {
-    auto items = replay(run.string(), "best", 1, 10.0, true);
-    return centre_path(items.front(), std::move(label));
-}
-
-} // namespace
 
 CentrePath centre_path(const ReplayItem& item, std::string label) {
     CentrePath p;

@@ -27,6 +27,10 @@ struct CentrePath {
 // the item has neither.
 CentrePath centre_path(const ReplayItem& item, std::string label);
 
+// The run a study shows for a configuration: the highest best_ever (else
+// final_best) among its runs; nullptr when it has none.
+const StudyRun* best_run_of(const StudyGroup& group);
+
 // The best individual of each run folder, or of the best run (highest
 // best_ever, else final_best) of each configuration of one study folder,
 // replayed with a trace. Labels: the run folder's name, or "CONFIG (seed S)".
