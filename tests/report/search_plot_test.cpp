@@ -219,4 +219,38 @@ TEST_F(SearchPlots, PathFromAboveMarksThePreferredAxis) {
     EXPECT_EQ(cic::testing::run_command("plot --path --archive " + me_->string(), log), 2);
 }
 
+// A max depth that stays at the top of its range (10, a tic) was drawn on the
+// panel's frame and could not be seen; the panels keep room above and below.
+TEST(PlotPanels, AConstantLineStaysOffTheFrame) {
+    const fs::path dir = cic::testing::temp_dir("constant-line");
+    fs::create_directories(dir / "flat-001");
+    std::string text = "generation,best,mean,median,mean_depth,max_depth,mean_size,max_size,limit,illegal,evaluations,"
+                       "wall_seconds\n";
+    for (int g = 0; g < 6; ++g)
+        text += fmt::format("{},{},1,1,{},10,5,9,17,0,{},1\n", g, 1 + g, 2 + g * 1.6, 10 * (g + 1));
+    cic::testing::write_text(dir / "flat-001" / "stats.csv", text);
+    PlotOptions o;
+    o.width = 800;
+    o.height = 600;
+    plot_runs({dir / "flat-001"}, dir / "flat.png", o);
+    const auto image = cic::testing::read_png(dir / "flat.png");
+    // The depth panel is the bottom left quarter: find its rows that are mostly
+    // the series' blue (the constant max line) and mostly black (the frame's top).
+    int line_row = -1, frame_row = -1;
+    for (int y = image.height / 2; y < image.height; ++y) {
+        int blue = 0, black = 0;
+        for (int x = 0; x < image.width / 2; ++x) {
+            const auto c = image.at(x, y);
+            blue += std::abs(c[0] - 0x1f) < 40 && std::abs(c[1] - 0x77) < 40 && std::abs(c[2] - 0xb4) < 40;
+            black += c[0] < 60 && c[1] < 60 && c[2] < 60;
+        }
+        if (blue > image.width / 10 && line_row < 0) line_row = y;
+        if (black > image.width / 5 && frame_row < 0) frame_row = y;
+    }
+    ASSERT_GE(line_row, 0) << "no constant line in the depth panel: " << (dir / "flat.png");
+    ASSERT_GE(frame_row, 0) << "no frame found";
+    EXPECT_GT(line_row - frame_row, 5) << "the constant line lies on the frame";
+    fs::remove_all(dir);
+}
+
 } // namespace
