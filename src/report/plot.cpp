@@ -309,10 +309,23 @@ void plot_study(const fs::path& study, const fs::path& out_file, const StudyPlot
         panels = {panel("best fitness", fitness, 3), panel("mean fitness", fitness, 6),
                   panel("max depth", "depth", 12), panel("mean depth", "depth", 9)};
         break;
-    case SearchKind::Gait:
-        panels = {panel("best fitness so far", fitness, 15), panel("each generation's best", fitness, 3),
+    case SearchKind::Gait: {
+        // Every run's IPOP restarts, dotted in its configuration's colour.
+        std::string markers;
+        std::size_t k = 0;
+        for (const auto& group : group_study(index, options.include_unfinished)) {
+            if (stats_of(index, group).empty()) continue;
+            const std::string colour = fmt::format("rgb '{}'", kColours[k++ % kColours.size()]);
+            for (const StudyRun* r : group.runs) markers += restart_markers(restart_generations(index.run_path(*r)), colour);
+        }
+        panels = {panel(markers.empty() ? "best fitness so far" : "best fitness so far (dotted: IPOP restarts)", fitness,
+                        15),
+                  panel("each generation's best", fitness, 3),
                   panel("mean fitness of each generation's candidates", fitness, 6)};
+        panels.front().before = markers;
+        panels.front().after = "unset arrow\n";
         break;
+    }
     case SearchKind::MapElites:
         panels = {panel("QD-score", "QD-score", 18), panel("coverage", "coverage", 21),
                   panel("best elite (the best so far)", fitness, 15), panel("mean fitness of the elites", fitness, 6)};

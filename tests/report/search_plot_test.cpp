@@ -135,6 +135,25 @@ TEST_F(SearchPlots, EachSearchGetsItsOwnPanelsAndXAxis) {
     EXPECT_THROW(plot_runs({*gp_, *gait_}, *dir_ / "mixed.svg"), InputError);
 }
 
+// A study of gait runs: best so far, each generation's best, the restarts marked; no tree panels.
+TEST_F(SearchPlots, AGaitStudyGetsTheGaitPanelsWithRestarts) {
+    cic::testing::write_text(*dir_ / "ipop-base.xml", ipop_settings());
+    cic::testing::write_text(*dir_ / "ipop-sweep.xml",
+                             "<sweep name=\"ipop\">\n  <base>" + (*dir_ / "ipop-base.xml").string() +
+                                 "</base>\n  <output>" + (*dir_ / "ipop-study").string() +
+                                 "</output>\n  <grid><vary key=\"Gait.restartPatience\">2 3</vary></grid>\n"
+                                 "  <repeats count=\"1\" firstSeed=\"4\"/>\n</sweep>\n");
+    const fs::path log = *dir_ / "ipop-sweep.log";
+    ASSERT_EQ(cic::testing::run_command("--quiet sweep " + (*dir_ / "ipop-sweep.xml").string() + " --jobs 2", log), 0)
+        << read_text(log);
+    const fs::path svg = *dir_ / "ipop-study.svg";
+    plot_study(*dir_ / "ipop-study", svg);
+    const std::string text = read_text(svg);
+    EXPECT_NE(text.find("best fitness so far (dotted: IPOP restarts)"), std::string::npos);
+    EXPECT_NE(text.find("each generation's best"), std::string::npos);
+    EXPECT_EQ(text.find("depth"), std::string::npos);
+}
+
 TEST_F(SearchPlots, PlotOnAnArchiveRunAlsoDrawsTheHeatmap) {
     const fs::path log = *dir_ / "plot.log";
     ASSERT_EQ(cic::testing::run_command("plot " + me_->string() + " --out " + (*dir_ / "curves.svg").string(), log), 0)
