@@ -53,10 +53,12 @@ P plot_options(const PlotCommandOptions& o) {
 void add_plot_command(Command& app, CommandContext& ctx) {
     auto opts = std::make_shared<PlotCommandOptions>();
     Command cmd = app.subcommand(
-        "plot", "Plot best/mean fitness, depth and size per generation of run folders (folders named NAME-NNN "
-                "are grouped by NAME: mean curve, +-1 sd band) or of a study folder from cic sweep (one colour per "
-                "configuration), or best fitness so far against evaluations of several studies (--by-evaluations), or a "
-                "trace CSV with --trace");
+        "plot", "Plot run folders (folders named NAME-NNN are grouped by NAME: mean curve, +-1 sd band) or a study "
+                "folder from cic sweep (one colour per configuration), with the panels of their search: GP best/mean "
+                "fitness, depth and size per generation; gait best so far and each generation's best, IPOP restarts "
+                "marked; MAP-Elites QD-score, coverage and best elite per batch (and the archive's heatmap beside). "
+                "Or best fitness so far against evaluations of several studies (--by-evaluations), the centre's path "
+                "from above (--path), or a trace CSV (--trace)");
     cmd.option("runs", opts->runs,
                     "run folders (each holds stats.csv), or one study folder (holds index.csv), or with "
                     "--by-evaluations several study folders");
