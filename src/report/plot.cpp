@@ -189,9 +189,12 @@ void plot_runs(const std::vector<fs::path>& run_dirs, const fs::path& out_file, 
     ScratchDir scratch;
 
     std::vector<std::string> data_files;
+    bool best_falls = false;   // a generation's best below the best so far (GP without elitism)
     for (std::size_t g = 0; g < groups.size(); ++g) {
         std::vector<std::vector<StatsRow>> runs;
         for (const auto& dir : groups[g].runs) runs.push_back(read_stats_csv(dir / "stats.csv"));
+        for (const auto& run : runs)
+            for (const StatsRow& r : run) best_falls = best_falls || r.best < r.best_so_far;
         std::string text = "# generation runs best best_sd mean mean_sd mean_depth max_depth mean_size max_size "
                            "best_so_far best_so_far_sd qd_score qd_score_sd coverage coverage_sd\n";
         for (const auto& s : summarise(runs))
@@ -243,7 +246,9 @@ void plot_runs(const std::vector<fs::path>& run_dirs, const fs::path& out_file, 
     std::vector<Panel> panels;
     switch (kind) {
     case SearchKind::GP:
-        panels = {{"best fitness", fitness, curves(3, 4), "", ""},
+        panels = {best_falls ? Panel{"best fitness (solid: each generation's, dashed: so far)", fitness,
+                                     curves(3, 4, "", 11, " so far"), "", ""}
+                             : Panel{"best fitness", fitness, curves(3, 4), "", ""},
                   {"mean fitness", fitness, curves(5, 6), "", ""},
                   {"depth (solid: max, dashed: mean)", "depth", mean_max("depth", 7, 8), "", ""},
                   {"size (solid: max, dashed: mean)", "size", mean_max("size", 9, 10), "", ""}};

@@ -272,4 +272,24 @@ TEST(PlotPanels, AConstantLineStaysOffTheFrame) {
     fs::remove_all(dir);
 }
 
+// A GP run whose best falls (no elitism) shows the best so far beside each
+// generation's best; one whose best never falls keeps the single curve.
+TEST(PlotPanels, AGpRunWhoseBestFallsShowsTheBestSoFar) {
+    const fs::path dir = cic::testing::temp_dir("best-falls");
+    const std::string header = "generation,best,mean,median,mean_depth,max_depth,mean_size,max_size,limit,illegal,"
+                               "evaluations,wall_seconds\n";
+    for (const auto& [name, bests] : {std::pair<std::string, std::array<int, 3>>{"falls-001", {3, 1, 2}},
+                                      std::pair<std::string, std::array<int, 3>>{"climbs-001", {1, 2, 3}}}) {
+        std::string text = header;
+        for (int g = 0; g < 3; ++g) text += fmt::format("{},{},1,1,3,5,5,9,17,0,{},1\n", g, bests[static_cast<std::size_t>(g)], 10 * (g + 1));
+        fs::create_directories(dir / name);
+        cic::testing::write_text(dir / name / "stats.csv", text);
+        plot_runs({dir / name}, dir / (name + ".svg"));
+    }
+    EXPECT_NE(read_text(dir / "falls-001.svg").find("dashed: so far"), std::string::npos);
+    EXPECT_NE(read_text(dir / "falls-001.svg").find("falls so far"), std::string::npos);
+    EXPECT_EQ(read_text(dir / "climbs-001.svg").find("so far"), std::string::npos);
+    fs::remove_all(dir);
+}
+
 } // namespace
