@@ -292,4 +292,69 @@ TEST(PlotPanels, AGpRunWhoseBestFallsShowsTheBestSoFar) {
     fs::remove_all(dir);
 }
 
+// Horizontal runs of dark pixels in a row between x0 and x1: their lengths.
+std::vector<int> dark_runs(const cic::testing::RgbImage& image, int y, int x0, int x1) {
+    std::vector<int> runs;
+    int run = 0;
+    for (int x = x0; x <= x1; ++x) {
+        const auto c = image.at(x, y);
+        if (c[0] < 110 && c[1] < 110 && c[2] < 110) {
+            ++run;
+        } else if (run > 0) {
+            runs.push_back(run);
+            run = 0;
+        }
+    }
+    if (run > 0) runs.push_back(run);
+    return runs;
+}
+
+// The key's box was as tall as its text, and in PNG output its bottom edge
+// covered the underscores of the last label ("l_l_l_l" looked like "l l l l").
+// Now the underscores are ink of their own, above the box's bottom edge.
+TEST(PlotPanels, TheKeyShowsTheUnderscoresOfItsLastLabelInPng) {
+    const fs::path dir = cic::testing::temp_dir("underscore");
+    std::string text = "generation,best,mean,median,mean_depth,max_depth,mean_size,max_size,limit,illegal,evaluations,"
+                       "wall_seconds\n";
+    for (int g = 0; g < 4; ++g) text += fmt::format("{},{},1,1,3,5,5,9,17,0,{},1\n", g, 1 + g, 10 * (g + 1));
+    fs::create_directories(dir / "l_l_l_l-001");
+    cic::testing::write_text(dir / "l_l_l_l-001" / "stats.csv", text);
+    PlotOptions o;
+    o.width = 800;
+    o.height = 600;
+    plot_runs({dir / "l_l_l_l-001"}, dir / "key.png", o);
+    const auto image = cic::testing::read_png(dir / "key.png");
+    // The top left panel's key: the rows with one dark run of 50 to 250 pixels are its top and bottom edges.
+    const int x1 = image.width / 2 - 10;
+    std::vector<int> edges;
+    for (int y = 0; y < image.height / 2; ++y) {
+        const auto runs = dark_runs(image, y, 0, x1);
+        if (std::any_of(runs.begin(), runs.end(), [](int r) { return r >= 50 && r <= 250; })) edges.push_back(y);
+    }
+    ASSERT_GE(edges.size(), 2u) << "no key box found";
+    const int bottom = edges.back();
+    // The box's left and right edges: where its bottom edge's run starts and ends.
+    int left = -1, right = -1;
+    for (int x = 0, run = 0; x <= x1; ++x) {
+        const auto c = image.at(x, bottom);
+        run = c[0] < 110 && c[1] < 110 && c[2] < 110 ? run + 1 : 0;
+        if (run == 50) left = x - 49;
+        if (run >= 50) right = x;
+    }
+    ASSERT_GT(right, left);
+    // The lowest row inside the box with ink wider than the l's stems (1 or 2 pixels): the
+    // underscores, three runs of at least 4 pixels, clear of the bottom edge.
+    int lowest = -1;
+    for (int y = bottom - 1; y > edges.front() && lowest < 0; --y) {
+        const auto runs = dark_runs(image, y, left + 2, right - 2);
+        if (std::any_of(runs.begin(), runs.end(), [](int r) { return r >= 3; })) lowest = y;
+    }
+    ASSERT_GT(lowest, 0) << "no underscore (no ink wider than the l's stems) above the key's bottom edge";
+    const auto runs = dark_runs(image, lowest, left + 2, right - 2);
+    EXPECT_GE(std::count_if(runs.begin(), runs.end(), [](int r) { return r >= 4 && r < 50; }), 3)
+        << "row " << lowest << " (key bottom " << bottom << ") has no underscores";
+    EXPECT_LT(lowest, bottom - 1) << "the underscores touch the key's edge";
+    fs::remove_all(dir);
+}
+
 } // namespace
