@@ -34,8 +34,9 @@ MORE_PACKAGES=(
   python3-deap
   # docs/analysis.md: a study read into pandas, a figure redrawn with matplotlib
   python3-pandas python3-matplotlib
-  # cic report's test: the page rendered in headless Chromium, which must fetch nothing
-  chromium
+  # cic report's test: the page rendered in headless Chromium, which must fetch nothing;
+  # libpng: the tests read the pixels of figures and screenshots (tests/support/png_image.hpp)
+  chromium libpng-dev
 )
 
 PACKAGES=("${RUN_PACKAGES[@]}")
