@@ -18,6 +18,7 @@
 #include "cic/sim/layout.hpp"
 #include "cic/io/archive_xml.hpp"
 #include "cic/io/gait_xml.hpp"
+#include "cic/report/plot.hpp"
 #include "cic/experiments/map_elites_grid.hpp"
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
@@ -77,9 +78,23 @@ std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& setti
     opt.record_ground = trace;
     sim::EvalResult r = sim::evaluate(setup.robot, *controller, setup.sim, opt);
     ReplayItem item;
-    item.label = fmt::format("generation {}, best {} gait", g.generation, g.optimizer);
+    // The champion was found in the first generation whose best so far reached it.
+    int found = -1;
+    try {
+        for (const StatsRow& row : read_stats_csv(src.settings.parent_path() / "stats.csv"))
+            if (row.generation <= g.generation && row.best_so_far >= g.champion.fitness) {
+                found = row.generation;
+                break;
+            }
+    } catch (const InputError&) {
+        // no statistics beside the checkpoint: say only what the checkpoint knows
+    }
+    item.label = found >= 0 ? fmt::format("best {} gait, found in generation {} (of 0 to {})", g.optimizer, found,
+                                          g.generation)
+                            : fmt::format("best {} gait of generations 0 to {}", g.optimizer, g.generation);
+    item.who = fmt::format("best {} gait", g.optimizer);
     item.stored_fitness = g.champion.fitness;
-    item.generation = g.generation;
+    item.generation = found >= 0 ? found : g.generation;
     if (r.recording) item.recording = *r.recording;
     item.trace = r.trace;
     if (trace)
@@ -215,6 +230,11 @@ std::pair<double, double> eq71_terms(const sim::RobotSpec& robot, const sim::Eva
 // Eq. 7.1's terms and, when the ground was recorded, each foot's duty factor.
 void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalResult& r) {
     std::tie(item.distance, item.elevation) = eq71_terms(robot, r);
+    item.preferred_axis = robot.preferred == sim::Axis::X ? 0 : 1;
+    for (std::size_t k = 0; k < 3; ++k) {
+        item.measured_from[k] = r.start[k];
+        item.measured_to[k] = r.end[k];
+    }
     if (r.module_ground_steps.empty()) return;
     item.duty_factors = sim::duty_factors(robot, r);
     item.foot_names = sim::foot_names(robot);
