@@ -2,10 +2,8 @@
 #include "world.hpp"
 
 #include <algorithm>
-#include <cstdint>
-
-#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <mutex>
 #include <stdexcept>
 
@@ -21,6 +19,7 @@ World::World(const BodyLayout& layout, const SimConfig& cfg) : layout_(layout) {
     ensure_ode_initialised();
     max_contacts_ = cfg.max_contacts;
     self_collision_ = cfg.self_collision;
+    collision_space_ = cfg.collision_space;
     scratch_.resize(static_cast<std::size_t>(max_contacts_));
     dSurfaceParameters& s = contact_template_.surface;
     s.mode = dContactApprox1 | dContactSoftCFM | dContactBounce;
@@ -40,7 +39,12 @@ World::World(const BodyLayout& layout, const SimConfig& cfg) : layout_(layout) {
         dWorldSetERP(world_, cfg.erp);
         dWorldSetCFM(world_, cfg.cfm);
         dWorldSetQuickStepNumIterations(world_, cfg.quickstep_iterations);
-        robot_space_ = dSimpleSpaceCreate(nullptr);
+        switch (collision_space_) {
+        case kCollisionSimple: robot_space_ = dSimpleSpaceCreate(nullptr); break;
+        case kCollisionHash: robot_space_ = dHashSpaceCreate(nullptr); break;
+        case kCollisionSap: robot_space_ = dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ); break;
+        default: throw std::invalid_argument("World: collision_space must be 0, 1 or 2");
+        }
         dSpaceSetCleanup(robot_space_, 1);
         ground_ = dCreatePlane(nullptr, 0, 0, 1, 0);
         contact_group_ = dJointGroupCreate(0);
@@ -50,6 +54,7 @@ World::World(const BodyLayout& layout, const SimConfig& cfg) : layout_(layout) {
             bodies_.push_back(body);
             const Vec3& c = layout.body_com[b];
             dBodySetPosition(body, c[0], c[1], c[2]);
+            dBodySetData(body, reinterpret_cast<void*>(static_cast<std::uintptr_t>(b)));
         }
         // Combined mass per body: each box's mass moved to its offset from the centre of mass.
         std::vector<dMass> mass(bodies_.size());
@@ -76,6 +81,9 @@ World::World(const BodyLayout& layout, const SimConfig& cfg) : layout_(layout) {
             dJointID j = dJointCreateHinge(world_, nullptr);
             joints_.push_back(j);
             dJointAttach(j, bodies_[lj.chassis_body], bodies_[lj.panel_body]);
+            const auto lo = static_cast<std::uint64_t>(std::min(lj.chassis_body, lj.panel_body));
+            const auto hi = static_cast<std::uint64_t>(std::max(lj.chassis_body, lj.panel_body));
+            hinged_.insert(lo << 32 | hi);
             dJointSetHingeAnchor(j, lj.anchor[0], lj.anchor[1], lj.anchor[2]);
             const Vec3 a = axis_vector(lj.axis);
             dJointSetHingeAxis(j, a[0], a[1], a[2]);
@@ -142,10 +150,67 @@ void World::track_ground_geoms(bool on) {
 // A pair of robot geoms whose bounding boxes overlap. ODE's space never offers
 // two geoms of one body; bodies joined by a hinge (a module's chassis and its
 // panel) touch by construction and are left to the joint.
+bool World::hinged(dBodyID a, dBodyID b) const {
+    auto ia = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(dBodyGetData(a)));
+    auto ib = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(dBodyGetData(b)));
+    if (ia > ib) std::swap(ia, ib);
+    return hinged_.count(ia << 32 | ib) > 0;
+}
+
 void World::self_callback(void* data, dGeomID a, dGeomID b) {
     auto* self = static_cast<World*>(data);
-    if (dAreConnectedExcluding(dGeomGetBody(a), dGeomGetBody(b), dJointTypeContact)) return;
+    if (self->hinged(dGeomGetBody(a), dGeomGetBody(b))) return;
     self->self_contacts_ += self->add_contacts(a, b);
+}
+
+void World::collect_callback(void* data, dGeomID a, dGeomID b) {
+    static_cast<World*>(data)->pairs_.emplace_back(a, b);
+}
+
+// Hash and sap: the space only finds the candidate pairs; they are sorted and
+// handed to the callbacks in a fixed order. Hash: the order of the space's
+// geom list, which ODE keeps as the simple space does (the dirty geoms of a
+// step move to the front), and within a pair the earlier geom first, exactly
+// as the simple space calls back; so hash reproduces simple's contacts. Sap
+// keeps its geoms in arrays of its own: the layout's geom order instead.
+void World::collide_in_order() {
+    const auto layout_index = [](dGeomID g) {
+        return static_cast<int>(reinterpret_cast<std::uintptr_t>(dGeomGetData(g)) - 1);
+    };
+    auto by_rank = [this, &layout_index](const std::pair<dGeomID, dGeomID>& p, const std::pair<dGeomID, dGeomID>& q) {
+        const int pa = rank_[static_cast<std::size_t>(layout_index(p.first))];
+        const int qa = rank_[static_cast<std::size_t>(layout_index(q.first))];
+        if (pa != qa) return pa < qa;
+        if (p.second == ground_ || q.second == ground_) return false;
+        return rank_[static_cast<std::size_t>(layout_index(p.second))] <
+               rank_[static_cast<std::size_t>(layout_index(q.second))];
+    };
+    pairs_.clear();
+    dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::collect_callback);
+    const std::size_t ground_pairs = pairs_.size();
+    if (self_collision_) dSpaceCollide(robot_space_, this, &World::collect_callback);
+    if (pairs_.empty()) return;
+
+    rank_.resize(geoms_.size());
+    if (collision_space_ == kCollisionHash) {
+        const int n = dSpaceGetNumGeoms(robot_space_);
+        for (int i = 0; i < n; ++i) rank_[static_cast<std::size_t>(layout_index(dSpaceGetGeom(robot_space_, i)))] = i;
+    } else {
+        for (std::size_t i = 0; i < rank_.size(); ++i) rank_[i] = static_cast<int>(i);
+    }
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+        auto& [a, b] = pairs_[i];
+        if (i < ground_pairs) {
+            if (a == ground_) std::swap(a, b);   // robot geom first, as the simple space calls back
+        } else if (rank_[static_cast<std::size_t>(layout_index(b))] < rank_[static_cast<std::size_t>(layout_index(a))]) {
+            std::swap(a, b);
+        }
+    }
+    const auto self_begin = pairs_.begin() + static_cast<std::ptrdiff_t>(ground_pairs);
+    std::sort(pairs_.begin(), self_begin, by_rank);
+    std::sort(self_begin, pairs_.end(), by_rank);
+    for (std::size_t i = 0; i < pairs_.size(); ++i)
+        (i < ground_pairs ? &World::ground_callback : &World::self_callback)(this, pairs_[i].first, pairs_[i].second);
 }
 
 void World::step(double dt) {
@@ -155,8 +220,12 @@ void World::step(double dt) {
     if (track_ground_geoms_) std::fill(ground_geoms_.begin(), ground_geoms_.end(), 0);
     // Ground contacts first, then the robot against itself: a fixed order, so
     // QuickStep sees the same constraint rows in every run.
-    dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::ground_callback);
-    if (self_collision_) dSpaceCollide(robot_space_, this, &World::self_callback);
+    if (collision_space_ == kCollisionSimple) {
+        dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::ground_callback);
+        if (self_collision_) dSpaceCollide(robot_space_, this, &World::self_callback);
+    } else {
+        collide_in_order();
+    }
     dWorldQuickStep(world_, dt);
     dJointGroupEmpty(contact_group_);
 }

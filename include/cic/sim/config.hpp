@@ -25,6 +25,16 @@ enum class Descriptor { None, DutyFactor, Omni };
 // fitness that no real robot could walk. Longer steps need allow_coarse_step.
 inline constexpr double kMaxStablePhysicsStep = 0.025;
 
+// Simulator.collisionSpace. Simple: ODE's simple space, every pair of geoms
+// tested (cost quadratic in modules; the thesis's and the golden runs' bits).
+// Hash: ODE's hash space, pairs found in time linear in modules, then put into
+// the order the simple space reports them in, so that the contacts reach
+// QuickStep in the same order. Sap: ODE's sweep-and-prune space, pairs put
+// into the order of the robot's geoms (other bits than simple's).
+inline constexpr int kCollisionSimple = 0;
+inline constexpr int kCollisionHash = 1;
+inline constexpr int kCollisionSap = 2;
+
 struct SimConfig {
     double sample_from = 0.0;      // s
     double sample_step = 0.0125;   // control step, s
@@ -46,6 +56,9 @@ struct SimConfig {
     double failure_fitness = -1e3; // fitness given to a failed evaluation
     bool self_collision = true;    // bodies of the robot collide with each other
     bool allow_coarse_step = false;   // accept a physics step above kMaxStablePhysicsStep
+    // How the robot's geoms find the pairs to test for contact (docs/simulator.md,
+    // "Collision space"): kCollisionSimple, kCollisionHash or kCollisionSap.
+    int collision_space = 0;
 
     double physics_step() const { return sample_step / step_divider; }
 };
@@ -107,6 +120,11 @@ void for_each_field(Config& c, F&& f) {
                 "Accept a physics step sample_step / extraTimeStepDivider above the stability bound "
                 "(docs/simulator.md); results are then physics artefacts"},
       c.allow_coarse_step);
+    f(FieldSpec{"collision_space", "collisionSpace",
+                "How robot geoms find contact pairs: 0 simple (all pairs, quadratic in modules), 1 hash (linear, "
+                "pairs in simple's order), 2 sweep-and-prune (linear, pairs in geom order); docs/simulator.md",
+                0, 2},
+      c.collision_space);
 }
 
 // One reason a SimConfig cannot run, naming the fields (FieldSpec::name) involved.
