@@ -42,7 +42,7 @@ done
 [ -x "$CIC" ] || { echo "scaling.sh: no cic binary at $CIC (build first, or set CIC)" >&2; exit 2; }
 mkdir -p "$HERE/results"
 
-tune_studies=(tune-direct-r1 tune-direct-c8)
+tune_studies=(tune-direct-c8 tune-direct-r1)   # the centipede first: the new question
 
 ledger() {   # merge every study's index.csv, then the summary
   local s
@@ -53,12 +53,20 @@ ledger() {   # merge every study's index.csv, then the summary
   "$PY" "$ROOT/scripts/scaling-report.py" summary --results "$HERE/results"
 }
 
+# A failed commit (another git command holding the index lock) is retried, and
+# never stops the study: the next run's commit takes its rows along.
 commit_results() {   # MESSAGE
   [ "$commit" = 1 ] || return 0
-  git -C "$ROOT" add "$HERE/results"
-  if ! git -C "$ROOT" diff --cached --quiet -- "$HERE/results"; then
-    git -C "$ROOT" commit --quiet -m "$1" -- "$HERE/results"
-  fi
+  local try
+  for try in 1 2 3; do
+    if git -C "$ROOT" add "$HERE/results" &&
+       { git -C "$ROOT" diff --cached --quiet -- "$HERE/results" ||
+         git -C "$ROOT" commit --quiet -m "$1" -- "$HERE/results"; }; then
+      return 0
+    fi
+    sleep 5
+  done
+  echo "scaling.sh: could not commit the ledger (the next run's commit will carry it)" >&2
 }
 
 # One study: without --commit, one `cic sweep`; with it, its pending tasks in
