@@ -78,7 +78,7 @@ run_study() {   # STUDY
     "$CIC" sweep "$file" --output "$dir" --jobs "$jobs" --workers 1 >&2
     return 0
   fi
-  mapfile -t pending < <("$CIC" sweep "$file" --output "$dir" --dry-run | awk '$1 ~ /^[0-9]+$/ && $2 != "done" {print $1 " " $3}')
+  mapfile -t pending < <("$CIC" sweep "$file" --output "$dir" --dry-run | awk '$1 ~ /^[0-9]+$/ && $3 ~ /^runs\// && $2 != "done" {print $1 " " $3}')
   local i=0 batch=() item
   while [ $i -lt ${#pending[@]} ]; do
     batch=("${pending[@]:i:jobs}")
