@@ -23,7 +23,7 @@ GaitSpec wave(std::size_t joints) {
     return g;
 }
 
-// Args: pairs P (8P - 1 modules), collision space (0 simple, 1 hash, 2 sap).
+// Args: pairs P (8P - 1 modules), collision space (0 simple, 1 sweep, 2 sap).
 void BM_CentipedeEvaluation(benchmark::State& state) {
     const RobotSpec robot = centipede(static_cast<int>(state.range(0)), false);
     SimConfig cfg;   // the thesis's 15 s at 0.0125 s, self-collision on

@@ -94,7 +94,7 @@ for b in json.load(sys.stdin)["benchmarks"]:
     _, p, space = b["name"].split("/")[:3]
     unit = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
     t[(int(p), int(space))] = (b["cpu_time"] * unit, int(b["modules"]))
-names = {0: "simple", 1: "hash", 2: "sap"}
+names = {0: "simple", 1: "sweep", 2: "sap"}
 pairs = sorted({p for p, _ in t})
 print("  " + "modules".rjust(7) + "".join((" " + names[s] + " ms").rjust(11) + " ms/module" for s in names))
 for p in pairs:

@@ -108,10 +108,12 @@ for stage in "${stages[@]}"; do
       robots=(R1 R2 centipede-2 centipede-4 centipede-8 centipede-16
               centipede-2-irregular centipede-4-irregular centipede-8-irregular centipede-16-irregular)
       for r in "${robots[@]}"; do
-        arg=$r; [[ "$r" == centipede* ]] && arg="$ROOT/settings/robots/$r.xml"
+        # The centipedes as their sweeps run them: collision search sweep (simple's bits, faster).
+        arg=$r space=0; [[ "$r" == centipede* ]] && arg="$ROOT/settings/robots/$r.xml" space=1
         best=""
         for _ in 1 2 3; do
-          w=$("$CIC" simulate --robot "$arg" --controller sine:0.6,0.5 2>&1 | awk '/^wall time/ {print $3}')
+          w=$("$CIC" simulate --robot "$arg" --controller sine:0.6,0.5 --set Simulator.collisionSpace=$space 2>&1 |
+              awk '/^wall time/ {print $3}')
           if [ -z "$best" ] || awk -v a="$w" -v b="$best" 'BEGIN {exit !(a < b)}'; then best=$w; fi
         done
         echo "$r $best"

@@ -41,7 +41,7 @@ World::World(const BodyLayout& layout, const SimConfig& cfg) : layout_(layout) {
         dWorldSetQuickStepNumIterations(world_, cfg.quickstep_iterations);
         switch (collision_space_) {
         case kCollisionSimple: robot_space_ = dSimpleSpaceCreate(nullptr); break;
-        case kCollisionHash: robot_space_ = dHashSpaceCreate(nullptr); break;
+        case kCollisionSweep: robot_space_ = dSimpleSpaceCreate(nullptr); break;   // searched by sweep_self_pairs
         case kCollisionSap: robot_space_ = dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ); break;
         default: throw std::invalid_argument("World: collision_space must be 0, 1 or 2");
         }
@@ -167,12 +167,63 @@ void World::collect_callback(void* data, dGeomID a, dGeomID b) {
     static_cast<World*>(data)->pairs_.emplace_back(a, b);
 }
 
-// Hash and sap: the space only finds the candidate pairs; they are sorted and
-// handed to the callbacks in a fixed order. Hash: the order of the space's
-// geom list, which ODE keeps as the simple space does (the dirty geoms of a
-// step move to the front), and within a pair the earlier geom first, exactly
-// as the simple space calls back; so hash reproduces simple's contacts. Sap
-// keeps its geoms in arrays of its own: the layout's geom order instead.
+// Sweep: the simple space's own pairs, found without testing every pair. The
+// ground goes first, through the simple space as with kCollisionSimple (that
+// also brings every geom's bounding box up to date). Then each robot geom's box
+// is swept along the axis where the boxes' centres spread most; a pair whose
+// boxes overlap on all three axes (bounds touching count, as in ODE's
+// collideAABBs) on two bodies is a candidate, exactly the pairs the simple
+// space would offer. They are called back in the simple space's order: by
+// their place in its geom list, the earlier geom first.
+void World::sweep_self_pairs() {
+    const int n = dSpaceGetNumGeoms(robot_space_);
+    boxes_.resize(static_cast<std::size_t>(n));
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (int i = 0; i < n; ++i) {
+        Box& b = boxes_[static_cast<std::size_t>(i)];
+        b.geom = dSpaceGetGeom(robot_space_, i);
+        b.rank = i;
+        dGeomGetAABB(b.geom, b.aabb.data());
+        for (int k = 0; k < 3; ++k) {
+            const double c = 0.5 * (b.aabb[2 * k] + b.aabb[2 * k + 1]);
+            lo[k] = std::min(lo[k], c);
+            hi[k] = std::max(hi[k], c);
+        }
+    }
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+        if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+    std::sort(boxes_.begin(), boxes_.end(), [axis](const Box& a, const Box& b) {
+        return a.aabb[2 * axis] < b.aabb[2 * axis] || (a.aabb[2 * axis] == b.aabb[2 * axis] && a.rank < b.rank);
+    });
+    pairs_.clear();
+    for (std::size_t i = 0; i < boxes_.size(); ++i) {
+        const Box& a = boxes_[i];
+        for (std::size_t j = i + 1; j < boxes_.size() && !(boxes_[j].aabb[2 * axis] > a.aabb[2 * axis + 1]); ++j) {
+            const Box& b = boxes_[j];
+            bool overlap = true;
+            for (int k = 0; k < 3 && overlap; ++k)
+                overlap = !(a.aabb[2 * k] > b.aabb[2 * k + 1] || a.aabb[2 * k + 1] < b.aabb[2 * k]);
+            if (!overlap) continue;
+            const dBodyID ba = dGeomGetBody(a.geom), bb = dGeomGetBody(b.geom);
+            if (ba == bb && ba) continue;
+            if (a.rank < b.rank) pairs_.emplace_back(a.geom, b.geom);
+            else pairs_.emplace_back(b.geom, a.geom);
+        }
+    }
+    rank_.resize(geoms_.size());
+    for (const Box& b : boxes_) rank_[reinterpret_cast<std::uintptr_t>(dGeomGetData(b.geom)) - 1] = b.rank;
+    const auto rank_of = [this](dGeomID g) { return rank_[reinterpret_cast<std::uintptr_t>(dGeomGetData(g)) - 1]; };
+    std::sort(pairs_.begin(), pairs_.end(), [&rank_of](const auto& p, const auto& q) {
+        const int pa = rank_of(p.first), qa = rank_of(q.first);
+        return pa != qa ? pa < qa : rank_of(p.second) < rank_of(q.second);
+    });
+    for (const auto& [a, b] : pairs_) self_callback(this, a, b);
+}
+
+// Sap: the space only finds the candidate pairs; they are sorted and handed to
+// the callbacks in a fixed order, the layout's geom order (sweep-and-prune
+// keeps its geoms in arrays of its own, not in the simple space's list).
 void World::collide_in_order() {
     const auto layout_index = [](dGeomID g) {
         return static_cast<int>(reinterpret_cast<std::uintptr_t>(dGeomGetData(g)) - 1);
@@ -192,12 +243,7 @@ void World::collide_in_order() {
     if (pairs_.empty()) return;
 
     rank_.resize(geoms_.size());
-    if (collision_space_ == kCollisionHash) {
-        const int n = dSpaceGetNumGeoms(robot_space_);
-        for (int i = 0; i < n; ++i) rank_[static_cast<std::size_t>(layout_index(dSpaceGetGeom(robot_space_, i)))] = i;
-    } else {
-        for (std::size_t i = 0; i < rank_.size(); ++i) rank_[i] = static_cast<int>(i);
-    }
+    for (std::size_t i = 0; i < rank_.size(); ++i) rank_[i] = static_cast<int>(i);
     for (std::size_t i = 0; i < pairs_.size(); ++i) {
         auto& [a, b] = pairs_[i];
         if (i < ground_pairs) {
@@ -223,6 +269,9 @@ void World::step(double dt) {
     if (collision_space_ == kCollisionSimple) {
         dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::ground_callback);
         if (self_collision_) dSpaceCollide(robot_space_, this, &World::self_callback);
+    } else if (collision_space_ == kCollisionSweep) {
+        dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::ground_callback);
+        if (self_collision_) sweep_self_pairs();
     } else {
         collide_in_order();
     }

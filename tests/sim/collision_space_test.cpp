@@ -1,4 +1,4 @@
-// Simulator.collisionSpace: the hash space gives the simple space's bits (the
+// Simulator.collisionSpace: cic's sweep gives the simple space's bits (the
 // contacts reach QuickStep in the same order), sweep-and-prune is
 // deterministic and finds the same contacts in another order.
 #include <gtest/gtest.h>
@@ -53,22 +53,22 @@ std::string bits(const EvalResult& r) {
 
 } // namespace
 
-TEST(CollisionSpace, HashGivesTheSimpleSpacesBits) {
+TEST(CollisionSpace, SweepGivesTheSimpleSpacesBits) {
     int self_touching = 0;
     for (const RobotSpec& robot : robots())
         for (double amplitude : {0.6, 1.5}) {
             const EvalResult simple = run(robot, kCollisionSimple, amplitude);
-            const EvalResult hash = run(robot, kCollisionHash, amplitude);
+            const EvalResult sweep = run(robot, kCollisionSweep, amplitude);
             EXPECT_FALSE(simple.failed) << robot.name;
-            EXPECT_EQ(bits(simple), bits(hash)) << robot.name << " amplitude " << amplitude;
+            EXPECT_EQ(bits(simple), bits(sweep)) << robot.name << " amplitude " << amplitude;
             self_touching += simple.max_self_contacts > 0;
         }
     EXPECT_GT(self_touching, 0);   // the comparison covered robot-robot contacts too
 }
 
-TEST(CollisionSpace, HashWithoutSelfCollisionToo) {
+TEST(CollisionSpace, SweepWithoutSelfCollisionToo) {
     const RobotSpec r = preset(1, false);
-    EXPECT_EQ(bits(run(r, kCollisionSimple, 1.2, false)), bits(run(r, kCollisionHash, 1.2, false)));
+    EXPECT_EQ(bits(run(r, kCollisionSimple, 1.2, false)), bits(run(r, kCollisionSweep, 1.2, false)));
 }
 
 TEST(CollisionSpace, SweepAndPruneIsDeterministicAndWalks) {

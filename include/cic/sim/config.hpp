@@ -27,12 +27,14 @@ inline constexpr double kMaxStablePhysicsStep = 0.025;
 
 // Simulator.collisionSpace. Simple: ODE's simple space, every pair of geoms
 // tested (cost quadratic in modules; the thesis's and the golden runs' bits).
-// Hash: ODE's hash space, pairs found in time linear in modules, then put into
-// the order the simple space reports them in, so that the contacts reach
-// QuickStep in the same order. Sap: ODE's sweep-and-prune space, pairs put
-// into the order of the robot's geoms (other bits than simple's).
+// Sweep: the same simple space, but the robot's pairs are found by cic's
+// sort-and-sweep along the robot's longest axis and then put into the order
+// the simple space reports them in, so the contacts reach QuickStep in the
+// same order: simple's bits at a cost about linear in modules. Sap: ODE's
+// sweep-and-prune space, pairs put into the order of the robot's geoms (other
+// bits than simple's once two robot bodies touch).
 inline constexpr int kCollisionSimple = 0;
-inline constexpr int kCollisionHash = 1;
+inline constexpr int kCollisionSweep = 1;
 inline constexpr int kCollisionSap = 2;
 
 struct SimConfig {
@@ -57,7 +59,7 @@ struct SimConfig {
     bool self_collision = true;    // bodies of the robot collide with each other
     bool allow_coarse_step = false;   // accept a physics step above kMaxStablePhysicsStep
     // How the robot's geoms find the pairs to test for contact (docs/simulator.md,
-    // "Collision space"): kCollisionSimple, kCollisionHash or kCollisionSap.
+    // "Collision space"): kCollisionSimple, kCollisionSweep or kCollisionSap.
     int collision_space = 0;
 
     double physics_step() const { return sample_step / step_divider; }
@@ -121,8 +123,9 @@ void for_each_field(Config& c, F&& f) {
                 "(docs/simulator.md); results are then physics artefacts"},
       c.allow_coarse_step);
     f(FieldSpec{"collision_space", "collisionSpace",
-                "How robot geoms find contact pairs: 0 simple (all pairs, quadratic in modules), 1 hash (linear, "
-                "pairs in simple's order), 2 sweep-and-prune (linear, pairs in geom order); docs/simulator.md",
+                "How robot geoms find contact pairs: 0 simple (all pairs, quadratic in modules), 1 sweep (cic's "
+                "sort-and-sweep, about linear, simple's bits), 2 ODE's sweep-and-prune (about linear, pairs in "
+                "geom order); docs/simulator.md",
                 0, 2},
       c.collision_space);
 }
