@@ -116,9 +116,10 @@ def estimate(results):
             robot, sec = line.split()
             times[robot] = float(sec)
     out = ["# Run-time estimate of the scaling study (issue 38)", "",
-           "Written by `scripts/scaling.sh estimate`: seconds per evaluation measured now on this machine",
-           "(the fastest of three `cic simulate` runs of 15 s under a sine gait, one core), times the plan's",
-           "evaluations, HyperGP methods at 1.1 times the physics. One run at a time, one worker.", "",
+           "Written by `scripts/scaling.sh estimate`: CPU seconds per evaluation measured on this machine",
+           "(the least of three `cic simulate` processes, 15 s under a sine gait, less a process's start-up; centipedes with",
+           "`Simulator.collisionSpace = 1`), times the plan's evaluations, HyperGP methods at 1.1 times",
+           "the physics. Hours of one core, one run at a time, one worker.", "",
            "| robot | s per evaluation |", "|---|---|"]
     out += [f"| {r} | {times[r]:.3f} |" for r in times]
     for middle in (10, 5, 3):

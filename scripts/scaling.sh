@@ -10,8 +10,8 @@
 #                results/tune-direct.md names each robot's direct baseline
 #   ledger       run nothing: merge the studies' index.csv into
 #                results/scaling-runs.csv and write results/tune-direct.md
-#   estimate     run nothing but timing: seconds per evaluation of every robot
-#                of the study (cic simulate), and results/estimate.md, the whole
+#   estimate     run nothing but timing: CPU seconds per evaluation of every
+#                robot of the study (cic simulate), and results/estimate.md, the whole
 #                study's run time with comparison seeds cut on the middle sizes
 # Options:
 #   --jobs N        runs at a time (default 1), each with one worker process
@@ -107,13 +107,19 @@ for stage in "${stages[@]}"; do
     estimate)
       robots=(R1 R2 centipede-2 centipede-4 centipede-8 centipede-16
               centipede-2-irregular centipede-4-irregular centipede-8-irregular centipede-16-irregular)
+      cpu() {   # CIC ARGS...: CPU seconds of one cic process
+        { TIMEFORMAT='%3U %3S'; time "$@" >/dev/null 2>&1; } 2>&1 | awk '{print $1 + $2}'
+      }
+      # A process's start-up (reading the robot, ODE's set-up), taken off each evaluation below.
+      startup=$(for _ in 1 2 3; do cpu "$CIC" simulate --robot R1 --controller sine:0.6,0.5 --seconds 0.05; done | sort -g | head -1)
       for r in "${robots[@]}"; do
         # The centipedes as their sweeps run them: collision search sweep (simple's bits, faster).
         arg=$r space=0; [[ "$r" == centipede* ]] && arg="$ROOT/settings/robots/$r.xml" space=1
         best=""
         for _ in 1 2 3; do
-          w=$("$CIC" simulate --robot "$arg" --controller sine:0.6,0.5 --set Simulator.collisionSpace=$space 2>&1 |
-              awk '/^wall time/ {print $3}')
+          # CPU seconds, less at the mercy of the machine's load than wall time.
+          w=$(cpu "$CIC" simulate --robot "$arg" --controller sine:0.6,0.5 --set Simulator.collisionSpace=$space |
+              awk -v s="$startup" '{print $1 - s}')
           if [ -z "$best" ] || awk -v a="$w" -v b="$best" 'BEGIN {exit !(a < b)}'; then best=$w; fi
         done
         echo "$r $best"
