@@ -94,36 +94,43 @@ run_study() {   # STUDY
   done
 }
 
-for stage in "${stages[@]}"; do
-  case "$stage" in
-    tune-direct)
-      if [ "$summary_only" = 0 ]; then
-        for s in "${tune_studies[@]}"; do run_study "$s"; done
-      fi
-      ledger
-      commit_results "Ledger (issue 38): tune-direct summary" ;;
-    ledger)
-      ledger ;;
-    estimate)
-      robots=(R1 R2 centipede-2 centipede-4 centipede-8 centipede-16
-              centipede-2-irregular centipede-4-irregular centipede-8-irregular centipede-16-irregular)
-      cpu() {   # CIC ARGS...: CPU seconds of one cic process
-        { TIMEFORMAT='%3U %3S'; time "$@" >/dev/null 2>&1; } 2>&1 | awk '{print $1 + $2}'
-      }
-      # A process's start-up (reading the robot, ODE's set-up), taken off each evaluation below.
-      startup=$(for _ in 1 2 3; do cpu "$CIC" simulate --robot R1 --controller sine:0.6,0.5 --seconds 0.05; done | sort -g | head -1)
-      for r in "${robots[@]}"; do
-        # The centipedes as their sweeps run them: collision search sweep (simple's bits, faster).
-        arg=$r space=0; [[ "$r" == centipede* ]] && arg="$ROOT/settings/robots/$r.xml" space=1
-        best=""
-        for _ in 1 2 3; do
-          # CPU seconds, less at the mercy of the machine's load than wall time.
-          w=$(cpu "$CIC" simulate --robot "$arg" --controller sine:0.6,0.5 --set Simulator.collisionSpace=$space |
-              awk -v s="$startup" '{print $1 - s}')
-          if [ -z "$best" ] || awk -v a="$w" -v b="$best" 'BEGIN {exit !(a < b)}'; then best=$w; fi
-        done
-        echo "$r $best"
-      done | "$PY" "$ROOT/scripts/scaling-report.py" estimate --results "$HERE/results"
-      echo "scaling.sh: wrote $HERE/results/estimate.md" >&2 ;;
-  esac
-done
+# The stages run from one function, called on the last line with `exit` after it:
+# bash reads a script as it goes, so an edit to this file while a study runs
+# (hours) must not be read in the middle of it.
+main() {
+  for stage in "${stages[@]}"; do
+    case "$stage" in
+      tune-direct)
+        if [ "$summary_only" = 0 ]; then
+          for s in "${tune_studies[@]}"; do run_study "$s"; done
+        fi
+        ledger
+        commit_results "Ledger (issue 38): tune-direct summary" ;;
+      ledger)
+        ledger ;;
+      estimate)
+        robots=(R1 R2 centipede-2 centipede-4 centipede-8 centipede-16
+                centipede-2-irregular centipede-4-irregular centipede-8-irregular centipede-16-irregular)
+        cpu() {   # CIC ARGS...: CPU seconds of one cic process
+          { TIMEFORMAT='%3U %3S'; time "$@" >/dev/null 2>&1; } 2>&1 | awk '{print $1 + $2}'
+        }
+        # A process's start-up (reading the robot, ODE's set-up), taken off each evaluation below.
+        startup=$(for _ in 1 2 3; do cpu "$CIC" simulate --robot R1 --controller sine:0.6,0.5 --seconds 0.05; done | sort -g | head -1)
+        for r in "${robots[@]}"; do
+          # The centipedes as their sweeps run them: collision search sweep (simple's bits, faster).
+          arg=$r space=0; [[ "$r" == centipede* ]] && arg="$ROOT/settings/robots/$r.xml" space=1
+          best=""
+          for _ in 1 2 3; do
+            # CPU seconds, less at the mercy of the machine's load than wall time.
+            w=$(cpu "$CIC" simulate --robot "$arg" --controller sine:0.6,0.5 --set Simulator.collisionSpace=$space |
+                awk -v s="$startup" '{print $1 - s}')
+            if [ -z "$best" ] || awk -v a="$w" -v b="$best" 'BEGIN {exit !(a < b)}'; then best=$w; fi
+          done
+          echo "$r $best"
+        done | "$PY" "$ROOT/scripts/scaling-report.py" estimate --results "$HERE/results"
+        echo "scaling.sh: wrote $HERE/results/estimate.md" >&2 ;;
+    esac
+  done
+}
+
+main; exit
