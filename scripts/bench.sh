@@ -8,6 +8,7 @@
 #   per-evaluation breakdown (substrate build, network steps, physics);
 #   MAP-Elites: the archive's cost per evaluation (variation, offer, checkpoint) against physics;
 #   Python (cic.Evaluator) against cic's own run, and a batch of one's overhead;
+#   one evaluation's cost against robot size, centipedes of 15-511 modules, per collision space;
 #   with --deap N: DEAP vs cic on DEAP's symbreg example over N seeds (default off);
 #   with --r1: the default R1 run (50 x 50, seed 1, 2 workers): wall time and best fitness;
 #   with --tricks: whether the GP loop's speed tricks pay (scripts/bench-gp-tricks.sh).
@@ -23,11 +24,11 @@ while [ $# -gt 0 ]; do
     --deap) deap="$2"; shift 2 ;;
     --r1) r1=1; shift ;;
     --tricks) tricks=1; shift ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
     *) echo "bench.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-cic_setup release "$ROOT/build" cic cic_bench_tree_eval cic_bench_sim cic_bench_nn cic_bench_map_elites
+cic_setup release "$ROOT/build" cic cic_bench_tree_eval cic_bench_sim cic_bench_nn cic_bench_map_elites cic_bench_scaling
 B="$ROOT/build/benchmarks"
 
 echo "== machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), $(date -u +%FT%TZ)"
@@ -86,6 +87,29 @@ print(f"  physics, R1 15 s, duty factors:   {phys:8.2f} ms")
 print(f"  archive = {100*(forest+ckpt)/phys:.2f}% of physics (HyperGP, checkpoint every batch)")
 print(f"  archive = {100*(cmame+ckpt)/phys:.2f}% of physics (CMA-ME, checkpoint every batch)")
 print(f"  CMA-ME resume, replay of a 300-generation start: {replay:8.1f} ms, once")
+'
+echo
+echo "== Evaluation cost against robot size (centipedes, 15 s, Simulator.collisionSpace), CPU time"
+"$B/cic_bench_scaling" --benchmark_min_time="$min_time" --benchmark_format=json 2>/dev/null | python3 -c '
+import json, sys
+t = {}
+for b in json.load(sys.stdin)["benchmarks"]:
+    if b.get("error_occurred"):
+        print("  failed:", b["name"], b.get("error_message")); continue
+    _, p, space = b["name"].split("/")[:3]
+    unit = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
+    t[(int(p), int(space))] = (b["cpu_time"] * unit, int(b["modules"]))
+names = {0: "simple", 1: "sweep", 2: "sap"}
+pairs = sorted({p for p, _ in t})
+print("  " + "modules".rjust(7) + "".join((" " + names[s] + " ms").rjust(11) + " ms/module" for s in names))
+for p in pairs:
+    m = t[(p, 0)][1]
+    print(f"  {m:7d} " + " ".join(f"{t[(p, s)][0]:10.1f} {t[(p, s)][0] / m:9.3f}" for s in names if (p, s) in t))
+lo, hi = pairs[0], pairs[-1]
+for s in names:
+    if (lo, s) in t and (hi, s) in t:
+        r = (t[(hi, s)][0] / t[(hi, s)][1]) / (t[(lo, s)][0] / t[(lo, s)][1])
+        print(f"  {names[s]:6}: time per module at {t[(hi, s)][1]} modules / at {t[(lo, s)][1]} = {r:.2f} (goal: 1, linear)")
 '
 if [ "$deap" != 0 ]; then
   echo

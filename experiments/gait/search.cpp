@@ -17,6 +17,7 @@
 
 #include "cic/core/rng.hpp"
 #include "pagmo_box.hpp"
+#include "sep_cmaes.hpp"
 
 namespace cic::gait {
 
@@ -34,6 +35,7 @@ pagmo::algorithm make_algorithm(Optimizer o, double sigma0, unsigned seed) {
     case Optimizer::Cmaes: return pagmo::algorithm{pagmo::cmaes(1u, -1, -1, -1, -1, sigma0, 0.0, 0.0, true, false, seed)};
     case Optimizer::Xnes: return pagmo::algorithm{pagmo::xnes(1u, -1, -1, -1, sigma0, 0.0, 0.0, true, false, seed)};
     case Optimizer::Sade: return pagmo::algorithm{pagmo::sade(1u, 2u, 1u, 0.0, 0.0, true, seed)};
+    case Optimizer::Sepcmaes: return pagmo::algorithm{detail::SepCmaes(sigma0, seed)};
     }
     throw std::invalid_argument("gait search: unknown optimizer");
 }
@@ -52,6 +54,7 @@ std::string to_string(Optimizer o) {
     case Optimizer::Cmaes: return "cmaes";
     case Optimizer::Xnes: return "xnes";
     case Optimizer::Sade: return "sade";
+    case Optimizer::Sepcmaes: return "sepcmaes";
     }
     return "?";
 }

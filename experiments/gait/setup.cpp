@@ -16,6 +16,7 @@ Optimizer optimizer_of(io::GaitOptimizer o) {
     case io::GaitOptimizer::Cmaes: return Optimizer::Cmaes;
     case io::GaitOptimizer::Xnes: return Optimizer::Xnes;
     case io::GaitOptimizer::Sade: return Optimizer::Sade;
+    case io::GaitOptimizer::Sepcmaes: return Optimizer::Sepcmaes;
     }
     return Optimizer::Cmaes;
 }

@@ -165,7 +165,7 @@ bool is_gait_file(const std::filesystem::path& path) {
 void check_compatible(const GaitFile& g, const Settings& s, std::size_t dimension, const std::string& file) {
     if (family_of(s) != ExperimentFamily::Gait)
         throw InputError("this is a gait checkpoint; the settings run another experiment type", file);
-    const char* names[] = {"cmaes", "xnes", "sade"};
+    const char* names[] = {"cmaes", "xnes", "sade", "sepcmaes"};
     const std::string wanted = names[static_cast<int>(s.gait.optimizer)];
     if (g.optimizer != wanted)
         throw InputError("the checkpoint was made by optimizer " + g.optimizer + ", the settings ask for " + wanted, file);

@@ -158,8 +158,9 @@ void symreg_rows(std::vector<SettingKey>& t) {
 void gait_rows(std::vector<SettingKey>& t) {
     t.push_back(enum_row<GaitOptimizer>("Gait", "optimizer",
                                         {{GaitOptimizer::Cmaes, {"cmaes"}}, {GaitOptimizer::Xnes, {"xnes"}},
-                                         {GaitOptimizer::Sade, {"sade"}}},
-                                        "pagmo2 optimiser of the gait parameters: CMA-ES, xNES or self-adaptive DE",
+                                         {GaitOptimizer::Sade, {"sade"}}, {GaitOptimizer::Sepcmaes, {"sepcmaes"}}},
+                                        "Optimiser of the gait parameters: pagmo2's CMA-ES, xNES or self-adaptive DE, or "
+                                        "separable (diagonal) CMA-ES for long gait vectors (Ros & Hansen 2008)",
                                         FIELD(gait.optimizer)));
     t.push_back(long_row("Gait", "evaluations", 1, 100000000,
                          "Budget of evaluations: the run stops before a generation that would exceed it",
@@ -170,7 +171,7 @@ void gait_rows(std::vector<SettingKey>& t) {
     t.push_back(bool_row("Gait", "secondHarmonic", "Add a second harmonic b sin(4 pi f t + psi) to every joint",
                          FIELD(gait.second_harmonic)));
     t.push_back(double_row("Gait", "sigma0", Bounds{0.0, 1.0, true, false},
-                           "Initial step of cmaes and xnes, as a fraction of each parameter's range",
+                           "Initial step of cmaes, xnes and sepcmaes, as a fraction of each parameter's range",
                            FIELD(gait.sigma0)));
     t.push_back(double_row("Gait", "frequencyMin", kPositive, "Lowest gait frequency, Hz", FIELD(gait.frequency_min)));
     t.push_back(double_row("Gait", "frequencyMax", kPositive, "Highest gait frequency, Hz", FIELD(gait.frequency_max)));

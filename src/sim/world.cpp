@@ -2,10 +2,8 @@
 #include "world.hpp"
 
 #include <algorithm>
-#include <cstdint>
-
-#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <mutex>
 #include <stdexcept>
 
@@ -21,6 +19,7 @@ World::World(const BodyLayout& layout, const SimConfig& cfg) : layout_(layout) {
     ensure_ode_initialised();
     max_contacts_ = cfg.max_contacts;
     self_collision_ = cfg.self_collision;
+    collision_space_ = cfg.collision_space;
     scratch_.resize(static_cast<std::size_t>(max_contacts_));
     dSurfaceParameters& s = contact_template_.surface;
     s.mode = dContactApprox1 | dContactSoftCFM | dContactBounce;
@@ -40,7 +39,12 @@ World::World(const BodyLayout& layout, const SimConfig& cfg) : layout_(layout) {
         dWorldSetERP(world_, cfg.erp);
         dWorldSetCFM(world_, cfg.cfm);
         dWorldSetQuickStepNumIterations(world_, cfg.quickstep_iterations);
-        robot_space_ = dSimpleSpaceCreate(nullptr);
+        switch (collision_space_) {
+        case kCollisionSimple: robot_space_ = dSimpleSpaceCreate(nullptr); break;
+        case kCollisionSweep: robot_space_ = dSimpleSpaceCreate(nullptr); break;   // searched by sweep_self_pairs
+        case kCollisionSap: robot_space_ = dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ); break;
+        default: throw std::invalid_argument("World: collision_space must be 0, 1 or 2");
+        }
         dSpaceSetCleanup(robot_space_, 1);
         ground_ = dCreatePlane(nullptr, 0, 0, 1, 0);
         contact_group_ = dJointGroupCreate(0);
@@ -50,6 +54,7 @@ World::World(const BodyLayout& layout, const SimConfig& cfg) : layout_(layout) {
             bodies_.push_back(body);
             const Vec3& c = layout.body_com[b];
             dBodySetPosition(body, c[0], c[1], c[2]);
+            dBodySetData(body, reinterpret_cast<void*>(static_cast<std::uintptr_t>(b)));
         }
         // Combined mass per body: each box's mass moved to its offset from the centre of mass.
         std::vector<dMass> mass(bodies_.size());
@@ -76,6 +81,9 @@ World::World(const BodyLayout& layout, const SimConfig& cfg) : layout_(layout) {
             dJointID j = dJointCreateHinge(world_, nullptr);
             joints_.push_back(j);
             dJointAttach(j, bodies_[lj.chassis_body], bodies_[lj.panel_body]);
+            const auto lo = static_cast<std::uint64_t>(std::min(lj.chassis_body, lj.panel_body));
+            const auto hi = static_cast<std::uint64_t>(std::max(lj.chassis_body, lj.panel_body));
+            hinged_.insert(lo << 32 | hi);
             dJointSetHingeAnchor(j, lj.anchor[0], lj.anchor[1], lj.anchor[2]);
             const Vec3 a = axis_vector(lj.axis);
             dJointSetHingeAxis(j, a[0], a[1], a[2]);
@@ -142,10 +150,113 @@ void World::track_ground_geoms(bool on) {
 // A pair of robot geoms whose bounding boxes overlap. ODE's space never offers
 // two geoms of one body; bodies joined by a hinge (a module's chassis and its
 // panel) touch by construction and are left to the joint.
+bool World::hinged(dBodyID a, dBodyID b) const {
+    auto ia = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(dBodyGetData(a)));
+    auto ib = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(dBodyGetData(b)));
+    if (ia > ib) std::swap(ia, ib);
+    return hinged_.count(ia << 32 | ib) > 0;
+}
+
 void World::self_callback(void* data, dGeomID a, dGeomID b) {
     auto* self = static_cast<World*>(data);
-    if (dAreConnectedExcluding(dGeomGetBody(a), dGeomGetBody(b), dJointTypeContact)) return;
+    if (self->hinged(dGeomGetBody(a), dGeomGetBody(b))) return;
     self->self_contacts_ += self->add_contacts(a, b);
+}
+
+void World::collect_callback(void* data, dGeomID a, dGeomID b) {
+    static_cast<World*>(data)->pairs_.emplace_back(a, b);
+}
+
+// Sweep: the simple space's own pairs, found without testing every pair. The
+// ground goes first, through the simple space as with kCollisionSimple (that
+// also brings every geom's bounding box up to date). Then each robot geom's box
+// is swept along the axis where the boxes' centres spread most; a pair whose
+// boxes overlap on all three axes (bounds touching count, as in ODE's
+// collideAABBs) on two bodies is a candidate, exactly the pairs the simple
+// space would offer. They are called back in the simple space's order: by
+// their place in its geom list, the earlier geom first.
+void World::sweep_self_pairs() {
+    const int n = dSpaceGetNumGeoms(robot_space_);
+    boxes_.resize(static_cast<std::size_t>(n));
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (int i = 0; i < n; ++i) {
+        Box& b = boxes_[static_cast<std::size_t>(i)];
+        b.geom = dSpaceGetGeom(robot_space_, i);
+        b.rank = i;
+        dGeomGetAABB(b.geom, b.aabb.data());
+        for (int k = 0; k < 3; ++k) {
+            const double c = 0.5 * (b.aabb[2 * k] + b.aabb[2 * k + 1]);
+            lo[k] = std::min(lo[k], c);
+            hi[k] = std::max(hi[k], c);
+        }
+    }
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+        if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+    std::sort(boxes_.begin(), boxes_.end(), [axis](const Box& a, const Box& b) {
+        return a.aabb[2 * axis] < b.aabb[2 * axis] || (a.aabb[2 * axis] == b.aabb[2 * axis] && a.rank < b.rank);
+    });
+    pairs_.clear();
+    for (std::size_t i = 0; i < boxes_.size(); ++i) {
+        const Box& a = boxes_[i];
+        for (std::size_t j = i + 1; j < boxes_.size() && !(boxes_[j].aabb[2 * axis] > a.aabb[2 * axis + 1]); ++j) {
+            const Box& b = boxes_[j];
+            bool overlap = true;
+            for (int k = 0; k < 3 && overlap; ++k)
+                overlap = !(a.aabb[2 * k] > b.aabb[2 * k + 1] || a.aabb[2 * k + 1] < b.aabb[2 * k]);
+            if (!overlap) continue;
+            const dBodyID ba = dGeomGetBody(a.geom), bb = dGeomGetBody(b.geom);
+            if (ba == bb && ba) continue;
+            if (a.rank < b.rank) pairs_.emplace_back(a.geom, b.geom);
+            else pairs_.emplace_back(b.geom, a.geom);
+        }
+    }
+    rank_.resize(geoms_.size());
+    for (const Box& b : boxes_) rank_[reinterpret_cast<std::uintptr_t>(dGeomGetData(b.geom)) - 1] = b.rank;
+    const auto rank_of = [this](dGeomID g) { return rank_[reinterpret_cast<std::uintptr_t>(dGeomGetData(g)) - 1]; };
+    std::sort(pairs_.begin(), pairs_.end(), [&rank_of](const auto& p, const auto& q) {
+        const int pa = rank_of(p.first), qa = rank_of(q.first);
+        return pa != qa ? pa < qa : rank_of(p.second) < rank_of(q.second);
+    });
+    for (const auto& [a, b] : pairs_) self_callback(this, a, b);
+}
+
+// Sap: the space only finds the candidate pairs; they are sorted and handed to
+// the callbacks in a fixed order, the layout's geom order (sweep-and-prune
+// keeps its geoms in arrays of its own, not in the simple space's list).
+void World::collide_in_order() {
+    const auto layout_index = [](dGeomID g) {
+        return static_cast<int>(reinterpret_cast<std::uintptr_t>(dGeomGetData(g)) - 1);
+    };
+    auto by_rank = [this, &layout_index](const std::pair<dGeomID, dGeomID>& p, const std::pair<dGeomID, dGeomID>& q) {
+        const int pa = rank_[static_cast<std::size_t>(layout_index(p.first))];
+        const int qa = rank_[static_cast<std::size_t>(layout_index(q.first))];
+        if (pa != qa) return pa < qa;
+        if (p.second == ground_ || q.second == ground_) return false;
+        return rank_[static_cast<std::size_t>(layout_index(p.second))] <
+               rank_[static_cast<std::size_t>(layout_index(q.second))];
+    };
+    pairs_.clear();
+    dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::collect_callback);
+    const std::size_t ground_pairs = pairs_.size();
+    if (self_collision_) dSpaceCollide(robot_space_, this, &World::collect_callback);
+    if (pairs_.empty()) return;
+
+    rank_.resize(geoms_.size());
+    for (std::size_t i = 0; i < rank_.size(); ++i) rank_[i] = static_cast<int>(i);
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+        auto& [a, b] = pairs_[i];
+        if (i < ground_pairs) {
+            if (a == ground_) std::swap(a, b);   // robot geom first, as the simple space calls back
+        } else if (rank_[static_cast<std::size_t>(layout_index(b))] < rank_[static_cast<std::size_t>(layout_index(a))]) {
+            std::swap(a, b);
+        }
+    }
+    const auto self_begin = pairs_.begin() + static_cast<std::ptrdiff_t>(ground_pairs);
+    std::sort(pairs_.begin(), self_begin, by_rank);
+    std::sort(self_begin, pairs_.end(), by_rank);
+    for (std::size_t i = 0; i < pairs_.size(); ++i)
+        (i < ground_pairs ? &World::ground_callback : &World::self_callback)(this, pairs_[i].first, pairs_[i].second);
 }
 
 void World::step(double dt) {
@@ -155,8 +266,15 @@ void World::step(double dt) {
     if (track_ground_geoms_) std::fill(ground_geoms_.begin(), ground_geoms_.end(), 0);
     // Ground contacts first, then the robot against itself: a fixed order, so
     // QuickStep sees the same constraint rows in every run.
-    dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::ground_callback);
-    if (self_collision_) dSpaceCollide(robot_space_, this, &World::self_callback);
+    if (collision_space_ == kCollisionSimple) {
+        dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::ground_callback);
+        if (self_collision_) dSpaceCollide(robot_space_, this, &World::self_callback);
+    } else if (collision_space_ == kCollisionSweep) {
+        dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), ground_, this, &World::ground_callback);
+        if (self_collision_) sweep_self_pairs();
+    } else {
+        collide_in_order();
+    }
     dWorldQuickStep(world_, dt);
     dJointGroupEmpty(contact_group_);
 }

@@ -3,8 +3,12 @@
 // Owns world, spaces, contact group, bodies, joints and its own threading
 // implementation (ODE's default one is shared by all worlds), released in the
 // right order by the destructor.
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include <ode/ode.h>
@@ -54,11 +58,29 @@ private:
     int add_contacts(dGeomID a, dGeomID b);
     static void ground_callback(void* data, dGeomID a, dGeomID b);
     static void self_callback(void* data, dGeomID a, dGeomID b);
+    static void collect_callback(void* data, dGeomID a, dGeomID b);
+    void collide_in_order();
+    void sweep_self_pairs();
 
     const BodyLayout& layout_;
     dContact contact_template_{};
     int max_contacts_ = 4;
     bool self_collision_ = true;
+    int collision_space_ = kCollisionSimple;
+    // Sweep and sap: the candidate pairs of one step, before they are put in order.
+    std::vector<std::pair<dGeomID, dGeomID>> pairs_;
+    std::vector<int> rank_;            // per layout geom: its place in the order pairs are sorted by
+    struct Box {                       // sweep: a geom's bounding box and place in the space's list
+        std::array<dReal, 6> aabb;
+        dGeomID geom;
+        int rank;
+    };
+    std::vector<Box> boxes_;
+    // Body pairs joined by a hinge (key: lower index << 32 | higher), so that a
+    // pair of geoms is checked in constant time: ODE's dAreConnectedExcluding
+    // walks a body's joint list, and a centipede's torso carries 2P hinges.
+    std::unordered_set<std::uint64_t> hinged_;
+    bool hinged(dBodyID a, dBodyID b) const;
     int ground_contacts_ = 0;
     int self_contacts_ = 0;
     double ground_depth_ = 0.0;

@@ -34,7 +34,7 @@ std::string gait_settings(const std::string& optimizer, int evaluations, int wor
 
 TEST(GaitRun, SameBytesForOneOrTwoWorkersForEveryOptimizer) {
     const auto dir = temp_dir("gait-workers");
-    for (const std::string opt : {"cmaes", "xnes", "sade"}) {
+    for (const std::string opt : {"cmaes", "xnes", "sade", "sepcmaes"}) {
         const RunResult one = run_settings(dir, opt + "1", gait_settings(opt, 35, 1));
         const RunResult two = run_settings(dir, opt + "2", gait_settings(opt, 35, 2));
         ASSERT_EQ(one.rc, 0) << one.log;
@@ -50,16 +50,18 @@ TEST(GaitRun, SameBytesForOneOrTwoWorkersForEveryOptimizer) {
 
 TEST(GaitRun, ResumeContinuesBitForBit) {
     const auto dir = temp_dir("gait-resume");
-    const RunResult whole = run_settings(dir, "whole", gait_settings("cmaes", 42, 2));
-    const RunResult first = run_settings(dir, "first", gait_settings("cmaes", 21, 2));
-    ASSERT_EQ(whole.rc, 0) << whole.log;
-    ASSERT_EQ(first.rc, 0) << first.log;
-    const RunResult rest = run_settings(
-        dir, "rest",
-        gait_settings("cmaes", 42, 1,
-                      "<populationXmlLoadFrom>" + (first.run / "population.xml").string() + "</populationXmlLoadFrom>"));
-    ASSERT_EQ(rest.rc, 0) << rest.log;
-    EXPECT_EQ(read_text(rest.run / "population.xml"), read_text(whole.run / "population.xml"));
+    for (const std::string opt : {"cmaes", "sepcmaes"}) {
+        const RunResult whole = run_settings(dir, opt + "whole", gait_settings(opt, 42, 2));
+        const RunResult first = run_settings(dir, opt + "first", gait_settings(opt, 21, 2));
+        ASSERT_EQ(whole.rc, 0) << whole.log;
+        ASSERT_EQ(first.rc, 0) << first.log;
+        const RunResult rest = run_settings(
+            dir, opt + "rest",
+            gait_settings(opt, 42, 1,
+                          "<populationXmlLoadFrom>" + (first.run / "population.xml").string() + "</populationXmlLoadFrom>"));
+        ASSERT_EQ(rest.rc, 0) << rest.log;
+        EXPECT_EQ(read_text(rest.run / "population.xml"), read_text(whole.run / "population.xml")) << opt;
+    }
     fs::remove_all(dir);
 }
 

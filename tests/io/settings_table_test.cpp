@@ -23,5 +23,5 @@ TEST(SettingsTable, SimulatorRowsAreSimConfigsFieldsWithTheirRanges) {
         }
         keys.insert(std::string(spec.key));
     });
-    EXPECT_EQ(keys.size(), 20u);
+    EXPECT_EQ(keys.size(), 21u);
 }

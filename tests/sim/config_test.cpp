@@ -51,7 +51,7 @@ TEST(SimConfig, EveryNumberOutsideItsRangeIsAProblemNamingIt) {
             ++checked;
         }
     });
-    EXPECT_EQ(checked, 18);   // 20 fields, 2 of them bools
+    EXPECT_EQ(checked, 19);   // 21 fields, 2 of them bools
 }
 
 TEST(SimConfig, CrossFieldRules) {

@@ -117,7 +117,7 @@ TEST(JobText, EveryConfigFieldTravels) {
         EXPECT_EQ(differing, 1) << spec.name;
         ++fields;
     });
-    EXPECT_EQ(fields, 20);
+    EXPECT_EQ(fields, 21);
     std::stringstream truncated("config\nsample_from 0x0p+0\n");
     EXPECT_THROW(read_config_text(truncated), std::invalid_argument);
 }

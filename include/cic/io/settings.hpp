@@ -52,7 +52,7 @@ struct SymregConfig {
 // The `gait` experiment (experiments/gait/): an open-loop gait per joint
 // (sim::GaitSpec) whose parameters a pagmo2 optimiser tunes, a baseline for
 // HyperGP at the same budget of evaluations (docs/baselines.md).
-enum class GaitOptimizer { Cmaes, Xnes, Sade };
+enum class GaitOptimizer { Cmaes, Xnes, Sade, Sepcmaes };
 enum class GaitBounds { Clamp, Reflect };
 // What the gait experiment's parameters drive: the open-loop sine gait, or the
 // CPG of HyperGP's cpg substrate (its Neural.cpg* keys), weights tuned directly.

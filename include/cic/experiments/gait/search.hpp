@@ -1,5 +1,6 @@
 #pragma once
-// A pagmo2 optimiser (CMA-ES, xNES or SADE) over the unit box, driven one
+// A pagmo2 optimiser (CMA-ES, xNES, SADE, or cic's separable CMA-ES as a pagmo
+// algorithm, sep_cmaes.hpp) over the unit box, driven one
 // generation at a time so that cic evaluates each generation's candidates as a
 // batch, in its worker processes or MPI ranks, and can checkpoint between
 // generations.
@@ -30,7 +31,7 @@
 
 namespace cic::gait {
 
-enum class Optimizer { Cmaes, Xnes, Sade };
+enum class Optimizer { Cmaes, Xnes, Sade, Sepcmaes };
 std::string to_string(Optimizer o);
 
 struct Candidate {
@@ -65,7 +66,7 @@ using BatchEvaluator = std::function<std::vector<double>(const std::vector<std::
 class Search {
 public:
     // Throws std::invalid_argument: dimension 0, population below pagmo's
-    // minimum (cmaes/xnes 5, sade 7), sigma0 not in (0, 1], ipop restarts for
+    // minimum (cmaes/xnes/sepcmaes 5, sade 7), sigma0 not in (0, 1], ipop restarts for
     // sade, a negative patience, or a tolerance or tol_x negative or not finite.
     Search(Optimizer optimizer, std::size_t dimension, int population, double sigma0, std::uint64_t seed,
            RestartRule restarts = {});

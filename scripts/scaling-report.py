@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""The ledger and summary of issue 38's scaling study (docs/scaling.md).
+
+  scaling-report.py ledger  --studies DIR --results DIR STUDY...
+      merge each STUDY's index.csv (DIR/STUDY/index.csv, written by `cic sweep`)
+      into RESULTS/scaling-runs.csv: one row per (study, config, seed), kept
+      across sittings (a run whose folder is gone keeps its last row)
+  scaling-report.py summary --results DIR
+      RESULTS/tune-direct.md from the ledger: per study and configuration the
+      finished runs, median and IQR of best_ever, mean wall time per run and
+      per evaluation, and each study's winner (highest median; ties: the first)
+  scaling-report.py estimate --results DIR < TIMES
+      RESULTS/estimate.md: the study's run time from measured seconds per
+      evaluation (TIMES: lines "ROBOT SECONDS", as scripts/scaling.sh measures
+      them), for the whole plan of issue 38 item 5 and with comparison seeds
+      cut on the middle sizes
+Standard library only."""
+import csv
+import os
+import statistics
+import sys
+
+FIELDS = ["study", "config", "seed", "status", "best_ever", "evaluations", "wall_seconds", "run_dir", "commit"]
+
+
+def ledger(studies, results, names):
+    path = os.path.join(results, "scaling-runs.csv")
+    rows = {}
+    if os.path.exists(path):
+        for r in csv.DictReader(open(path)):
+            rows[(r["study"], r["config"], r["seed"])] = r
+    for name in names:
+        index = os.path.join(studies, name, "index.csv")
+        if not os.path.exists(index):
+            continue
+        for r in csv.DictReader(open(index)):
+            key = (name, r["config"], r["seed"])
+            old = rows.get(key)
+            if r["status"] != "done" and old and old["status"] == "done":
+                continue   # a finished run of an earlier sitting whose folder is gone
+            rows[key] = {"study": name, **{f: r.get(f, "") for f in FIELDS if f != "study"}}
+    tmp = path + ".tmp"
+    with open(tmp, "w", newline="") as out:
+        w = csv.DictWriter(out, FIELDS, lineterminator="\n")
+        w.writeheader()
+        for key in sorted(rows, key=lambda k: (k[0], k[1], int(k[2]))):
+            w.writerow(rows[key])
+    os.replace(tmp, path)
+    return sum(r["status"] == "done" for r in rows.values())
+
+
+def quartiles(v):
+    if len(v) < 2:
+        return v[0], v[0]
+    q = statistics.quantiles(v, n=4, method="inclusive")
+    return q[0], q[2]
+
+
+def summary(results):
+    rows = [r for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv"))) if r["status"] == "done"]
+    out = ["# Tuning the direct side (issue 38)", "",
+           "Written by `scripts/scaling.sh` from `scaling-runs.csv` (the ledger); best_ever in metres",
+           "(eq. 7.1 of the run's best gait), over the finished runs of tuning seeds 101..105.", ""]
+    for study in sorted({r["study"] for r in rows}):
+        out += [f"## {study}", "", "| config | runs | median | IQR | s per run | ms per evaluation |",
+                "|---|---|---|---|---|---|"]
+        medians = {}
+        for config in sorted({r["config"] for r in rows if r["study"] == study}):
+            rs = [r for r in rows if r["study"] == study and r["config"] == config]
+            best = sorted(float(r["best_ever"]) for r in rs)
+            wall = statistics.mean(float(r["wall_seconds"]) for r in rs)
+            evals = statistics.mean(float(r["evaluations"]) for r in rs)
+            lo, hi = quartiles(best)
+            medians[config] = statistics.median(best)
+            out.append(f"| {config} | {len(rs)} | {medians[config]:.2f} | [{lo:.2f}, {hi:.2f}] | {wall:.0f} | "
+                       f"{1000 * wall / evals:.1f} |")
+        winner = max(medians, key=lambda c: medians[c])
+        complete = all(sum(1 for r in rows if r["study"] == study and r["config"] == c) == 5 for c in medians)
+        out += ["", f"Winner so far: **{winner}** (median {medians[winner]:.2f})"
+                + ("" if complete else "; not every configuration has its 5 runs yet") + ".", ""]
+    with open(os.path.join(results, "tune-direct.md"), "w") as f:
+        f.write("\n".join(out))
+
+
+# The plan of issue 38 item 5 (docs/scaling.md). Runs: (stage, robot, methods, seeds, evaluations).
+# HyperGP methods cost their physics plus HyperGP's substrate and network (under 10 %
+# of physics, scripts/bench.sh): counted as 1.1 times the physics.
+CENTIPEDES = ["centipede-2", "centipede-4", "centipede-8", "centipede-16",
+              "centipede-2-irregular", "centipede-4-irregular", "centipede-8-irregular", "centipede-16-irregular"]
+MIDDLE = {"centipede-4", "centipede-8", "centipede-4-irregular", "centipede-8-irregular"}
+HYPERGP_COST = 1.1
+
+
+def plan(middle_seeds):
+    runs = []
+    # Tuning, seeds 101..105 on R1 (15,000) and the 48-hinge centipede (2,500).
+    runs.append(("tune: direct (4 configs, tune-direct-*.xml)", "R1", 4, 1.0, 5, 15000))
+    runs.append(("tune: direct (4 configs, tune-direct-*.xml)", "centipede-8", 4, 1.0, 5, 2500))
+    runs.append(("tune: hybrids (assumed 2 configs each)", "R1", 4, HYPERGP_COST, 5, 15000))
+    runs.append(("tune: hybrids (assumed 2 configs each)", "centipede-8", 4, HYPERGP_COST, 5, 2500))
+    # Comparison, seeds 1..10: best direct, HyperGP-gait, Offset-HybrID, Switch-HybrID.
+    for robot in CENTIPEDES:
+        seeds = middle_seeds if robot in MIDDLE else 10
+        runs.append(("compare: best direct", robot, 1, 1.0, seeds, 2500))
+        runs.append(("compare: 3 HyperGP methods", robot, 3, HYPERGP_COST, seeds, 2500))
+    # R1 and R2 at 15,000: issue 21 ran IPOP-CMA-ES and HyperGP-gait (walk-15000-*.xml); the hybrids are new.
+    for robot in ("R1", "R2"):
+        runs.append(("compare: 2 hybrids (15,000)", robot, 2, HYPERGP_COST, 10, 15000))
+    return runs
+
+
+def estimate(results):
+    times = {}
+    for line in sys.stdin:
+        if line.strip():
+            robot, sec = line.split()
+            times[robot] = float(sec)
+    out = ["# Run-time estimate of the scaling study (issue 38)", "",
+           "Written by `scripts/scaling.sh estimate`: CPU seconds per evaluation measured on this machine",
+           "(the least of three `cic simulate` processes, 15 s under a sine gait, less a process's start-up; centipedes with",
+           "`Simulator.collisionSpace = 1`), times the plan's evaluations, HyperGP methods at 1.1 times",
+           "the physics. Hours of one core, one run at a time, one worker.", "",
+           "| robot | s per evaluation |", "|---|---|"]
+    out += [f"| {r} | {times[r]:.3f} |" for r in times]
+    for middle in (10, 5, 3):
+        rows = plan(middle)
+        total = 0.0
+        out += ["", f"### Comparison seeds on the middle sizes (centipedes 4 and 8, both twins): {middle}", "",
+                "| stage | robot | runs | hours |", "|---|---|---|---|"]
+        for stage, robot, methods, cost, seeds, evals in rows:
+            h = methods * seeds * evals * times[robot] * cost / 3600
+            total += h
+            out.append(f"| {stage} | {robot} | {methods * seeds} | {h:.1f} |")
+        out.append(f"| **total** | | {sum(m * s for _, _, m, _, s, _ in rows)} | **{total:.1f}** |")
+    with open(os.path.join(results, "estimate.md"), "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+def main(argv):
+    if len(argv) >= 2 and argv[1] == "ledger":
+        args, names = {}, []
+        i = 2
+        while i < len(argv):
+            if argv[i] in ("--studies", "--results"):
+                args[argv[i]] = argv[i + 1]
+                i += 2
+            else:
+                names.append(argv[i])
+                i += 1
+        print(ledger(args["--studies"], args["--results"], names))
+    elif len(argv) == 4 and argv[1] == "estimate" and argv[2] == "--results":
+        estimate(argv[3])
+    elif len(argv) == 4 and argv[1] == "summary" and argv[2] == "--results":
+        summary(argv[3])
+    else:
+        sys.exit(__doc__)
+
+
+if __name__ == "__main__":
+    main(sys.argv)

@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# scripts/scaling.sh [--jobs N] [--output DIR] [--commit] [--summary-only] STAGE...
+# Issue 38's scaling study (docs/scaling.md), part A: the direct side and the
+# robots. Resumable like every `cic sweep`: rerun the same command after an
+# interruption and only what is missing runs. Seeds are fixed in the sweep
+# files (experiments/scaling/). Stages:
+#   tune-direct  IPOP-CMA-ES and separable CMA-ES (sigma0 0.15 or 0.3), tuning
+#                seeds 101..105: R1 at 15,000 evaluations (tune-direct-r1.xml)
+#                and the 48-hinge centipede at 2,500 (tune-direct-c8.xml);
+#                results/tune-direct.md names each robot's direct baseline
+#   ledger       run nothing: merge the studies' index.csv into
+#                results/scaling-runs.csv and write results/tune-direct.md
+#   estimate     run nothing but timing: CPU seconds per evaluation of every
+#                robot of the study (cic simulate), and results/estimate.md, the whole
+#                study's run time with comparison seeds cut on the middle sizes
+# Options:
+#   --jobs N        runs at a time (default 1), each with one worker process
+#   --output DIR    study folders (default runs/scaling); the run store is DIR/store
+#   --commit        after every run: ledger and summary, then `git commit` of
+#                   experiments/scaling/results/ only (runs go in batches of N)
+#   --summary-only  run nothing; ledger and summary of what is there
+# Environment: CIC (default build/cic), PYTHON (default python3).
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+HERE="$ROOT/experiments/scaling"
+CIC=${CIC:-$ROOT/build/cic}
+PY=${PYTHON:-python3}
+jobs=1 output=runs/scaling commit=0 summary_only=0 stages=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --jobs) jobs="$2"; shift 2 ;;
+    --output) output="$2"; shift 2 ;;
+    --commit) commit=1; shift ;;
+    --summary-only) summary_only=1; shift ;;
+    -h|--help) sed -n '2,/^set /p' "$0" | grep '^#' | sed 's/^# \{0,1\}//'; exit 0 ;;
+    tune-direct|ledger|estimate) stages+=("$1"); shift ;;
+    *) echo "scaling.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+[ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, ledger, estimate (see --help)" >&2; exit 2; }
+[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scaling.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
+[ -x "$CIC" ] || { echo "scaling.sh: no cic binary at $CIC (build first, or set CIC)" >&2; exit 2; }
+mkdir -p "$HERE/results"
+
+tune_studies=(tune-direct-c8 tune-direct-r1)   # the centipede first: the new question
+
+ledger() {   # merge every study's index.csv, then the summary
+  local s
+  for s in "${tune_studies[@]}"; do
+    [ -d "$output/$s" ] && "$CIC" --quiet sweep "$HERE/$s.xml" --output "$output/$s" --index-only
+  done
+  "$PY" "$ROOT/scripts/scaling-report.py" ledger --studies "$output" --results "$HERE/results" "${tune_studies[@]}" >/dev/null
+  "$PY" "$ROOT/scripts/scaling-report.py" summary --results "$HERE/results"
+}
+
+# A failed commit (another git command holding the index lock) is retried, and
+# never stops the study: the next run's commit takes its rows along.
+commit_results() {   # MESSAGE
+  [ "$commit" = 1 ] || return 0
+  local try
+  for try in 1 2 3; do
+    if git -C "$ROOT" add "$HERE/results" &&
+       { git -C "$ROOT" diff --cached --quiet -- "$HERE/results" ||
+         git -C "$ROOT" commit --quiet -m "$1" -- "$HERE/results"; }; then
+      return 0
+    fi
+    sleep 5
+  done
+  echo "scaling.sh: could not commit the ledger (the next run's commit will carry it)" >&2
+}
+
+# One study: without --commit, one `cic sweep`; with it, its pending tasks in
+# batches of --jobs (`cic sweep --task`, each resumable), the ledger committed after each batch.
+run_study() {   # STUDY
+  local file="$HERE/$1.xml" dir="$output/$1"
+  echo "== $1" >&2
+  if [ "$commit" = 0 ]; then
+    "$CIC" sweep "$file" --output "$dir" --jobs "$jobs" --workers 1 >&2
+    return 0
+  fi
+  mapfile -t pending < <("$CIC" sweep "$file" --output "$dir" --dry-run | awk '$1 ~ /^[0-9]+$/ && $3 ~ /^runs\// && $2 != "done" {print $1 " " $3}')
+  local i=0 batch=() item
+  while [ $i -lt ${#pending[@]} ]; do
+    batch=("${pending[@]:i:jobs}")
+    for item in "${batch[@]}"; do
+      "$CIC" --quiet sweep "$file" --output "$dir" --task "${item%% *}" --workers 1 >&2 &
+    done
+    wait
+    ledger
+    local done_now
+    done_now=$(awk -F, -v s="$1" '$1 == s && $4 == "done"' "$HERE/results/scaling-runs.csv" | wc -l)
+    commit_results "Ledger (issue 38): $1, $done_now runs done, the last ${batch[-1]#* }; scaling-runs.csv and tune-direct.md as of these runs"
+    i=$((i + jobs))
+  done
+}
+
+# The stages run from one function, called on the last line with `exit` after it:
+# bash reads a script as it goes, so an edit to this file while a study runs
+# (hours) must not be read in the middle of it.
+main() {
+  for stage in "${stages[@]}"; do
+    case "$stage" in
+      tune-direct)
+        if [ "$summary_only" = 0 ]; then
+          for s in "${tune_studies[@]}"; do run_study "$s"; done
+        fi
+        ledger
+        commit_results "Ledger (issue 38): tune-direct summary" ;;
+      ledger)
+        ledger ;;
+      estimate)
+        robots=(R1 R2 centipede-2 centipede-4 centipede-8 centipede-16
+                centipede-2-irregular centipede-4-irregular centipede-8-irregular centipede-16-irregular)
+        cpu() {   # CIC ARGS...: CPU seconds of one cic process
+          { TIMEFORMAT='%3U %3S'; time "$@" >/dev/null 2>&1; } 2>&1 | awk '{print $1 + $2}'
+        }
+        # A process's start-up (reading the robot, ODE's set-up), taken off each evaluation below.
+        startup=$(for _ in 1 2 3; do cpu "$CIC" simulate --robot R1 --controller sine:0.6,0.5 --seconds 0.05; done | sort -g | head -1)
+        for r in "${robots[@]}"; do
+          # The centipedes as their sweeps run them: collision search sweep (simple's bits, faster).
+          arg=$r space=0; [[ "$r" == centipede* ]] && arg="$ROOT/settings/robots/$r.xml" space=1
+          best=""
+          for _ in 1 2 3; do
+            # CPU seconds, less at the mercy of the machine's load than wall time.
+            w=$(cpu "$CIC" simulate --robot "$arg" --controller sine:0.6,0.5 --set Simulator.collisionSpace=$space |
+                awk -v s="$startup" '{print $1 - s}')
+            if [ -z "$best" ] || awk -v a="$w" -v b="$best" 'BEGIN {exit !(a < b)}'; then best=$w; fi
+          done
+          echo "$r $best"
+        done | "$PY" "$ROOT/scripts/scaling-report.py" estimate --results "$HERE/results"
+        echo "scaling.sh: wrote $HERE/results/estimate.md" >&2 ;;
+    esac
+  done
+}
+
+main; exit

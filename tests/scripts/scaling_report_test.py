@@ -1,0 +1,67 @@
+#!/usr/bin/env python3
+"""Scripts.ScalingReportLedgerAndEstimate: scripts/scaling-report.py merges a
+study's index.csv into the ledger, keeps a finished run whose folder is gone,
+lets a row found again replace its own, names the winner by median best_ever,
+and multiplies the plan out from seconds per evaluation.
+
+    scaling_report_test.py SOURCE_DIR WORK_DIR
+"""
+import csv
+import importlib.util
+import io
+import pathlib
+import shutil
+import sys
+
+source, work = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
+shutil.rmtree(work, ignore_errors=True)
+(work / "studies" / "tune-direct-c8").mkdir(parents=True)
+(work / "results").mkdir()
+spec = importlib.util.spec_from_file_location("scaling_report", source / "scripts" / "scaling-report.py")
+sr = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(sr)
+
+
+def check(condition, message):
+    if not condition:
+        print(f"scaling_report_test: {message}", file=sys.stderr)
+        sys.exit(1)
+
+
+HEADER = "run_dir,config,Gait.optimizer,seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit\n"
+
+
+def index(rows):
+    text = HEADER + "".join(
+        f"runs/{c}/s{s},{c},x,{s},{st},{b},10,2500,{w},{b},abc\n" for c, s, st, b, w in rows)
+    (work / "studies" / "tune-direct-c8" / "index.csv").write_text(text)
+
+
+index([("a", 101, "done", 3.0, 100.0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.0, 50.0),
+       ("b", 102, "pending", "", 0)])
+n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+check(n == 3, f"3 finished runs expected, got {n}")
+# A later sitting: a's s101 folder is gone (pending again), b's s102 finished, b's s101 found again, changed.
+index([("a", 101, "pending", "", 0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
+       ("b", 102, "done", 6.0, 50.0)])
+n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+rows = {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results" / "scaling-runs.csv"))}
+check(n == 4, f"4 finished runs expected, got {n}")
+check(rows[("a", "101")]["best_ever"] == "3.0", "a finished run whose folder is gone keeps its row")
+check(rows[("b", "101")]["best_ever"] == "4.5", "a run found again replaces its row")
+sr.summary(str(work / "results"))
+md = (work / "results" / "tune-direct.md").read_text()
+check("| b | 2 | 5.25 |" in md, "b's median of 4.5 and 6.0\n" + md)
+check("Winner so far: **b** (median 5.25)" in md, "b wins on the median\n" + md)
+check("| a | 2 | 4.00 | [3.50, 4.50] | 100 | 40.0 |" in md, "a's row: median, IQR, s per run, ms per evaluation\n" + md)
+
+# The estimate: every robot at 1 s per evaluation gives the plan's evaluations in hours.
+robots = ["R1", "R2"] + sr.CENTIPEDES
+sys.stdin = io.StringIO("".join(f"{r} 1.0\n" for r in robots))
+sr.estimate(str(work / "results"))
+est = (work / "results" / "estimate.md").read_text()
+want = sum(m * s * e * c for _, _, m, c, s, e in sr.plan(10)) / 3600
+check(f"**{want:.1f}**" in est, f"total {want:.1f} h expected\n" + est)
+check(sum(m * s for _, _, m, _, s, _ in sr.plan(5)) < sum(m * s for _, _, m, _, s, _ in sr.plan(10)),
+      "fewer seeds on the middle sizes, fewer runs")
+print("scaling_report_test: ok")
