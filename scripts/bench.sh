@@ -24,7 +24,7 @@ while [ $# -gt 0 ]; do
     --deap) deap="$2"; shift 2 ;;
     --r1) r1=1; shift ;;
     --tricks) tricks=1; shift ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     *) echo "bench.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
