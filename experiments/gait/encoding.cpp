@@ -26,7 +26,15 @@ sim::GaitSpec Encoding::decode(std::span<const double> x) const {
         if (!std::isfinite(v)) throw std::invalid_argument("gait encoding: a parameter is not finite");
     constexpr double pi = std::numbers::pi;
     auto unit = [this](double v) { return to_unit(v, bounds); };
-    auto angle = [&](double v) { return 2.0 * pi * (v - std::floor(v)); };
+    auto angle = [&](double v) {
+        if (!centred) return 2.0 * pi * (v - std::floor(v));
+        return 2.0 * pi * (std::abs(v) <= 0.5 ? v : v - std::round(v));
+    };
+    // An offset: the standard layout's x in [0, 1], or the centred one's in [-1/2, 1/2].
+    auto offset = [&](double v) {
+        if (!centred) return (2.0 * unit(v) - 1.0) * pi / 2;
+        return pi / 2 * (2.0 * (std::abs(v) <= 0.5 ? v : unit(v + 0.5) - 0.5));
+    };
     sim::GaitSpec g;
     g.frequency = frequency_min + unit(x[0]) * (frequency_max - frequency_min);
     g.joints.resize(joints);
@@ -35,13 +43,24 @@ sim::GaitSpec Encoding::decode(std::span<const double> x) const {
         sim::GaitJoint& out = g.joints[j];
         out.amplitude = unit(p[0]) * pi / 2;
         out.phase = angle(p[1]);
-        out.offset = (2.0 * unit(p[2]) - 1.0) * pi / 2;
+        out.offset = offset(p[2]);
         if (second_harmonic) {
             out.amplitude2 = unit(p[3]) * pi / 2;
             out.phase2 = angle(p[4]);
         }
     }
     return g;
+}
+
+std::vector<double> Encoding::lower() const {
+    std::vector<double> low(dimension(), 0.0);
+    if (!centred) return low;
+    for (std::size_t j = 0; j < joints; ++j) {
+        low[1 + j * per_joint() + 1] = -0.5;   // phase
+        low[1 + j * per_joint() + 2] = -0.5;   // offset
+        if (second_harmonic) low[1 + j * per_joint() + 4] = -0.5;
+    }
+    return low;
 }
 
 double to_unit(double v, Bounds bounds) {

@@ -120,8 +120,11 @@ void export_run(const fs::path& run, const std::string& label, const std::string
             for (const auto& t : ind->genotype) trees += (trees.empty() ? "" : " | ") + t.to_string();
             std::string dist, elev;
             if (model) {
-                auto [it, fresh] = seen.try_emplace(trees);
-                if (fresh) it->second = eq71_terms(model->robot, hypergp::run(*model, ind->genotype).result);
+                std::string key = trees;   // the genotype: trees and direct offsets (Offset-HybrID)
+                for (double d : ind->direct) key += fmt::format(" {}", d);
+                auto [it, fresh] = seen.try_emplace(key);
+                if (fresh)
+                    it->second = eq71_terms(model->robot, hypergp::run(*model, ind->genotype, ind->direct).result);
                 dist = number(it->second.first), elev = number(it->second.second);
             }
             csv += prefix + fmt::format("{},{},{},{},{},{},{},{},{},,\n", pop.population.generation, ind->id,
