@@ -156,7 +156,9 @@ int rows_of(const fs::path& stats) {
     std::string line;
     int rows = -1, expected = 0;
     while (std::getline(in, line)) {
-        if (rows >= 0) EXPECT_EQ(std::stoi(line.substr(0, line.find(','))), expected++) << line;
+        if (rows >= 0) {
+            EXPECT_EQ(std::stoi(line.substr(0, line.find(','))), expected++) << line;
+        }
         ++rows;
     }
     return rows;
@@ -191,7 +193,8 @@ TEST(SwitchHybrid, OneRunHandsOverInOneFolderWithTheSameBytesForAnyWorkers) {
     EXPECT_EQ(bits(first_gait.history.front()), bits(last_gp.population.best().fitness));
     const io::GaitFile last = io::load_gait(one.run / "population.xml");
     EXPECT_LE(e + last.evaluations, 90);
-    EXPECT_GT(e + last.evaluations + 7, 90);   // the budget is spent
+    EXPECT_NE(read_text(one.run / "summary.txt").find("stopped: evaluation budget"), std::string::npos)
+        << read_text(one.run / "summary.txt");   // the budget is spent: the next batch would pass it
     EXPECT_GE(last.champion.fitness, last_gp.population.best().fitness);
     // stats.csv: one row per generation, numbered on across the switch.
     EXPECT_EQ(rows_of(one.run / "stats.csv"), g + 1 + last.generation + 1);
@@ -257,7 +260,7 @@ TEST(SwitchHybrid, SettingsThatCannotHandOverExactlyAreRefused) {
     std::string freq = switch_settings(90, 1, std::string(kPatience) + "<frequencyMax>2</frequencyMax>");
     const auto b = run_settings(dir, "freq", freq);
     EXPECT_EQ(b.rc, 2) << b.log;
-    EXPECT_NE(b.log.find("Gait.frequencyMax"), std::string::npos) << b.log;
+    EXPECT_NE(b.log.find("both phases read one frequency range"), std::string::npos) << b.log;
     fs::remove_all(dir);
 }
 
