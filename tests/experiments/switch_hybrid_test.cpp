@@ -237,6 +237,26 @@ TEST(SwitchHybrid, ResumingBeforeAtOrAfterTheSwitchGivesTheSameBytes) {
     fs::remove_all(dir);
 }
 
+// SIGKILL at moments before, around and after the hand-over, then a resume
+// from whatever checkpoint was left: the bytes of the unbroken run.
+TEST(SwitchHybrid, KilledAnywhereAndResumedGivesTheSameBytes) {
+    const auto dir = temp_dir("switch-kill");
+    const auto whole = run_settings(dir, "whole", switch_settings(90, 2, kPatience));
+    ASSERT_EQ(whole.rc, 0) << whole.log;
+    const std::string want = read_text(whole.run / "population.xml");
+    write_text(dir / "s.xml", switch_settings(90, 2, kPatience));
+    int resumed_from_gait = 0;
+    for (int k = 0; k < 4; ++k) {
+        fs::path resumed, from;
+        ASSERT_TRUE(kill_then_resume(dir, dir / "s.xml", k, 0.25 + 0.3 * k, true, resumed, from))
+            << read_text(dir / "resumed.log");
+        EXPECT_EQ(read_text(resumed / "population.xml"), want) << "killed at " << 0.25 + 0.3 * k << " s, from " << from;
+        resumed_from_gait += !from.empty() && io::is_gait_file(from);
+    }
+    RecordProperty("resumed_from_gait_checkpoints", resumed_from_gait);
+    fs::remove_all(dir);
+}
+
 TEST(SwitchHybrid, AShareOfTheBudgetHandsOver) {
     const auto dir = temp_dir("switch-share");
     const auto r = run_settings(dir, "share", switch_settings(100, 1, "<switchShare>0.3</switchShare>"));
