@@ -217,6 +217,22 @@ TEST(PopulationXml, BadOffsetsAreRefusedWithTheirLine) {
     EXPECT_THROW(parse_population(t, "none.xml"), InputError);
 }
 
+// Switch-HybrID's stagnation clock: saved exactly, checked, absent elsewhere.
+TEST(PopulationXml, SwitchClockRoundTripsAndIsChecked) {
+    PopulationFile p = sample();
+    p.switch_clock = PopulationFile::SwitchClock{-1.0 / 3.0, 5};
+    const std::string text = to_xml(p);
+    const auto q = parse_population(text, "p.xml");
+    EXPECT_EQ(to_xml(q), text);
+    ASSERT_TRUE(q.switch_clock.has_value());
+    EXPECT_EQ(q.switch_clock->best, -1.0 / 3.0);
+    EXPECT_EQ(q.switch_clock->best_generation, 5);
+    EXPECT_EQ(to_xml(sample()).find("<switch"), std::string::npos);
+    std::string later = text;
+    later.replace(later.find("bestGeneration=\"5\""), 18, "bestGeneration=\"8\"");   // after generation 7
+    EXPECT_THROW(parse_population(later, "p.xml"), InputError);
+}
+
 TEST(PopulationXml, IncompatibleSettingsAreRefused) {
     Settings s;
     s.experiment.type = "symreg";
