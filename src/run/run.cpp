@@ -156,7 +156,7 @@ private:
                                  r.max_size, r.limit, r.illegal, r.evaluations, r.wall_seconds));
         ProgressLine p;
         p.generation = r.generation;
-        p.max_generations = r.max_generations;
+        p.max_generations = progress_generations > 0 ? progress_generations : r.max_generations;
         p.evaluations_per_second = r.generation_seconds > 0
             ? static_cast<double>(r.evaluations - evaluations_before_) / r.generation_seconds : 0.0;
         evaluations_before_ = r.evaluations;
@@ -164,7 +164,7 @@ private:
         p.mean = r.mean;
         p.limit = r.limit;
         const int done = r.generation + 1 - first_generation_;
-        const int left = r.max_generations - (r.generation + 1);
+        const int left = p.max_generations - (r.generation + 1);
         p.eta_seconds = done > 0 ? r.wall_seconds / done * left : -1.0;
         console_.progress(p);
     }
@@ -172,6 +172,8 @@ private:
 public:
     // Adds a phase's own state to each checkpoint (Switch-HybrID's clock).
     std::function<void(io::PopulationFile&)> annotate;
+    // The generations the progress line counts to, when not maximumIterations (0).
+    int progress_generations = 0;
 
 private:
     void on_checkpoint(const gp::Population& pop, const gp::EvolutionState& st, bool last) {
@@ -229,6 +231,7 @@ GpPhaseResult run_gp_phase(PreparedRun& prepared, const RunOptions& opt, RunCons
 
     GenerationObserver observer(s, opt, console, header, start);
     observer.annotate = phase.annotate;
+    observer.progress_generations = phase.progress_generations;
     gp::EvolutionHooks hooks = observer.hooks();
     if (phase.on_generation)
         hooks.on_generation = [observer_hook = hooks.on_generation, &phase](const gp::GenerationRecord& r) {

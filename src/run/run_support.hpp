@@ -106,6 +106,8 @@ struct GpPhase {
     // Ends the phase after a generation (gp::EvolutionHooks::hand_over);
     // with it Control.maximumIterations does not apply.
     std::function<bool(const gp::GenerationRecord&)> hand_over;
+    // What the progress line counts to instead of maximumIterations; 0 = that.
+    int progress_generations = 0;
 };
 struct GpPhaseResult {
     gp::EvolutionResult result;

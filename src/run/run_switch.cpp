@@ -8,6 +8,8 @@
 // (hypergp::gait_box_point), for the rest of the budget. Each phase saves its
 // own state: population files carry the stagnation clock, gait checkpoints
 // the hand-over; a resume from either continues the same run.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "cic/experiments/hypergp/gait_substrate.hpp"
@@ -70,6 +72,10 @@ int run_switch(PreparedRun prepared, const RunOptions& opt) {
     GpPhase phase;
     phase.on_generation = [&](const gp::GenerationRecord& r) { rule.note(r); };
     phase.annotate = [&](io::PopulationFile& f) { f.switch_clock = rule.clock(); };
+    // At most: the generations HyperGP's share of the budget allows.
+    const double share = s.neural.switch_share > 0 ? s.neural.switch_share : 1.0;
+    phase.progress_generations = std::max(1, static_cast<int>(share * static_cast<double>(s.gait.evaluations) /
+                                                              std::max(1, s.gp.population_size)));
     phase.hand_over = [&](const gp::GenerationRecord& r) {
         rule.note(r);   // a resumed population's own record: no-op when the file's clock has it
         why = rule.why(r);
