@@ -115,8 +115,8 @@ int run_gait_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& con
             restarts_said = search.restarts();
             say(fmt::format("restart {}: population {} from generation {}, after {} generations without improvement "
                             "of more than {:g}{}",
-                            search.restarts(), search.population_size(), at.generation + search.generation(), last_stalled,
-                            restart_rule.tolerance, last_collapsed ? " (the candidates had collapsed)" : ""));
+                            search.restarts(), search.population_size(), at.generation + search.generation(),
+                            last_stalled, restart_rule.tolerance, last_collapsed ? " (the candidates had collapsed)" : ""));
         }
         const gp::GenerationRecord r = record_of(search, at, evaluator.failed() - failed_before,
                                                  seconds_since(started), generation_seconds);

@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/gait_substrate.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 #include "run_support.hpp"
@@ -93,6 +94,12 @@ int run_switch(PreparedRun prepared, const RunOptions& opt) {
 
     const gp::Individual& best = result.population.best();
     const hypergp::Model model = hypergp::Model::from_settings(s);
+    if (result.state.evaluations + gait::Setup::from_settings(s).population > s.gait.evaluations) {
+        // HyperGP spent the budget: no room for one batch of the gait phase.
+        console.summary(gp_summary + "the budget leaves no room for the gait phase\n");
+        finish_run(s, opt, console);
+        return 0;
+    }
     io::GaitHandover h;
     h.generation = result.population.generation;
     h.evaluations = result.state.evaluations;
