@@ -63,6 +63,28 @@ std::vector<double> Encoding::lower() const {
     return low;
 }
 
+std::vector<double> Encoding::in_box(std::span<const double> x) const {
+    (void)decode(x);   // the same checks
+    std::vector<double> out(x.begin(), x.end());
+    // decode's angle(): 2 pi (v - floor v), the same bits from [0, 1); centred: 2 pi w, w in [-1/2, 1/2].
+    auto phase_in_box = [this](double v) {
+        if (!centred) return v - std::floor(v);
+        return std::abs(v) <= 0.5 ? v : v - std::round(v);
+    };
+    out[0] = to_unit(x[0], bounds);
+    for (std::size_t j = 0; j < joints; ++j) {
+        double* p = out.data() + 1 + j * per_joint();
+        p[0] = to_unit(p[0], bounds);
+        p[1] = phase_in_box(p[1]);
+        p[2] = centred ? (std::abs(p[2]) <= 0.5 ? p[2] : to_unit(p[2] + 0.5, bounds) - 0.5) : to_unit(p[2], bounds);
+        if (second_harmonic) {
+            p[3] = to_unit(p[3], bounds);
+            p[4] = phase_in_box(p[4]);
+        }
+    }
+    return out;
+}
+
 double to_unit(double v, Bounds bounds) {
     if (bounds == Bounds::Clamp) return std::clamp(v, 0.0, 1.0);
     const double t = v - 2.0 * std::floor(v / 2.0);   // in [0, 2): the triangle wave's period

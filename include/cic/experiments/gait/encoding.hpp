@@ -53,6 +53,11 @@ struct Encoding {
     // The box's lower corner (its width is 1 in every coordinate): 0, and
     // -1/2 for the phase and offset coordinates of the centred layout.
     std::vector<double> lower() const;
+    // The point of the unit box that decodes to the same gait, bit for bit:
+    // each parameter read as decode reads it (Bounds; a phase wrapped; the
+    // centred layout into its own box). How an optimiser's raw point is
+    // handed to someone who works in the box (Python).
+    std::vector<double> in_box(std::span<const double> x) const;
 };
 
 // A sampled coordinate read into [0, 1] as `bounds` says.
