@@ -170,6 +170,7 @@ int run_gait_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& con
     }
 
     std::string reason;
+    const int first_generation = search.generation();
     for (;;) {
         if (search.champion().fitness >= s.control.minimum_fitness) {
             reason = "minimum fitness reached";
@@ -189,6 +190,11 @@ int run_gait_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& con
         search.step(batch);
         after_generation(seconds_since(t0));
     }
+    // A resume from a run's last checkpoint ends at once: the run's final state
+    // goes into this folder too (as the GP loop saves a resumed last generation again).
+    if (prepared.gait_resume && search.generation() == first_generation && reason != "interrupted")
+        write_checkpoint(opt.run_dir, at.generation + search.generation(),
+                         io::to_xml(checkpoint_of(search, s, handover)));
 
     const gait::Candidate& best = search.champion();
     const std::string summary =

@@ -215,8 +215,11 @@ TEST(SwitchHybrid, ResumingBeforeAtOrAfterTheSwitchGivesTheSameBytes) {
     ASSERT_TRUE(std::regex_search(log, m, std::regex("hands over after generation (\\d+)"))) << log;
     const int g = std::stoi(m[1]);
     ASSERT_GE(g, 2);
-    // Before (a HyperGP checkpoint), at (the last one) and after (the first gait one).
-    for (int from : {g - 1, g, g + 1}) {
+    // Before (a HyperGP checkpoint), at (the last one), after (the first gait
+    // one) and at the end (the run's final checkpoint: the resume ends at once).
+    const io::GaitFile final_state = io::load_gait(whole.run / "population.xml");
+    const int last = g + 1 + final_state.generation;
+    for (int from : {g - 1, g, g + 1, last}) {
         const fs::path file = checkpoint(whole.run, from);
         ASSERT_TRUE(fs::exists(file)) << file;
         const auto r = run_settings(dir, "from" + std::to_string(from),
