@@ -35,7 +35,7 @@ public:
         std::unordered_map<std::string_view, std::size_t> queued;
         std::vector<std::string> bodies(todo.size());
         for (std::size_t i = 0; i < todo.size(); ++i) {
-            bodies[i] = job_kind_ + "\n" + hypergp::job_body(todo[i]->genotype, descriptor_);
+            bodies[i] = job_kind_ + "\n" + hypergp::job_body(todo[i]->genotype, descriptor_, todo[i]->direct);
             if (auto hit = cache_.find(bodies[i]); hit != cache_.end()) {
                 apply(*todo[i], hit->second);
                 job_of[i] = kCached;
@@ -115,6 +115,7 @@ public:
                (ind.failed ? " [failed: " + ind.failure + "]" : "");
     }
     std::string session_note() const override { return eval_.session_note(); }
+    gp::DirectGenes direct_genes() const override { return hypergp::direct_offset_genes(eval_.model()); }
 
 private:
     HypergpEvaluator eval_;

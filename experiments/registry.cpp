@@ -69,11 +69,12 @@ const ExperimentKind& experiment_kind(std::string_view name) {
 }
 
 hypergp::Outcome evaluate_as_type(const hypergp::Model& model, const io::Settings& settings,
-                                  const tree::Forest& genotype, sim::EvalOptions options, bool record_control) {
+                                  const tree::Forest& genotype, sim::EvalOptions options, bool record_control,
+                                  std::span<const double> offsets) {
     const ExperimentKind& kind = experiment_kind(settings.experiment.type);
     options.record_trace = options.record_trace || kind.needs.trace;
     options.record_ground = options.record_ground || kind.needs.contacts;
-    hypergp::Outcome o = hypergp::run(model, genotype, options, record_control);
+    hypergp::Outcome o = hypergp::run(model, genotype, offsets, options, record_control);
     hypergp::apply_score(o, kind.score, model, settings);
     return o;
 }

@@ -26,7 +26,15 @@ sim::GaitSpec Encoding::decode(std::span<const double> x) const {
         if (!std::isfinite(v)) throw std::invalid_argument("gait encoding: a parameter is not finite");
     constexpr double pi = std::numbers::pi;
     auto unit = [this](double v) { return to_unit(v, bounds); };
-    auto angle = [&](double v) { return 2.0 * pi * (v - std::floor(v)); };
+    auto angle = [&](double v) {
+        if (!centred) return 2.0 * pi * (v - std::floor(v));
+        return 2.0 * pi * (std::abs(v) <= 0.5 ? v : v - std::round(v));
+    };
+    // An offset: the standard layout's x in [0, 1], or the centred one's in [-1/2, 1/2].
+    auto offset = [&](double v) {
+        if (!centred) return (2.0 * unit(v) - 1.0) * pi / 2;
+        return pi / 2 * (2.0 * (std::abs(v) <= 0.5 ? v : unit(v + 0.5) - 0.5));
+    };
     sim::GaitSpec g;
     g.frequency = frequency_min + unit(x[0]) * (frequency_max - frequency_min);
     g.joints.resize(joints);
@@ -35,7 +43,7 @@ sim::GaitSpec Encoding::decode(std::span<const double> x) const {
         sim::GaitJoint& out = g.joints[j];
         out.amplitude = unit(p[0]) * pi / 2;
         out.phase = angle(p[1]);
-        out.offset = (2.0 * unit(p[2]) - 1.0) * pi / 2;
+        out.offset = offset(p[2]);
         if (second_harmonic) {
             out.amplitude2 = unit(p[3]) * pi / 2;
             out.phase2 = angle(p[4]);
@@ -44,18 +52,34 @@ sim::GaitSpec Encoding::decode(std::span<const double> x) const {
     return g;
 }
 
+std::vector<double> Encoding::lower() const {
+    std::vector<double> low(dimension(), 0.0);
+    if (!centred) return low;
+    for (std::size_t j = 0; j < joints; ++j) {
+        low[1 + j * per_joint() + 1] = -0.5;   // phase
+        low[1 + j * per_joint() + 2] = -0.5;   // offset
+        if (second_harmonic) low[1 + j * per_joint() + 4] = -0.5;
+    }
+    return low;
+}
+
 std::vector<double> Encoding::in_box(std::span<const double> x) const {
     (void)decode(x);   // the same checks
     std::vector<double> out(x.begin(), x.end());
+    // decode's angle(): 2 pi (v - floor v), the same bits from [0, 1); centred: 2 pi w, w in [-1/2, 1/2].
+    auto phase_in_box = [this](double v) {
+        if (!centred) return v - std::floor(v);
+        return std::abs(v) <= 0.5 ? v : v - std::round(v);
+    };
     out[0] = to_unit(x[0], bounds);
     for (std::size_t j = 0; j < joints; ++j) {
         double* p = out.data() + 1 + j * per_joint();
         p[0] = to_unit(p[0], bounds);
-        p[1] = p[1] - std::floor(p[1]);   // decode's angle(): 2 pi (v - floor v), the same bits from [0, 1)
-        p[2] = to_unit(p[2], bounds);
+        p[1] = phase_in_box(p[1]);
+        p[2] = centred ? (std::abs(p[2]) <= 0.5 ? p[2] : to_unit(p[2] + 0.5, bounds) - 0.5) : to_unit(p[2], bounds);
         if (second_harmonic) {
             p[3] = to_unit(p[3], bounds);
-            p[4] = p[4] - std::floor(p[4]);
+            p[4] = phase_in_box(p[4]);
         }
     }
     return out;

@@ -19,7 +19,9 @@ RestartRule restart_rule_of(const io::Settings& s) {
 }
 
 Search make_search(const Setup& setup, const RestartRule& rule, std::uint64_t seed) {
-    return Search(setup.optimizer, setup.dimension(), setup.population, setup.sigma0, seed, rule);
+    Search search(setup.optimizer, setup.dimension(), setup.population, setup.sigma0, seed, rule);
+    if (setup.encoding.centred && !setup.cpg) search.set_box(setup.encoding.lower());
+    return search;
 }
 
 io::GaitRestartRecord restart_record_of(const Search& search) {
@@ -29,6 +31,7 @@ io::GaitRestartRecord restart_record_of(const Search& search) {
 Search resume_search(const Setup& setup, const RestartRule& rule, const io::GaitFile& g, const std::string& file) {
     Search search = make_search(setup, rule, g.seed);
     try {
+        if (g.handover) search.set_start(g.handover->x);   // Switch-HybrID's first batch was drawn around it
         search.replay(g.history, g.generation);
     } catch (const std::invalid_argument& e) {
         throw InputError(std::string("the checkpoint does not replay: ") + e.what(), file);

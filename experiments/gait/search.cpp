@@ -83,6 +83,8 @@ struct Search::Impl {
     bool pending = false;         // the next step begins start restart + 1
     int stalled = 0;
     bool collapsed = false;
+    std::vector<double> lower;    // the box's lower corner; empty = 0
+    std::vector<double> x0;       // the first start's centre (set_start); empty = uniform
 
     Impl(Optimizer o, std::size_t dim, int pop_size, double sigma, std::uint64_t s, RestartRule r)
         : optimizer(o), n(dim), lambda0(pop_size), lambda(pop_size), sigma0(sigma), seed(s), rule(r), problem{dim},
@@ -116,8 +118,17 @@ struct Search::Impl {
         const std::uint64_t s = start_seed();
         Rng rng(s);
         std::vector<std::vector<double>> xs(static_cast<std::size_t>(lambda), std::vector<double>(n));
-        for (auto& x : xs)
-            for (double& v : x) v = rng.uniform(0.0, 1.0);
+        if (restart == 0 && !x0.empty()) {
+            xs[0] = x0;
+            for (std::size_t i = 1; i < xs.size(); ++i)
+                for (std::size_t d = 0; d < n; ++d) xs[i][d] = x0[d] + sigma0 * rng.normal();
+        } else if (lower.empty()) {
+            for (auto& x : xs)
+                for (double& v : x) v = rng.uniform(0.0, 1.0);
+        } else {
+            for (auto& x : xs)
+                for (std::size_t d = 0; d < n; ++d) x[d] = rng.uniform(lower[d], lower[d] + 1.0);
+        }
         const std::vector<double> f = evaluate(xs);
         if (f.size() != xs.size()) throw std::logic_error("gait search: the evaluator returned the wrong count");
         current.clear();
@@ -195,6 +206,30 @@ Search::Search(Optimizer optimizer, std::size_t dimension, int population, doubl
 Search::~Search() = default;
 Search::Search(Search&&) noexcept = default;
 Search& Search::operator=(Search&&) noexcept = default;
+
+namespace {
+
+void check_point(const std::vector<double>& x, std::size_t n, const char* what) {
+    if (x.size() != n)
+        throw std::invalid_argument(std::string("gait search: ") + what + " of " + std::to_string(x.size()) +
+                                    " coordinates for " + std::to_string(n) + " parameters");
+    for (double v : x)
+        if (!std::isfinite(v)) throw std::invalid_argument(std::string("gait search: ") + what + " is not finite");
+}
+
+} // namespace
+
+void Search::set_box(std::vector<double> lower) {
+    check_point(lower, impl_->n, "a box corner");
+    impl_->lower = std::move(lower);
+}
+
+void Search::set_start(std::vector<double> x0) {
+    check_point(x0, impl_->n, "a start point");
+    impl_->x0 = std::move(x0);
+}
+
+const std::vector<double>& Search::start_point() const { return impl_->x0; }
 
 void Search::initialise(const BatchEvaluator& evaluate_) {
     Impl& m = *impl_;

@@ -29,6 +29,7 @@ Setup Setup::from_settings(const io::Settings& s) {
               Encoding(joints, s.gait.second_harmonic, s.gait.frequency_min, s.gait.frequency_max,
                        s.gait.bounds == io::GaitBounds::Reflect ? Bounds::Reflect : Bounds::Clamp),
               std::nullopt};
+    out.encoding.centred = s.neural.switches();   // Switch-HybrID's gait phase (encoding.hpp)
     if (s.gait.controller == io::GaitController::Cpg)
         out.cpg.emplace(model.robot, s.neural, model.sim.sample_step, out.encoding.bounds);
     out.optimizer = optimizer_of(s.gait.optimizer);

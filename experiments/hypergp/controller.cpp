@@ -57,13 +57,20 @@ const ControllerRegistrar cpg{{"cpg", "coupled oscillators, one per joint",
             std::make_unique<RecordedController>(std::make_unique<sim::CpgController>(std::move(spec)), range, pairs));
     }}};
 
+std::unique_ptr<Controller> make_gait(const sim::RobotSpec& robot, const tree::Forest& genotype,
+                                      std::span<const double> offsets, const nn::NeuralConfig& cfg) {
+    sim::GaitSpec spec = gait_spec(robot, genotype, cfg, offsets);
+    const std::size_t joints = spec.joints.size();
+    return std::make_unique<RecordedController>(std::make_unique<sim::GaitController>(std::move(spec)), kHalfPi,
+                                                joints);
+}
+
 const ControllerRegistrar gait{{"gait", "each joint's amplitude, phase and offset, one evolved frequency",
     [](const sim::RobotSpec& robot, const tree::Forest& genotype, const nn::NeuralConfig& cfg, double) {
-        sim::GaitSpec spec = gait_spec(robot, genotype, cfg);
-        const std::size_t joints = spec.joints.size();
-        return std::unique_ptr<Controller>(std::make_unique<RecordedController>(
-            std::make_unique<sim::GaitController>(std::move(spec)), kHalfPi, joints));
-    }}};
+        return make_gait(robot, genotype, {}, cfg);
+    },
+    [](const sim::RobotSpec& robot, const tree::Forest& genotype, std::span<const double> offsets,
+       const nn::NeuralConfig& cfg, double) { return make_gait(robot, genotype, offsets, cfg); }}};
 
 } // namespace
 
@@ -81,11 +88,20 @@ const ControllerKind* find_controller(std::string_view name) {
     return nullptr;
 }
 
+bool takes_direct_offsets(std::string_view name) {
+    const ControllerKind* kind = find_controller(name);
+    return kind && kind->make_with_offsets;
+}
+
 std::unique_ptr<Controller> make_controller(const sim::RobotSpec& robot, const tree::Forest& genotype,
-                                            const nn::NeuralConfig& cfg, double control_step) {
+                                            const nn::NeuralConfig& cfg, double control_step,
+                                            std::span<const double> offsets) {
     const ControllerKind* kind = find_controller(cfg.substrate);
     if (!kind) throw std::invalid_argument("make_controller: no controller is registered as '" + cfg.substrate + "'");
-    return kind->make(robot, genotype, cfg, control_step);
+    if (offsets.empty()) return kind->make(robot, genotype, cfg, control_step);
+    if (!kind->make_with_offsets)
+        throw std::invalid_argument("make_controller: substrate '" + cfg.substrate + "' takes no direct offsets");
+    return kind->make_with_offsets(robot, genotype, offsets, cfg, control_step);
 }
 
 } // namespace cic::hypergp

@@ -1,6 +1,7 @@
 #include "cic/experiments/hypergp/model.hpp"
 #include "cic/experiments/map_elites_grid.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -8,10 +9,14 @@
 #include <stdexcept>
 #include <tuple>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include "cic/core/error.hpp"
 #include "cic/core/limits.hpp"
 #include "cic/io/robot_xml.hpp"
 #include "cic/io/settings_io.hpp"
+#include "cic/experiments/hypergp/gait_substrate.hpp"
 #include "cic/experiments/hypergp/oscillation.hpp"
 #include "cic/experiments/hypergp/substrate_geometry.hpp"
 
@@ -60,8 +65,13 @@ void check_inputs(const io::Settings& s) {
 }
 
 Outcome run(const Model& m, const tree::Forest& genotype, const sim::EvalOptions& options, bool record_control) {
+    return run(m, genotype, {}, options, record_control);
+}
+
+Outcome run(const Model& m, const tree::Forest& genotype, std::span<const double> offsets,
+            const sim::EvalOptions& options, bool record_control) {
     Outcome o;
-    const std::unique_ptr<Controller> made = make_controller(m.robot, genotype, m.neural, m.sim.sample_step);
+    const std::unique_ptr<Controller> made = make_controller(m.robot, genotype, m.neural, m.sim.sample_step, offsets);
     Controller& controller = *made;
     o.synapses = controller.connections();
     const bool penalised = m.neural.penalty != nn::OscillationPenalty::None;
@@ -84,9 +94,20 @@ Outcome run(const Model& m, const tree::Forest& genotype, const sim::EvalOptions
     return o;
 }
 
-std::string job_body(const tree::Forest& genotype, sim::Descriptor descriptor) {
+gp::DirectGenes direct_offset_genes(const Model& m) {
+    gp::DirectGenes g;
+    if (!m.neural.direct_offsets) return g;
+    g.count = m.robot.actuated().size();
+    g.limit = kOffsetLimit;
+    g.sigma = m.neural.offset_sigma;
+    g.rate = m.neural.offset_rate;
+    return g;
+}
+
+std::string job_body(const tree::Forest& genotype, sim::Descriptor descriptor, std::span<const double> offsets) {
     std::string body;
     for (const auto& t : genotype) body += t.to_string() + "\n";
+    if (!offsets.empty()) body += fmt::format("offsets {}\n", fmt::join(offsets, " "));
     if (descriptor != sim::Descriptor::None) body += "descriptor " + sim::to_string(descriptor) + "\n";
     return body;
 }
@@ -97,6 +118,23 @@ Job parse_job_body(const std::string& body) {
     std::string line;
     while (std::getline(in, line)) {
         if (line.empty()) continue;
+        if (line.starts_with("offsets ")) {   // after the trees, before a descriptor
+            if (job.genotype.empty()) throw std::invalid_argument("hypergp job: offsets before the trees");
+            if (!job.offsets.empty()) throw std::invalid_argument("hypergp job: two lines of offsets");
+            std::istringstream items(line.substr(8));
+            std::string item;
+            while (items >> item) {
+                double d = 0;
+                const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), d);
+                if (ec != std::errc() || end != item.data() + item.size() || !std::isfinite(d))
+                    throw std::invalid_argument("hypergp job: bad offset '" + item + "'");
+                job.offsets.push_back(d);
+            }
+            if (job.offsets.empty()) throw std::invalid_argument("hypergp job: an empty line of offsets");
+            continue;
+        }
+        if (!job.offsets.empty() && !line.starts_with("descriptor "))
+            throw std::invalid_argument("hypergp job: a tree after the offsets");
         if (line.starts_with("descriptor ")) {   // the last line, when present
             if (job.genotype.empty()) throw std::invalid_argument("hypergp job: a descriptor before the trees");
             job.descriptor = sim::descriptor_from(line.substr(11));
@@ -147,7 +185,7 @@ std::function<std::string(const std::string&)> make_job_handler(std::function<io
             loaded->emplace(Loaded{std::move(s), std::move(m)});
         }
         const Job job = parse_job_body(body);
-        Outcome o = run((*loaded)->model, job.genotype, options_for(needs, job.descriptor));
+        Outcome o = run((*loaded)->model, job.genotype, job.offsets, options_for(needs, job.descriptor));
         apply_score(o, score, (*loaded)->model, (*loaded)->settings);
         return sim::format_eval_reply(
             to_reply((*loaded)->model, o, o.failed ? std::vector<double>{}

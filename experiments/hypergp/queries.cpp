@@ -52,10 +52,13 @@ double squash(double v) { return std::isnan(v) ? 0.0 : std::tanh(v); }
 
 double unit(double v) { return 0.5 * (1.0 + squash(v)); }
 
-double evolved_frequency(const tree::Forest& genotype, const nn::NeuralConfig& cfg) {
+double evolved_frequency_unit(const tree::Forest& genotype, const nn::NeuralConfig& cfg) {
     const Query q{0, kFrequencyPoint, kFrequencyPoint, nn::kHiddenLayer, nn::kHiddenLayer};
-    const double v = ask(genotype, cfg, {&q, 1}).front();
-    return cfg.frequency_min + (cfg.frequency_max - cfg.frequency_min) * unit(v);
+    return unit(ask(genotype, cfg, {&q, 1}).front());
+}
+
+double evolved_frequency(const tree::Forest& genotype, const nn::NeuralConfig& cfg) {
+    return cfg.frequency_min + (cfg.frequency_max - cfg.frequency_min) * evolved_frequency_unit(genotype, cfg);
 }
 
 } // namespace cic::hypergp

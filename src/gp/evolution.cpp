@@ -13,10 +13,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-IndividualPtr make_child(EvolutionState& st, tree::Forest genotype, std::vector<std::uint64_t> parents) {
+IndividualPtr make_child(EvolutionState& st, tree::Forest genotype, std::vector<std::uint64_t> parents,
+                         std::vector<double> direct = {}) {
     auto c = std::make_shared<Individual>();
     c->id = st.next_id++;
     c->genotype = std::move(genotype);
+    c->direct = std::move(direct);
     c->parents = std::move(parents);
     return c;
 }
@@ -67,6 +69,7 @@ std::string to_string(StopReason r) {
     case StopReason::MaximumIterations: return "maximumIterations reached";
     case StopReason::MinimumFitness: return "minimumFitness reached";
     case StopReason::Interrupted: return "interrupted";
+    case StopReason::HandedOver: return "handed over";
     }
     return "?";
 }
@@ -130,13 +133,15 @@ void Initialise::apply(Population& pop, EvolutionState& st) {
     const auto n = static_cast<std::size_t>(cfg_.population_size);
     for (std::size_t slot = 0; slot < n; ++slot) {
         tree::Forest f;
+        std::vector<double> direct;
         for (int attempt = 0;; ++attempt) {
             f.clear();
             for (int t = 0; t < cfg_.trees_per_genotype; ++t) f.push_back(gen_.generate(st.rng, slot, n));
-            if (!cfg_.prevent_duplicates || seen.insert(f)) break;
+            if (cfg_.direct.count > 0) direct = initial_direct(st.rng, cfg_.direct);   // no draw without genes
+            if (!cfg_.prevent_duplicates || seen.insert(f, direct)) break;
             if (attempt >= cfg_.duplicate_retries) break;   // bounded: accept a duplicate
         }
-        auto ind = make_child(st, std::move(f), {});
+        auto ind = make_child(st, std::move(f), {}, std::move(direct));
         ind->fitness = cfg_.default_fitness;
         pop.individuals.push_back(std::move(ind));
     }
@@ -178,15 +183,22 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, SeenGenotypes&
     for (int attempt = 0; out.empty(); ++attempt) {
         const bool force = attempt >= cfg_.duplicate_retries;
         // Hashes are needed only to prevent duplicates (`seen` is not read otherwise).
-        auto admit = [&](tree::Forest f, std::vector<std::uint64_t> ids, const Individual& a, const Individual* b) {
+        // A child inherits the direct genes of its first parent (whose root its
+        // trees keep), moved by a Gaussian step (GpConfig::direct).
+        auto genes_of = [&](const Individual& p) {
+            return cfg_.direct.count > 0 ? mutate_direct(st.rng, p.direct, cfg_.direct) : std::vector<double>{};
+        };
+        auto admit = [&](tree::Forest f, std::vector<double> direct, std::vector<std::uint64_t> ids,
+                         const Individual& a, const Individual* b) {
             if (out.size() >= room) return;
-            if (cfg_.prevent_duplicates && !seen.insert(f) && !force) return;
+            if (cfg_.prevent_duplicates && !seen.insert(f, direct) && !force) return;
             // Evaluation is a pure function of the genotype: a child identical to a
             // parent (e.g. crossover swapping equal subtrees) inherits its fitness
             // instead of being evaluated again. About a third of children in
             // symbolic regression; results are the same, only faster.
-            const Individual* same = f == a.genotype ? &a : (b && f == b->genotype ? b : nullptr);
-            auto child = make_child(st, std::move(f), std::move(ids));
+            const Individual* same = f == a.genotype && direct == a.direct ? &a
+                : (b && f == b->genotype && direct == b->direct ? b : nullptr);
+            auto child = make_child(st, std::move(f), std::move(ids), std::move(direct));
             if (same && same->evaluated) {
                 child->fitness = same->fitness;
                 child->evaluated = true;
@@ -200,14 +212,16 @@ std::vector<IndividualPtr> Breed::breed_event(EvolutionState& st, SeenGenotypes&
         if (r < cfg_.crossover_rate) {
             const Individual& p2 = *parents[select(st.rng, parents, cfg_)];
             auto [a, b] = crossover(st.rng, p1.genotype, p2.genotype, cfg_.node_selection);
-            admit(std::move(a), {p1.id, p2.id}, p1, &p2);
-            admit(std::move(b), {p2.id, p1.id}, p2, &p1);
+            auto genes_a = genes_of(p1);
+            auto genes_b = genes_of(p2);
+            admit(std::move(a), std::move(genes_a), {p1.id, p2.id}, p1, &p2);
+            admit(std::move(b), std::move(genes_b), {p2.id, p1.id}, p2, &p1);
         } else if (r < cfg_.crossover_rate + cfg_.mutation_rate) {
-            admit(mutate(st.rng, p1.genotype, gen_, mutation_levels_, cfg_.node_selection),
-                  {p1.id}, p1, nullptr);
+            auto trees = mutate(st.rng, p1.genotype, gen_, mutation_levels_, cfg_.node_selection);
+            admit(std::move(trees), genes_of(p1), {p1.id}, p1, nullptr);
         } else {
             // Reproduction: an unchanged copy keeps its known fitness.
-            if (cfg_.prevent_duplicates && !seen.insert(p1.genotype) && !force) continue;
+            if (cfg_.prevent_duplicates && !seen.insert(p1.genotype, p1.direct) && !force) continue;
             out.push_back(copy_of(st, p1));
         }
     }
@@ -241,7 +255,7 @@ void Breed::apply(Population& pop, EvolutionState& st) {
                       [](const IndividualPtr* a, const IndividualPtr* b) { return better(**a, **b); });
     for (std::size_t e = 0; e < elites; ++e) {
         next.individuals.push_back(*ranked[e]);
-        if (cfg_.prevent_duplicates) seen.insert((*ranked[e])->genotype);
+        if (cfg_.prevent_duplicates) seen.insert((*ranked[e])->genotype, (*ranked[e])->direct);
     }
     while (next.size() < n) {
         if (!retiring_.empty()) retiring_.pop_back();   // room for this event's first child
@@ -257,7 +271,7 @@ std::vector<std::size_t> Breed::replace_duplicates(Population& pop, EvolutionSta
     if (!cfg_.prevent_duplicates) return slots;
     SeenGenotypes seen;
     for (std::size_t i = 0; i < pop.size(); ++i)
-        if (!seen.insert(pop[i].genotype)) slots.push_back(i);
+        if (!seen.insert(pop[i].genotype, pop[i].direct)) slots.push_back(i);
     for (auto i : slots) pop.individuals[i] = breed_event(st, seen, 1).front();
     return slots;
 }
@@ -292,7 +306,7 @@ void BloatControl::filter(Population& pop, EvolutionState& st, std::span<const s
         if (ind->parents.empty()) continue;
         const Individual* p1 = find(ind->parents[0]);
         if (!p1) continue;   // an elite carried over
-        if (ind->parents.size() == 1 && ind->genotype == p1->genotype) continue;  // a copy
+        if (ind->parents.size() == 1 && ind->genotype == p1->genotype) continue;  // a copy (or its genes moved)
         const Individual* p2 = ind->parents.size() > 1 ? find(ind->parents[1]) : nullptr;
         // No tree past the size limit (core/limits.hpp), whatever the bloat control;
         // then Dynamic Limits, or else Koza's per-tree cap (maximumTreeDepth 0 = none).
@@ -357,6 +371,7 @@ EvolutionResult evolve(const GpConfig& gp, const BloatConfig& bloat, const StopC
         StopReason reason{};
         bool done = true;
         if (rec.best >= stop.minimum_fitness) reason = StopReason::MinimumFitness;
+        else if (hooks.hand_over && hooks.hand_over(rec)) reason = StopReason::HandedOver;
         else if (pop.generation + 1 >= stop.maximum_iterations) reason = StopReason::MaximumIterations;
         else if (hooks.stop_requested && hooks.stop_requested->load()) reason = StopReason::Interrupted;
         else done = false;

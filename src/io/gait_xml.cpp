@@ -64,6 +64,11 @@ std::string to_xml(const GaitFile& g) {
         for (int v : g.restarts->generations) gens += (gens.empty() ? "" : " ") + std::to_string(v);
         r.set_attribute("generations", gens);
     }
+    if (g.handover) {
+        auto h = root.add_child("handover", exact_list(g.handover->x));
+        h.set_attribute("generation", std::to_string(g.handover->generation));
+        h.set_attribute("evaluations", std::to_string(g.handover->evaluations));
+    }
     return doc.to_string();
 }
 
@@ -133,9 +138,21 @@ GaitFile read_gait(const xml::Document& doc) {
                 throw c.error("<restarts count=\"" + std::to_string(r.count) + "\"> lists " +
                               std::to_string(r.generations.size()) + " generations (truncated or edited?)");
             g.restarts = std::move(r);
+        } else if (n == "handover") {
+            if (g.handover) throw c.error("<handover> appears twice");
+            GaitHandover h;
+            h.generation = attribute<int>(c, "generation");
+            h.evaluations = attribute<long>(c, "evaluations");
+            if (h.generation < 0 || h.evaluations < 0)
+                throw c.error("<handover> generation and evaluations must be >= 0");
+            h.x = detail::parse_numbers(c, "parameter", c.text());
+            if (h.x.size() != g.dimension)
+                throw c.error("<handover> has " + std::to_string(h.x.size()) + " parameters, the file says " +
+                              std::to_string(g.dimension));
+            g.handover = std::move(h);
         } else {
             throw c.error("unknown element <" + std::string(n) +
-                          "> in <gaitRun>; allowed: champion, candidates, history, restarts");
+                          "> in <gaitRun>; allowed: champion, candidates, history, restarts, handover");
         }
     }
     if (!champion || !candidates || !state)
@@ -163,8 +180,12 @@ bool is_gait_file(const std::filesystem::path& path) {
 }
 
 void check_compatible(const GaitFile& g, const Settings& s, std::size_t dimension, const std::string& file) {
-    if (family_of(s) != ExperimentFamily::Gait)
+    if (family_of(s) != ExperimentFamily::Gait && !s.neural.switches())
         throw InputError("this is a gait checkpoint; the settings run another experiment type", file);
+    if (s.neural.switches() != g.handover.has_value())
+        throw InputError(g.handover ? "this checkpoint is a Switch-HybrID run's gait phase; the settings switch never"
+                                    : "this gait checkpoint has no <handover>; the settings ask for Switch-HybrID",
+                         file);
     const char* names[] = {"cmaes", "xnes", "sade", "sepcmaes"};
     const std::string wanted = names[static_cast<int>(s.gait.optimizer)];
     if (g.optimizer != wanted)

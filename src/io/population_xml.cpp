@@ -6,11 +6,12 @@
 #include <cstdio>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "cic/core/limits.hpp"
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
-#include "xml_numbers.hpp"
+#include "cic/gp/dedup.hpp"
 #include "xml_numbers.hpp"
 
 namespace cic::io {
@@ -70,7 +71,7 @@ std::string required_text(const xml::Node& n, std::string_view attr) {
     return *a;
 }
 
-gp::IndividualPtr read_individual(const xml::Node& n, int trees) {
+gp::IndividualPtr read_individual(const xml::Node& n, int trees, std::size_t offsets, double offset_limit) {
     auto ind = std::make_shared<gp::Individual>();
     ind->id = required<std::uint64_t>(n, "id");
     ind->fitness = required<double>(n, "fitness");
@@ -92,6 +93,22 @@ gp::IndividualPtr read_individual(const xml::Node& n, int trees) {
             } catch (const std::exception& e) {
                 throw c.error("individual " + std::to_string(ind->id) + ": bad tree: " + e.what());
             }
+        } else if (name == "offsets") {
+            const std::string who = "individual " + std::to_string(ind->id) + ": ";
+            if (offsets == 0) throw c.error(who + "<offsets> but the <genotype> declares none (offsets=\"0\")");
+            if (!ind->direct.empty()) throw c.error(who + "two <offsets> elements");
+            std::istringstream in(c.text());
+            std::string tok;
+            while (in >> tok) {
+                const double d = number<double>(c, "offsets", tok);
+                if (!std::isfinite(d) || std::abs(d) > offset_limit)
+                    throw c.error(who + "offset " + tok + " is outside [-" + exact(offset_limit) + ", " +
+                                  exact(offset_limit) + "]");
+                ind->direct.push_back(d);
+            }
+            if (ind->direct.size() != offsets)
+                throw c.error(who + std::to_string(ind->direct.size()) + " offsets, the <genotype> declares " +
+                              std::to_string(offsets));
         } else if (name == "parents") {
             std::istringstream in(c.text());
             std::string tok;
@@ -111,15 +128,19 @@ gp::IndividualPtr read_individual(const xml::Node& n, int trees) {
             } else
                 throw c.error("unknown attribute key '" + key + "'; allowed: edited, failed, illegal");
         } else {
-            throw c.error("unknown element <" + std::string(name) + "> in <individual>; allowed: tree, parents, attribute");
+            throw c.error("unknown element <" + std::string(name) +
+                          "> in <individual>; allowed: tree, offsets, parents, attribute");
         }
     }
+    if (ind->direct.size() != offsets)
+        throw n.error("individual " + std::to_string(ind->id) + " has no <offsets>, the <genotype> declares " +
+                      std::to_string(offsets));
     if (static_cast<int>(ind->genotype.size()) != trees)
         throw n.error("individual " + std::to_string(ind->id) + " has " + std::to_string(ind->genotype.size()) +
                       " trees, the file header says " + std::to_string(trees));
     // depth and size are there for people and tools; the hash tells a hand edit
     // apart, and an edited individual is evaluated again instead of keeping a stale fitness.
-    if (auto h = n.attribute("hash"); h && *h != hash_text(tree::hash(ind->genotype))) {
+    if (auto h = n.attribute("hash"); h && *h != hash_text(gp::genotype_hash(ind->genotype, ind->direct))) {
         ind->evaluated = false;
         ind->edited = true;
     }
@@ -153,6 +174,10 @@ std::string to_xml(const PopulationFile& p) {
     shape.set_attribute("variables", std::to_string(p.variables));
     shape.set_attribute("functions", join(p.functions));
     shape.set_attribute("trees", std::to_string(p.trees));
+    if (p.offsets > 0) {
+        shape.set_attribute("offsets", std::to_string(p.offsets));
+        shape.set_attribute("offsetLimit", exact(p.offset_limit));
+    }
     auto rng = root.add_element("rng");
     rng.set_attribute("seed", std::to_string(p.state.seed));
     rng.set_attribute("state", p.state.rng.state_text());
@@ -163,6 +188,11 @@ std::string to_xml(const PopulationFile& p) {
     bloat.set_attribute("limit", std::to_string(p.state.bloat.limit));
     bloat.set_attribute("initialMax", std::to_string(p.state.bloat.initial_max));
     bloat.set_attribute("bestFitness", exact(p.state.bloat.best_fitness));
+    if (p.switch_clock) {
+        auto clock = root.add_element("switch");
+        clock.set_attribute("bestFitness", exact(p.switch_clock->best));
+        clock.set_attribute("bestGeneration", std::to_string(p.switch_clock->best_generation));
+    }
     auto list = root.add_element("individuals");
     list.set_attribute("count", std::to_string(p.population.size()));
     for (const auto& ind : p.population) {
@@ -172,7 +202,11 @@ std::string to_xml(const PopulationFile& p) {
         n.set_attribute("evaluated", ind->evaluated ? "1" : "0");
         n.set_attribute("depth", std::to_string(ind->depth(gp::ForestDepth::Max)));   // the deepest tree
         n.set_attribute("size", std::to_string(ind->size()));
-        n.set_attribute("hash", hash_text(tree::hash(ind->genotype)));
+        if (ind->direct.size() != p.offsets)
+            throw std::logic_error("population file: individual " + std::to_string(ind->id) + " has " +
+                                   std::to_string(ind->direct.size()) + " offsets, the header " +
+                                   std::to_string(p.offsets));
+        n.set_attribute("hash", hash_text(gp::genotype_hash(ind->genotype, ind->direct)));
         if (!ind->parents.empty()) {
             std::string ids;
             for (auto id : ind->parents) ids += (ids.empty() ? "" : " ") + std::to_string(id);
@@ -183,6 +217,7 @@ std::string to_xml(const PopulationFile& p) {
         if (ind->failed) n.add_child("attribute", ind->failure).set_attribute("key", "failed");
         if (ind->illegal) n.add_child("attribute", "1").set_attribute("key", "illegal");
         for (const auto& t : ind->genotype) n.add_child("tree", t.to_string());
+        if (!ind->direct.empty()) n.add_child("offsets", detail::exact_list(ind->direct));
     }
     return doc.to_string();
 }
@@ -219,6 +254,17 @@ PopulationFile read_population(const xml::Document& doc) {
             p.trees = required<int>(c, "trees");
             if (p.variables < 0 || p.variables > 65535) throw c.error("variables must be in [0, 65535]");
             if (p.trees < 1 || p.trees > 16) throw c.error("trees must be in [1, 16]");
+            const int offsets = c.attribute("offsets") ? required<int>(c, "offsets") : 0;
+            if (offsets < 0 || static_cast<std::size_t>(offsets) > limits::kMaxModules)
+                throw c.error("offsets must be in [0, " + std::to_string(limits::kMaxModules) + "]");
+            p.offsets = static_cast<std::size_t>(offsets);
+            if (p.offsets > 0) {
+                p.offset_limit = required<double>(c, "offsetLimit");
+                if (!std::isfinite(p.offset_limit) || !(p.offset_limit > 0))
+                    throw c.error("offsetLimit must be a finite number > 0");
+            } else if (c.attribute("offsetLimit")) {
+                throw c.error("offsetLimit without offsets");
+            }
             std::istringstream in(required_text(c, "functions"));
             std::string f;
             while (in >> f) p.functions.push_back(f);
@@ -240,6 +286,14 @@ PopulationFile read_population(const xml::Document& doc) {
             p.state.bloat.best_fitness = required<double>(c, "bestFitness");
             if (p.state.bloat.limit < 0 || p.state.bloat.initial_max < 0 || !std::isfinite(p.state.bloat.best_fitness))
                 throw c.error("<bloat> needs limit >= 0, initialMax >= 0 and a finite bestFitness");
+        } else if (nm == "switch") {
+            PopulationFile::SwitchClock clock;
+            clock.best = required<double>(c, "bestFitness");
+            clock.best_generation = required<int>(c, "bestGeneration");
+            if (!std::isfinite(clock.best) || clock.best_generation < 0 ||
+                clock.best_generation > p.population.generation)
+                throw c.error("<switch> needs a finite bestFitness and bestGeneration in [0, generation]");
+            p.switch_clock = clock;
         } else if (nm == "individuals") {
             have_list = true;
             list_node = c;
@@ -253,13 +307,13 @@ PopulationFile read_population(const xml::Document& doc) {
                 if (n.name() != "individual") throw n.error("unknown element <" + std::string(n.name()) + "> in <individuals>");
                 if (p.population.size() >= declared)
                     throw n.error("more individuals than <individuals count=\"" + std::to_string(declared) + "\">");
-                p.population.individuals.push_back(read_individual(n, p.trees));
+                p.population.individuals.push_back(read_individual(n, p.trees, p.offsets, p.offset_limit));
                 if (!ids.insert(p.population.individuals.back()->id).second)
                     throw n.error("individual id " + std::to_string(p.population.individuals.back()->id) +
                                   " appears twice");
             }
         } else {
-            throw c.error("unknown element <" + std::string(nm) + "> in <population>; allowed: genotype, rng, counters, bloat, individuals");
+            throw c.error("unknown element <" + std::string(nm) + "> in <population>; allowed: genotype, rng, counters, bloat, switch, individuals");
         }
     }
     if (!have_shape) throw root.error("missing <genotype> element");

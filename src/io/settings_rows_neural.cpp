@@ -91,6 +91,30 @@ void beyond_thesis_neural_rows(std::vector<SettingKey>& t) {
     t.push_back(double_row("Neural", "cpgFeedback", kNonNegative,
                            "cpg: largest feedback gain of the joint angles into the oscillators, 1/s; 0 = open loop",
                            FIELD(neural.cpg_feedback)));
+    t.push_back(bool_row("Neural", "directOffsets",
+                         "gait: Offset-HybrID (Helms & Clune 2017): the genotype also holds one directly encoded "
+                         "offset d_i per joint, added to the tree's: o_i = pi/2 clamp(tanh(T(p_i, O)) + d_i, -1, 1), "
+                         "d_i in [-2, 2]; drawn from N(0, offsetSigma), inherited with the first parent's trees, "
+                         "saved in population files (docs/hypergp.md)",
+                         FIELD(neural.direct_offsets)));
+    t.push_back(double_row("Neural", "offsetSigma", kNonNegative,
+                           "directOffsets: the Gaussian step of a direct offset, in units of pi/2 rad (0.1 = 9 "
+                           "degrees); also the spread of the initial offsets",
+                           FIELD(neural.offset_sigma)));
+    t.push_back(double_row("Neural", "offsetRate", kUnit,
+                           "directOffsets: the probability that a child of crossover or mutation moves each of its "
+                           "offsets by a step (reproduction copies and elites keep theirs)",
+                           FIELD(neural.offset_rate)));
+    t.push_back(int_row("Neural", "switchPatience", 0, 1000000,
+                        "gait: Switch-HybrID (Clune et al. 2009; Helms & Clune 2017's Auto-Switch): hand the run "
+                        "over to CMA-ES on the direct gait (Gait.* keys, started from the best individual's gait) "
+                        "after this many generations without improvement of the best; 0 = not on stagnation. The "
+                        "run's budget is then Gait.evaluations, shared by both phases (docs/hypergp.md)",
+                        FIELD(neural.switch_patience)));
+    t.push_back(double_row("Neural", "switchShare", kUnit,
+                           "gait: Switch-HybrID: hand over once HyperGP has spent this share of Gait.evaluations "
+                           "(whichever of switchPatience and switchShare comes first); 0 = no fixed share",
+                           FIELD(neural.switch_share)));
     for (std::size_t i = first; i < t.size(); ++i) t[i].digest_at_default = false;
 }
 

@@ -116,6 +116,36 @@ void validate(const Settings& s, const Locations& locs) {
                   "feedback gains belong to the cpg substrate");
     }
 
+    // Offset-HybrID adds to the gait substrate's offsets; the archive's operators know no offsets.
+    c.require(!nn.direct_offsets || (family_of(s) == ExperimentFamily::HyperGP && nn.substrate == "gait"),
+              {"Neural.directOffsets", "Neural.substrate", "Experiment.type"},
+              "direct offsets add to the offsets of HyperGP's gait substrate (allowed: Neural.directOffsets = 1 "
+              "with a hypergp-family type and Neural.substrate = gait)");
+    c.require(!nn.direct_offsets || !s.map_elites.enabled, {"Neural.directOffsets", "MapElites.enabled"},
+              "MAP-Elites varies trees only; direct offsets need the GP loop (allowed: MapElites.enabled = 0)");
+
+    // Switch-HybrID hands the gait substrate's best over to the gait family's
+    // centred box, which is its exact image only under these conditions.
+    if (nn.switches()) {
+        c.require(family_of(s) == ExperimentFamily::HyperGP && nn.substrate == "gait" && !s.map_elites.enabled,
+                  {"Neural.switchPatience", "Neural.switchShare", "Neural.substrate", "MapElites.enabled"},
+                  "Switch-HybrID hands HyperGP's gait substrate over to CMA-ES (allowed: a hypergp-family type, "
+                  "Neural.substrate = gait, MapElites.enabled = 0)");
+        c.require(nn.penalty == nn::OscillationPenalty::None, {"Neural.switchPatience", "Neural.oscillationPenalty"},
+                  "Switch-HybrID compares both phases on eq. 7.1, which the gait phase scores without a penalty "
+                  "(allowed: Neural.oscillationPenalty = none)");
+        c.require(s.gait.frequency_min == nn.frequency_min && s.gait.frequency_max == nn.frequency_max,
+                  {"Gait.frequencyMin", "Gait.frequencyMax", "Neural.frequencyMin", "Neural.frequencyMax"},
+                  "Switch-HybrID hands the gait over exactly only when both phases read one frequency range "
+                  "(set Gait.frequencyMin/Max equal to Neural.frequencyMin/Max)");
+        c.require(s.gait.controller == GaitController::Sine && !s.gait.second_harmonic &&
+                      s.gait.optimizer != GaitOptimizer::Sade,
+                  {"Gait.controller", "Gait.secondHarmonic", "Gait.optimizer"},
+                  "Switch-HybrID's gait phase is cmaes or xnes on the sine gait without a second harmonic");
+        c.require(s.gait.population_size <= s.gait.evaluations, {"Gait.populationSize", "Gait.evaluations"},
+                  "the budget does not cover one generation");
+    }
+
     c.require(s.symreg.range_min < s.symreg.range_max,
               {"SymbolicRegression.rangeMin", "SymbolicRegression.rangeMax"}, "the sampled range is empty");
 

@@ -87,41 +87,52 @@ void export_run(const fs::path& run, const std::string& label, const std::string
     std::map<std::string, std::pair<double, double>> seen;   // genotype -> terms, once per run
     if (s.map_elites.enabled) return export_elites(run, s, prefix, terms, csv);
 
-    if (family == io::ExperimentFamily::Gait) {
-        std::optional<gait::Setup> setup;
-        if (terms) setup = gait::Setup::from_settings(s);
-        for (const fs::path& file : saved_generations(run)) {
-            const io::GaitFile g = io::load_gait(file);
-            for (std::size_t i = 0; i < g.population.size(); ++i) {
-                const io::GaitPoint& point = g.population[i];
-                std::string params;
-                for (double x : point.x) params += (params.empty() ? "" : " ") + number(x);
-                std::string dist, elev;
-                if (setup) {
-                    auto [it, fresh] = seen.try_emplace(params);
-                    if (fresh) {
-                        const auto controller = setup->controller(point.x);
-                        it->second = eq71_terms(setup->robot, sim::evaluate(setup->robot, *controller, setup->sim));
-                    }
-                    dist = number(it->second.first), elev = number(it->second.second);
+    // A gait run's checkpoints, and a Switch-HybrID run's after its hand-over
+    // (numbered on from the hand-over, as stats.csv numbers them).
+    std::optional<gait::Setup> setup;
+    if (terms && (family == io::ExperimentFamily::Gait || s.neural.switches())) setup = gait::Setup::from_settings(s);
+    auto export_gait = [&](const fs::path& file) {
+        const io::GaitFile g = io::load_gait(file);
+        for (std::size_t i = 0; i < g.population.size(); ++i) {
+            const io::GaitPoint& point = g.population[i];
+            std::string params;
+            for (double x : point.x) params += (params.empty() ? "" : " ") + number(x);
+            std::string dist, elev;
+            if (setup) {
+                auto [it, fresh] = seen.try_emplace(params);
+                if (fresh) {
+                    const auto controller = setup->controller(point.x);
+                    it->second = eq71_terms(setup->robot, sim::evaluate(setup->robot, *controller, setup->sim));
                 }
-                csv += prefix + fmt::format("{},{},{},{},{},,,0,{},,\n", g.generation, i, number(point.fitness), dist,
-                                            elev, cell(params));
+                dist = number(it->second.first), elev = number(it->second.second);
             }
+            const int generation = g.generation + (g.handover ? g.handover->generation + 1 : 0);
+            csv += prefix + fmt::format("{},{},{},{},{},,,0,{},,\n", generation, i, number(point.fitness), dist, elev,
+                                        cell(params));
         }
+    };
+    if (family == io::ExperimentFamily::Gait) {
+        for (const fs::path& file : saved_generations(run)) export_gait(file);
         return;
     }
     std::optional<hypergp::Model> model;
     if (terms && family == io::ExperimentFamily::HyperGP) model = hypergp::Model::from_settings(s);
     for (const fs::path& file : saved_generations(run)) {
+        if (s.neural.switches() && io::is_gait_file(file)) {
+            export_gait(file);
+            continue;
+        }
         const io::PopulationFile pop = io::load_population(file);
         for (const auto& ind : pop.population) {
             std::string trees;
             for (const auto& t : ind->genotype) trees += (trees.empty() ? "" : " | ") + t.to_string();
             std::string dist, elev;
             if (model) {
-                auto [it, fresh] = seen.try_emplace(trees);
-                if (fresh) it->second = eq71_terms(model->robot, hypergp::run(*model, ind->genotype).result);
+                std::string key = trees;   // the genotype: trees and direct offsets (Offset-HybrID)
+                for (double d : ind->direct) key += fmt::format(" {}", d);
+                auto [it, fresh] = seen.try_emplace(key);
+                if (fresh)
+                    it->second = eq71_terms(model->robot, hypergp::run(*model, ind->genotype, ind->direct).result);
                 dist = number(it->second.first), elev = number(it->second.second);
             }
             csv += prefix + fmt::format("{},{},{},{},{},{},{},{},{},,\n", pop.population.generation, ind->id,

@@ -248,7 +248,10 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
     if (individual.rfind("cell:", 0) == 0)
         throw InputError("--cell picks an elite of a MAP-Elites run (MapElites.enabled); this run has no archive",
                          src.settings.string());
-    if (io::family_of(settings) == io::ExperimentFamily::Gait) return replay_gait(src, settings, individual, fps, trace);
+    // A Switch-HybrID run past its hand-over keeps its best in a gait checkpoint.
+    if (io::family_of(settings) == io::ExperimentFamily::Gait ||
+        (settings.neural.switches() && io::is_gait_file(src.population)))
+        return replay_gait(src, settings, individual, fps, trace);
     if (io::family_of(settings) != io::ExperimentFamily::HyperGP)
         throw InputError("only robot runs (HyperGP, gait) can be replayed; this run is symbolic regression",
                          src.settings.string());
@@ -285,7 +288,8 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
         opt.record_trace = trace;
         opt.record_ground = trace;
         // Scored as the run's type scores it (a registered type's own fitness), eq. 7.1 beside it.
-        const hypergp::Outcome o = experiments::evaluate_as_type(model, settings, ind->genotype, opt, trace);
+        const hypergp::Outcome o =
+            experiments::evaluate_as_type(model, settings, ind->genotype, opt, trace, ind->direct);
         ReplayItem item;
         item.label = fmt::format("generation {}, individual {}", pop.population.generation, ind->id);
         item.stored_fitness = ind->fitness;

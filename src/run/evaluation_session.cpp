@@ -123,6 +123,10 @@ EvaluationSession::EvaluationSession(SessionOptions options) : impl_(std::make_u
         throw InputError("scores robot experiments (HyperGP, gait, CPG and their types); these settings are symbolic "
                          "regression (Experiment.type " + s.experiment.type + ")", im.found.string());
     experiments::check_inputs(s);   // the robot and every input a run of them reads
+    if (s.neural.direct_offsets)   // its genotype is trees plus per-hinge offsets: not one of the forms below yet
+        throw InputError("Offset-HybrID (Neural.directOffsets = 1) genotypes, trees with per-hinge offsets, cannot be "
+                         "evaluated from outside a run yet; use settings without it",
+                         im.found.string());
     if (s.map_elites.enabled) im.descriptor = s.map_elites.descriptor;
     if (io::family_of(s) == io::ExperimentFamily::Gait) {
         im.form = GenotypeForm::Vector;

@@ -45,14 +45,23 @@ int resume_run(const ResumeRequest& r) {
                                          "--set MapElites.evaluations=E (E > {})",
                                          a.evaluations, asked.map_elites.evaluations, a.evaluations),
                              where);
-    } else if (gait) {
+    } else if (gait || ran.neural.switches()) {
+        // Switch-HybrID's budget is Gait.evaluations too, over both phases.
         if (r.generations || r.until)
-            throw InputError("a gait run's budget is its evaluations: resume it with --set Gait.evaluations=E");
-        const io::GaitFile g = io::load_gait(checkpoint);
-        if (asked.gait.evaluations <= g.evaluations)
+            throw InputError(gait ? "a gait run's budget is its evaluations: resume it with --set Gait.evaluations=E"
+                                  : "a Switch-HybrID run's budget is its evaluations over both phases: resume it "
+                                    "with --set Gait.evaluations=E");
+        long spent = 0;
+        if (io::is_gait_file(checkpoint)) {
+            const io::GaitFile g = io::load_gait(checkpoint);
+            spent = g.evaluations + (g.handover ? g.handover->evaluations : 0);
+        } else {
+            spent = io::load_population(checkpoint).state.evaluations;
+        }
+        if (asked.gait.evaluations <= spent)
             throw InputError(fmt::format("the run has spent {} of its {} evaluations; ask for more with "
                                          "--set Gait.evaluations=E (E > {})",
-                                         g.evaluations, asked.gait.evaluations, g.evaluations),
+                                         spent, asked.gait.evaluations, spent),
                              where);
     } else {
         const io::PopulationFile loaded = io::load_population(checkpoint);

@@ -3,7 +3,10 @@
 #include "cic/run/run.hpp"
 
 
+#include <limits>
+
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "cic/run/progress.hpp"
 #include "cic/core/error.hpp"
@@ -29,6 +32,26 @@ using detail::RunConsole;
 using detail::StopSignalGuard;
 using detail::write_checkpoint;
 
+namespace {
+
+// Offset-HybrID's offsets: a population holds as many per individual as the
+// settings' robot has joints, in the substrate's range, or none without them.
+void check_direct_offsets(const io::PopulationFile& loaded, const io::Settings& s, const std::string& file) {
+    const gp::DirectGenes want =
+        s.neural.direct_offsets ? hypergp::direct_offset_genes(hypergp::Model::from_settings(s)) : gp::DirectGenes{};
+    if (loaded.offsets != want.count)
+        throw InputError(fmt::format("population holds {} direct offsets per individual but the settings ask for {} "
+                                     "(Neural.directOffsets = {}{}); use settings that match the population",
+                                     loaded.offsets, want.count, s.neural.direct_offsets ? 1 : 0,
+                                     s.neural.direct_offsets ? ", one per joint of the robot" : ""),
+                         file);
+    if (want.count > 0 && loaded.offset_limit != want.limit)
+        throw InputError(fmt::format("population's offsets are in [-{0}, {0}] but this cic's are in [-{1}, {1}]",
+                                     loaded.offset_limit, want.limit), file);
+}
+
+} // namespace
+
 PreparedRun prepare_run(io::Settings s) {
     experiments::check_inputs(s);
     PreparedRun p;
@@ -43,7 +66,10 @@ PreparedRun prepare_run(io::Settings s) {
         } catch (const InputError& e) {
             throw InputError("<Control> populationXmlLoadFrom: " + e.message(), e.file(), e.line());
         }
-    } else if (!s.control.population_load_from.empty() && io::family_of(s) == io::ExperimentFamily::Gait) {
+    } else if (!s.control.population_load_from.empty() &&
+               (io::family_of(s) == io::ExperimentFamily::Gait ||
+                (s.neural.switches() && io::is_gait_file(s.control.population_load_from)))) {
+        // A gait run's checkpoint, or one of a Switch-HybrID run's gait phase.
         const std::string from = s.control.population_load_from;
         try {
             io::GaitFile loaded = io::load_gait(from);
@@ -59,6 +85,7 @@ PreparedRun prepare_run(io::Settings s) {
         try {
             io::PopulationFile loaded = io::load_population(from);
             io::check_compatible(loaded, s, from);
+            check_direct_offsets(loaded, s, from);
             p.resume = std::move(loaded);
         } catch (const InputError& e) {
             throw InputError("<Control> populationXmlLoadFrom: " + e.message(), e.file(), e.line());
@@ -129,7 +156,7 @@ private:
                                  r.max_size, r.limit, r.illegal, r.evaluations, r.wall_seconds));
         ProgressLine p;
         p.generation = r.generation;
-        p.max_generations = r.max_generations;
+        p.max_generations = progress_generations > 0 ? progress_generations : r.max_generations;
         p.evaluations_per_second = r.generation_seconds > 0
             ? static_cast<double>(r.evaluations - evaluations_before_) / r.generation_seconds : 0.0;
         evaluations_before_ = r.evaluations;
@@ -137,17 +164,25 @@ private:
         p.mean = r.mean;
         p.limit = r.limit;
         const int done = r.generation + 1 - first_generation_;
-        const int left = r.max_generations - (r.generation + 1);
+        const int left = p.max_generations - (r.generation + 1);
         p.eta_seconds = done > 0 ? r.wall_seconds / done * left : -1.0;
         console_.progress(p);
     }
 
+public:
+    // Adds a phase's own state to each checkpoint (Switch-HybrID's clock).
+    std::function<void(io::PopulationFile&)> annotate;
+    // The generations the progress line counts to, when not maximumIterations (0).
+    int progress_generations = 0;
+
+private:
     void on_checkpoint(const gp::Population& pop, const gp::EvolutionState& st, bool last) {
         const int interval = std::max(1, s_.experiment.checkpoint_interval);
         // After every `interval` evaluated generations (generation g is the (g+1)-th).
         if (!last && (pop.generation + 1) % interval != 0) return;
         header_.population = pop;
         header_.state = st;
+        if (annotate) annotate(header_);
         write_checkpoint(opt_.run_dir, pop.generation, io::to_xml(header_));
     }
 
@@ -160,42 +195,72 @@ private:
     int first_generation_;
 };
 
+} // namespace
+
+namespace detail {
+
 std::string summary_of(const gp::EvolutionResult& result, const experiments::Experiment& experiment,
                        const io::Settings& s) {
     const gp::Individual& best = result.population.best();
     std::string trees;
     for (const auto& t : best.genotype) trees += (trees.empty() ? "" : " | ") + t.to_string();
+    std::string offsets;
+    if (!best.direct.empty()) offsets = fmt::format("best direct offsets (x pi/2 rad): {:.4f}\n", fmt::join(best.direct, " "));
     return fmt::format("stopped: {} at generation {}\nbest: id {} fitness {:.17g} depth {} size {} {}\n"
-                       "evaluations: {}\nbest tree{}: {}\n",
+                       "evaluations: {}\nbest tree{}: {}\n{}",
                        gp::to_string(result.reason), result.population.generation, best.id, best.fitness,
                        best.depth(s.gp.forest_depth), best.size(), experiment.describe(best),
-                       result.state.evaluations, best.genotype.size() > 1 ? "s" : "", trees);
+                       result.state.evaluations, best.genotype.size() > 1 ? "s" : "", trees, offsets);
 }
 
-} // namespace
-
-int run_experiment(PreparedRun prepared, const RunOptions& opt) {
-    // The loop is the family's: the gait family's own, else the GP loop with the type's evaluator.
-    if (prepared.settings.map_elites.enabled) return detail::run_map_elites(std::move(prepared), opt);
-    if (io::family_of(prepared.settings) == io::ExperimentFamily::Gait) return detail::run_gait(std::move(prepared), opt);
+GpPhaseResult run_gp_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& console, const GpPhase& phase) {
     const io::Settings& s = prepared.settings;
-    RunConsole console(opt);
-    const io::PopulationFile header = io::describe(s);
+    io::PopulationFile header = io::describe(s);
     Start start = start_of(prepared, header, console);
     const int workers = resolved_workers(s);
     console.say(fmt::format("cic {}: {} experiment, seed {}, {} worker{}, output {}", CIC_VERSION, header.experiment,
                             start.state.seed, workers, workers == 1 ? "" : "s", opt.run_dir.string()));
     const experiments::Context ctx = make_context(s, opt, console);
-    auto experiment = experiments::make_experiment(ctx);
+    GpPhaseResult out;
+    out.experiment = experiments::make_experiment(ctx);
+    auto& experiment = out.experiment;
+    gp::GpConfig gp = s.gp;
+    gp.direct = experiment->direct_genes();   // Offset-HybrID's offsets, else none
+    header.offsets = gp.direct.count;
+    header.offset_limit = gp.direct.count > 0 ? gp.direct.limit : 0.0;
 
     GenerationObserver observer(s, opt, console, header, start);
-    StopSignalGuard stop_signals;
+    observer.annotate = phase.annotate;
+    observer.progress_generations = phase.progress_generations;
+    gp::EvolutionHooks hooks = observer.hooks();
+    if (phase.on_generation)
+        hooks.on_generation = [observer_hook = hooks.on_generation, &phase](const gp::GenerationRecord& r) {
+            phase.on_generation(r);   // first: the checkpoint's annotation reads what it noted
+            observer_hook(r);
+        };
+    hooks.hand_over = phase.hand_over;
     const tree::PrimitiveSet ps(s.gp.primitives);
-    const auto result = gp::evolve(s.gp, s.bloat, {s.control.maximum_iterations, s.control.minimum_fitness}, ps,
-                                   experiment->evaluator(), start.state, std::move(start.population),
-                                   observer.hooks());
+    gp::StopConditions stop{s.control.maximum_iterations, s.control.minimum_fitness};
+    if (phase.hand_over) stop.maximum_iterations = std::numeric_limits<int>::max();   // the phase ends by hand_over
+    out.result = gp::evolve(gp, s.bloat, stop, ps, experiment->evaluator(), start.state, std::move(start.population),
+                            hooks);
     if (const std::string note = experiment->session_note(); !note.empty()) console.log(note);
-    std::string summary = summary_of(result, *experiment, s);
+    return out;
+}
+
+} // namespace detail
+
+int run_experiment(PreparedRun prepared, const RunOptions& opt) {
+    // The loop is the family's: the gait family's own, else the GP loop with the type's evaluator.
+    if (prepared.settings.map_elites.enabled) return detail::run_map_elites(std::move(prepared), opt);
+    if (io::family_of(prepared.settings) == io::ExperimentFamily::Gait) return detail::run_gait(std::move(prepared), opt);
+    if (prepared.settings.neural.switches()) return detail::run_switch(std::move(prepared), opt);
+    const io::Settings& s = prepared.settings;
+    RunConsole console(opt);
+    StopSignalGuard stop_signals;
+    const detail::GpPhaseResult phase = detail::run_gp_phase(prepared, opt, console, {});
+    const gp::EvolutionResult& result = phase.result;
+    std::string summary = detail::summary_of(result, *phase.experiment, s);
     if (io::family_of(s) == io::ExperimentFamily::HyperGP && result.reason != gp::StopReason::Interrupted) {
         try {   // the best of the final checkpoint, replayed: what its score is made of
             const auto best = replay(opt.run_dir.string(), "best", 1, 0.0, false);

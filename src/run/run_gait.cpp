@@ -24,22 +24,35 @@ namespace {
 // After kStatsColumns: the best fitness of the run so far (`best` is each generation's).
 constexpr const char* kGaitStatsColumns = "best_so_far";
 
+// Where a gait phase's generations and evaluations start in the run: 0, or
+// after Switch-HybrID's HyperGP phase.
+struct Origin {
+    int generation = 0;
+    long evaluations = 0;
+};
+
+Origin origin_of(const std::optional<io::GaitHandover>& h) {
+    return h ? Origin{h->generation + 1, h->evaluations} : Origin{};
+}
+
 // Statistics of the current candidates, in the columns GP runs write (the
 // tree columns stay 0).
-gp::GenerationRecord record_of(const gait::Search& search, long failed, double wall, double generation_seconds) {
+gp::GenerationRecord record_of(const gait::Search& search, const Origin& at, long failed, double wall,
+                               double generation_seconds) {
     gp::GenerationRecord r;
-    r.generation = search.generation();
+    r.generation = at.generation + search.generation();
     std::vector<double> f;
     for (const auto& c : search.population()) f.push_back(c.fitness);
     fill_fitness_stats(r, std::move(f));
-    r.evaluations = search.evaluations();
+    r.evaluations = at.evaluations + search.evaluations();
     r.failed = static_cast<int>(failed);
     r.wall_seconds = wall;
     r.generation_seconds = generation_seconds;
     return r;
 }
 
-io::GaitFile checkpoint_of(const gait::Search& search, const io::Settings& s) {
+io::GaitFile checkpoint_of(const gait::Search& search, const io::Settings& s,
+                           const std::optional<io::GaitHandover>& handover) {
     io::GaitFile g;
     g.settings_digest = io::settings_digest(s);
     g.optimizer = gait::to_string(search.optimizer());
@@ -51,16 +64,24 @@ io::GaitFile checkpoint_of(const gait::Search& search, const io::Settings& s) {
     g.champion = {search.champion().x, search.champion().fitness};
     g.history = search.history();
     if (search.restart_rule().mode != gait::Restarts::None) g.restarts = gait::restart_record_of(search);
+    g.handover = handover;
     return g;
 }
 
 } // namespace
 
 int run_gait(PreparedRun prepared, const RunOptions& opt) {
+    RunConsole console(opt);
+    StopSignalGuard stop_signals;
+    return run_gait_phase(prepared, opt, console, std::nullopt, "");
+}
+
+int run_gait_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& console,
+                   const std::optional<io::GaitHandover>& handover, const std::string& summary_head) {
     namespace fs = std::filesystem;
     using Clock = std::chrono::steady_clock;
     const io::Settings& s = prepared.settings;
-    RunConsole console(opt);
+    const Origin at = origin_of(handover);
     auto say = [&](const std::string& line) { console.say(line); };
     const int workers = resolved_workers(s);
     const gait::Setup setup = gait::Setup::from_settings(s);
@@ -69,6 +90,7 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
     gait::Search search = prepared.gait_resume
         ? gait::resume_search(setup, restart_rule, *prepared.gait_resume, s.control.population_load_from)
         : gait::make_search(setup, restart_rule, s.experiment.seed);
+    if (handover && !prepared.gait_resume) search.set_start(handover->x);   // Switch-HybrID: from HyperGP's best
     say(fmt::format("cic {}: gait experiment ({} over {} parameters, {} candidates per generation, budget {} "
                     "evaluations), seed {}, {} worker{}, output {}",
                     CIC_VERSION, gait::to_string(setup.optimizer), setup.dimension(), setup.population,
@@ -90,9 +112,10 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
     auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
     std::optional<io::StatsWriter> stats;
     fs::create_directories(opt.run_dir / "populations");
-    // A run resumed in place from a file written before the column keeps its header.
-    bool with_best_so_far = true;
-    if (prepared.gait_resume && opt.continue_in_place) {
+    // A run resumed in place from a file written before the column keeps its header;
+    // a Switch-HybrID run's stats.csv has its HyperGP phase's columns.
+    bool with_best_so_far = !handover;
+    if (with_best_so_far && prepared.gait_resume && opt.continue_in_place) {
         std::ifstream in(opt.run_dir / "stats.csv");
         std::string header;
         std::getline(in, header);
@@ -106,11 +129,11 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
             restarts_said = search.restarts();
             say(fmt::format("restart {}: population {} from generation {}, after {} generations without improvement "
                             "of more than {:g}{}",
-                            search.restarts(), search.population_size(), search.generation(), last_stalled,
-                            restart_rule.tolerance, last_collapsed ? " (the candidates had collapsed)" : ""));
+                            search.restarts(), search.population_size(), at.generation + search.generation(),
+                            last_stalled, restart_rule.tolerance, last_collapsed ? " (the candidates had collapsed)" : ""));
         }
-        const gp::GenerationRecord r = record_of(search, evaluator.failed() - failed_before, seconds_since(started),
-                                                 generation_seconds);
+        const gp::GenerationRecord r = record_of(search, at, evaluator.failed() - failed_before,
+                                                 seconds_since(started), generation_seconds);
         failed_before = evaluator.failed();
         // `best` is this generation's; best_so_far the run's (the console's and the replay's).
         stats->write(r, with_best_so_far ? fmt::format("{:.17g}", search.champion().fitness) : std::string());
@@ -118,14 +141,14 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
                                 r.generation, r.best, r.mean, r.median, search.champion().fitness, r.evaluations,
                                 r.wall_seconds));
         const int interval = std::max(1, s.experiment.checkpoint_interval);
-        if ((r.generation + 1) % interval == 0 || s.gait.evaluations - search.evaluations() < search.next_batch_size())
-            write_checkpoint(opt.run_dir, r.generation, io::to_xml(checkpoint_of(search, s)));
+        if ((r.generation + 1) % interval == 0 || s.gait.evaluations - r.evaluations < search.next_batch_size())
+            write_checkpoint(opt.run_dir, r.generation, io::to_xml(checkpoint_of(search, s, handover)));
         const long per_generation = search.population_size();
         // The generations the budget allows at the next batch's size (without
         // restarts: floor(budget / lambda)).
         const int max_generations =
             r.generation + 1 +
-            static_cast<int>(std::max(0L, s.gait.evaluations - search.evaluations()) / search.next_batch_size());
+            static_cast<int>(std::max(0L, s.gait.evaluations - r.evaluations) / search.next_batch_size());
         ProgressLine p;
         p.generation = r.generation;
         p.max_generations = max_generations;
@@ -136,7 +159,6 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
         console.progress(p);
     };
 
-    StopSignalGuard stop_signals;
     if (prepared.gait_resume) {
         io::GaitFile& g = *prepared.gait_resume;
         if (g.settings_digest != io::settings_digest(s))
@@ -144,9 +166,19 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
                             s.control.population_load_from));
         say(fmt::format("resuming from {} at generation {} ({} evaluations)", s.control.population_load_from,
                         g.generation, g.evaluations));
+        const std::string extra = with_best_so_far ? kGaitStatsColumns : "";
         stats.emplace(opt.continue_in_place
-                          ? io::StatsWriter(opt.run_dir / "stats.csv", g.generation, kGaitStatsColumns)
-                          : io::StatsWriter(opt.run_dir / "stats.csv", kGaitStatsColumns));
+                          ? io::StatsWriter(opt.run_dir / "stats.csv", at.generation + g.generation, extra)
+                          : io::StatsWriter(opt.run_dir / "stats.csv", extra));
+    } else if (handover) {   // Switch-HybrID: stats.csv goes on from the HyperGP phase's rows
+        stats.emplace(opt.run_dir / "stats.csv", handover->generation);
+        if (detail::stop_requested().load()) {   // stopped as HyperGP handed over: its checkpoint resumes
+            console.summary(summary_head + "stopped: interrupted before the gait phase began\n");
+            return console.interrupted();
+        }
+        const auto t0 = Clock::now();
+        search.initialise(batch);
+        after_generation(seconds_since(t0));
     } else {
         stats.emplace(opt.run_dir / "stats.csv", kGaitStatsColumns);
         const auto t0 = Clock::now();
@@ -155,6 +187,7 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
     }
 
     std::string reason;
+    const int first_generation = search.generation();
     for (;;) {
         if (search.champion().fitness >= s.control.minimum_fitness) {
             reason = "minimum fitness reached";
@@ -164,7 +197,7 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
             reason = "interrupted";
             break;
         }
-        if (search.evaluations() + search.next_batch_size() > s.gait.evaluations) {
+        if (at.evaluations + search.evaluations() + search.next_batch_size() > s.gait.evaluations) {
             reason = "evaluation budget";
             break;
         }
@@ -174,12 +207,18 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
         search.step(batch);
         after_generation(seconds_since(t0));
     }
+    // A resume from a run's last checkpoint ends at once: the run's final state
+    // goes into this folder too (as the GP loop saves a resumed last generation again).
+    if (prepared.gait_resume && search.generation() == first_generation && reason != "interrupted")
+        write_checkpoint(opt.run_dir, at.generation + search.generation(),
+                         io::to_xml(checkpoint_of(search, s, handover)));
 
     const gait::Candidate& best = search.champion();
     const std::string summary =
+        summary_head +
         fmt::format("stopped: {} at generation {}\nbest: fitness {:.17g} ({}; robot {})\nevaluations: {}\nbest gait: {}\n",
-                    reason, search.generation(), best.fitness, gait::to_string(setup.optimizer), setup.robot.name,
-                    search.evaluations(), setup.describe(best.x));
+                    reason, at.generation + search.generation(), best.fitness, gait::to_string(setup.optimizer),
+                    setup.robot.name, at.evaluations + search.evaluations(), setup.describe(best.x));
     std::string walk;
     if (reason != "interrupted") {   // the champion again: what its score is made of
         const auto controller = setup.controller(best.x);
@@ -193,7 +232,8 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
                     walk);
     if (reason == "interrupted") {
         // The checkpoint of the last finished generation is on disk unless the interval skipped it.
-        write_checkpoint(opt.run_dir, search.generation(), io::to_xml(checkpoint_of(search, s)));
+        write_checkpoint(opt.run_dir, at.generation + search.generation(),
+                         io::to_xml(checkpoint_of(search, s, handover)));
         return console.interrupted();
     }
     finish_run(s, opt, console);

@@ -105,6 +105,36 @@ TEST(GaitXml, RestartsRoundTripAndAreChecked) {
     EXPECT_NE(twice.find("appears twice"), std::string::npos) << twice;
 }
 
+// Switch-HybrID's gait phase: <handover> round-trips exactly, is checked, and
+// belongs to settings that switch.
+TEST(GaitXml, HandoverRoundTripsAndIsChecked) {
+    GaitFile g = sample();
+    g.handover = GaitHandover{24, 1279, {0.25, -1.0 / 6.0, 1e-17}};
+    const std::string text = to_xml(g);
+    EXPECT_NE(text.find("<handover generation=\"24\" evaluations=\"1279\">"), std::string::npos) << text;
+    const GaitFile back = parse_gait(text, "g.xml");
+    EXPECT_EQ(to_xml(back), text);
+    ASSERT_TRUE(back.handover.has_value());
+    EXPECT_EQ(back.handover->x, g.handover->x);   // bit for bit
+    EXPECT_EQ(back.handover->evaluations, 1279);
+    EXPECT_EQ(to_xml(sample()).find("handover"), std::string::npos);   // none without a switch
+    auto broken = [&](const std::string& from, const std::string& to) {
+        std::string t = text;
+        t.replace(t.find(from), from.size(), to);
+        return error_of(t);
+    };
+    EXPECT_NE(broken("1.0000000000000001e-17<", "<").find("<handover> has 2 parameters"), std::string::npos);
+    EXPECT_NE(broken("generation=\"24\"", "generation=\"-1\"").find(">= 0"), std::string::npos);
+    Settings s;
+    s.experiment.type = "hypergp";
+    s.neural.substrate = "gait";
+    s.neural.switch_patience = 5;
+    EXPECT_NO_THROW(check_compatible(g, s, 3, "g.xml"));
+    EXPECT_THROW(check_compatible(sample(), s, 3, "g.xml"), InputError);   // a gait run's checkpoint
+    s.neural.switch_patience = 0;
+    EXPECT_THROW(check_compatible(g, s, 3, "g.xml"), InputError);          // settings that never switch
+}
+
 TEST(GaitXml, ACheckpointOfOtherSettingsIsRefused) {
     Settings s;
     s.experiment.type = "gait";

@@ -145,6 +145,94 @@ TEST(PopulationXml, SaveIsAtomicAndLeavesNoTemporaries) {
     fs::remove_all(dir);
 }
 
+// Offset-HybrID's direct offsets: saved exactly, covered by the hash (an edited
+// offset is noticed like an edited tree), and checked: count, finite, in range.
+PopulationFile with_offsets() {
+    PopulationFile p = sample();
+    p.experiment = "hypergp";
+    p.offsets = 3;
+    p.offset_limit = 2;
+    double d = 0.1;
+    for (auto& ind : p.population) ind->direct = {d, -1.0 / 3.0, 2.0}, d += 0.7;
+    return p;
+}
+
+TEST(PopulationXml, DirectOffsetsRoundTripExactly) {
+    const auto p = with_offsets();
+    const std::string text = to_xml(p);
+    EXPECT_NE(text.find("offsets=\"3\" offsetLimit=\"2\""), std::string::npos) << text;
+    const auto q = parse_population(text, "p.xml");
+    EXPECT_EQ(to_xml(q), text);
+    EXPECT_EQ(q.offsets, 3u);
+    for (std::size_t i = 0; i < q.population.size(); ++i) {
+        EXPECT_EQ(q.population[i].direct, p.population[i].direct);   // bit-exact doubles
+        EXPECT_TRUE(q.population[i].evaluated);
+        EXPECT_FALSE(q.population[i].edited);
+    }
+    // Without offsets the file is as before: no attribute, no element.
+    const std::string plain = to_xml(sample());
+    EXPECT_EQ(plain.find("offsets"), std::string::npos);
+    // The writer refuses an individual whose offsets the header does not count.
+    auto bad = with_offsets();
+    bad.population.individuals[1]->direct.pop_back();
+    EXPECT_THROW(to_xml(bad), std::logic_error);
+}
+
+TEST(PopulationXml, AnEditedOffsetIsNoticedLikeAnEditedTree) {
+    std::string text = to_xml(with_offsets());
+    const std::string from = "<offsets>0.10000000000000001 ";
+    ASSERT_NE(text.find(from), std::string::npos) << text;
+    text.replace(text.find(from), from.size(), "<offsets>0.25 ");
+    const auto q = parse_population(text, "edited.xml");
+    EXPECT_EQ(q.population[0].direct[0], 0.25);
+    EXPECT_FALSE(q.population[0].evaluated);
+    EXPECT_TRUE(q.population[0].edited);
+    EXPECT_TRUE(q.population[1].evaluated);
+}
+
+TEST(PopulationXml, BadOffsetsAreRefusedWithTheirLine) {
+    const std::string text = to_xml(with_offsets());
+    const std::string from = "<offsets>0.10000000000000001 -0.33333333333333331 2</offsets>";
+    ASSERT_NE(text.find(from), std::string::npos) << text;
+    auto refused = [&](const std::string& to, const std::string& says) {
+        std::string t = text;
+        t.replace(t.find(from), from.size(), to);
+        try {
+            parse_population(t, "bad.xml");
+            ADD_FAILURE() << "accepted " << to;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+            EXPECT_GT(e.line(), 1) << e.what();
+        }
+    };
+    refused("<offsets>0.1 0.2</offsets>", "2 offsets, the <genotype> declares 3");
+    refused("<offsets>0.1 0.2 0.3 0.4</offsets>", "4 offsets, the <genotype> declares 3");
+    refused("<offsets>0.1 2.5 0.3</offsets>", "outside [-2, 2]");
+    refused("<offsets>0.1 nan 0.3</offsets>", "offset");
+    refused("", "has no <offsets>");
+    // Offsets where the header declares none.
+    std::string t = to_xml(sample());
+    const std::string tree = "<tree>(sin -1)</tree>";
+    t.replace(t.find(tree), tree.size(), tree + "<offsets>0.5</offsets>");
+    EXPECT_THROW(parse_population(t, "none.xml"), InputError);
+}
+
+// Switch-HybrID's stagnation clock: saved exactly, checked, absent elsewhere.
+TEST(PopulationXml, SwitchClockRoundTripsAndIsChecked) {
+    PopulationFile p = sample();
+    p.switch_clock = PopulationFile::SwitchClock{-1.0 / 3.0, 5};
+    const std::string text = to_xml(p);
+    const auto q = parse_population(text, "p.xml");
+    EXPECT_EQ(to_xml(q), text);
+    ASSERT_TRUE(q.switch_clock.has_value());
+    EXPECT_EQ(q.switch_clock->best, -1.0 / 3.0);
+    EXPECT_EQ(q.switch_clock->best_generation, 5);
+    EXPECT_EQ(to_xml(sample()).find("<switch"), std::string::npos);
+    std::string later = text;
+    later.replace(later.find("bestGeneration=\"5\""), 18, "bestGeneration=\"8\"");   // after generation 7
+    EXPECT_THROW(parse_population(later, "p.xml"), InputError);
+}
+
 TEST(PopulationXml, IncompatibleSettingsAreRefused) {
     Settings s;
     s.experiment.type = "symreg";

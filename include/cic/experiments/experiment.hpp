@@ -41,6 +41,9 @@ public:
     // A line for run.log at the end of the session (e.g. how many evaluations
     // reused an earlier result); empty = nothing to say.
     virtual std::string session_note() const { return {}; }
+    // Genes the genotype holds beside its trees (gp::GpConfig::direct): none
+    // unless the experiment reads some (HyperGP-gait's Neural.directOffsets).
+    virtual gp::DirectGenes direct_genes() const { return {}; }
 };
 
 std::unique_ptr<Experiment> make_experiment(const Context& ctx);

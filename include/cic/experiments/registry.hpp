@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -79,9 +80,10 @@ struct Registrar {
 // One evaluation of a HyperGP-family genotype scored as the settings' type
 // scores it in its worker jobs (its `score`, else eq. 7.1 with the penalty),
 // recording what `options` ask plus what the type's score reads. For replays.
+// `offsets`: an Offset-HybrID individual's direct genes (Neural.directOffsets).
 hypergp::Outcome evaluate_as_type(const hypergp::Model& model, const io::Settings& settings,
                                   const tree::Forest& genotype, sim::EvalOptions options = {},
-                                  bool record_control = false);
+                                  bool record_control = false, std::span<const double> offsets = {});
 
 // The job kinds of every registered type, plus sim's self-contained `sine`
 // jobs (`cic simulate`), built for one worker process.

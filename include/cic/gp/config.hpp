@@ -1,6 +1,7 @@
 #pragma once
 // Plain settings of the GP engine, with the thesis's defaults (Appendix B).
 // Validation happens once, at the boundary (io/settings).
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,20 @@ enum class ForestDepth { Sum, Max };
 // Which node crossover and mutation pick: Koza's rule (a function node with
 // probability 0.9 when the tree has one, else a leaf) or any node alike.
 enum class NodeSelection { Koza, Uniform };
+
+// Real numbers encoded directly beside the trees (Offset-HybrID, Helms & Clune
+// 2017; docs/hypergp.md): `count` genes in [-limit, limit] per individual,
+// drawn from N(0, sigma) at initialisation, inherited with the trees of the
+// child's first parent, and in every child of crossover or mutation each moved
+// by N(0, sigma) with probability `rate`, then clamped. Reproduction copies and
+// elites keep theirs. count 0 (the default) draws nothing: the plain GP's run.
+// The experiment sets it (the genes' meaning is its own), not a settings key.
+struct DirectGenes {
+    std::size_t count = 0;
+    double limit = 1.0;
+    double sigma = 0.1;
+    double rate = 0.1;
+};
 
 struct GpConfig {
     double default_fitness = 1.0;
@@ -45,6 +60,7 @@ struct GpConfig {
     int max_mutation_depth = 4;            // depth of subtrees grown by mutation
     int max_tree_depth = 17;               // per-tree cap without bloat control (Koza); 0 = none
     ForestDepth forest_depth = ForestDepth::Sum;
+    DirectGenes direct;                    // none unless the experiment asks (Offset-HybrID)
 
     // Levels (a leaf = 1) of the deepest tree the initialisation can make, and of
     // the deepest forest: the "maximum allowed depth during initialization" that

@@ -3,11 +3,18 @@
 // being built, kept as structural hashes. This is the one duplicate check of
 // the GP loop (initialisation, breeding, re-breeding after bloat control).
 #include <cstdint>
+#include <span>
 #include <unordered_set>
 
 #include "cic/tree/tree.hpp"
 
 namespace cic::gp {
+
+// The structural hash of a genotype: tree::hash of the trees, and when the
+// genotype has direct genes (GpConfig::direct) their bits mixed in, so two
+// genotypes that differ only in a gene differ in hash. Without genes it is
+// tree::hash(trees), the hash of every file written before the genes existed.
+std::uint64_t genotype_hash(const tree::Forest& trees, std::span<const double> direct = {});
 
 // Genotypes compare by 64-bit structural hash (tree::hash). Two different
 // genotypes with one hash would count as duplicates: the odds are about
@@ -16,8 +23,12 @@ namespace cic::gp {
 class SeenGenotypes {
 public:
     // True if f's hash was new (and is now recorded).
-    bool insert(const tree::Forest& f) { return hashes_.insert(tree::hash(f)).second; }
-    bool contains(const tree::Forest& f) const { return hashes_.count(tree::hash(f)) != 0; }
+    bool insert(const tree::Forest& f, std::span<const double> direct = {}) {
+        return hashes_.insert(genotype_hash(f, direct)).second;
+    }
+    bool contains(const tree::Forest& f, std::span<const double> direct = {}) const {
+        return hashes_.count(genotype_hash(f, direct)) != 0;
+    }
     std::size_t size() const { return hashes_.size(); }
     void clear() { hashes_.clear(); }
 

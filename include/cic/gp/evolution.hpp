@@ -142,9 +142,13 @@ struct EvolutionHooks {
     // Called after each generation's record; `last` is true for the final one.
     std::function<void(const Population&, const EvolutionState&, bool last)> on_checkpoint;
     const std::atomic<bool>* stop_requested = nullptr;   // e.g. set by SIGINT
+    // Asked after each generation's record (after on_generation): true ends the
+    // loop there, as the last generation of this search, which a later phase
+    // of the run continues (Switch-HybrID). Empty: never.
+    std::function<bool(const GenerationRecord&)> hand_over;
 };
 
-enum class StopReason { MaximumIterations, MinimumFitness, Interrupted };
+enum class StopReason { MaximumIterations, MinimumFitness, Interrupted, HandedOver };
 std::string to_string(StopReason r);
 
 struct EvolutionResult {

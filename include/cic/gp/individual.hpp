@@ -20,6 +20,9 @@ struct Phenotype {
 struct Individual {
     std::uint64_t id = 0;                    // unique within a run
     tree::Forest genotype;
+    // Genes encoded directly beside the trees (GpConfig::direct; Offset-HybrID's
+    // per-hinge offsets), part of the genotype: empty unless the run has them.
+    std::vector<double> direct;
     std::shared_ptr<const Phenotype> phenotype;  // optional, not saved
     double fitness = 0.0;
     bool evaluated = false;

@@ -3,6 +3,7 @@
 // the tree operator tree by tree.
 #include <span>
 #include <utility>
+#include <vector>
 
 #include "cic/core/rng.hpp"
 #include "cic/gp/config.hpp"
@@ -21,6 +22,14 @@ tree::Tree mutate(Rng& rng, const tree::Tree& t, const TreeGenerator& gen, int m
                   NodeSelection how = NodeSelection::Koza);
 tree::Forest mutate(Rng& rng, const tree::Forest& f, const TreeGenerator& gen, int max_sub_depth,
                     NodeSelection how = NodeSelection::Koza);
+
+// Direct genes (GpConfig::direct): `count` draws of N(0, sigma) clamped to
+// [-limit, limit], and the Gaussian step that moves each gene with probability
+// `rate`. Both throw std::invalid_argument for sigma < 0, limit <= 0, a rate
+// outside [0, 1] or a non-finite value; mutate_direct also for genes of
+// another count. count 0 draws nothing.
+std::vector<double> initial_direct(Rng& rng, const DirectGenes& cfg);
+std::vector<double> mutate_direct(Rng& rng, std::vector<double> genes, const DirectGenes& cfg);
 
 // One-point subtree crossover: swaps picked subtrees; returns both children.
 std::pair<tree::Tree, tree::Tree> crossover(Rng& rng, const tree::Tree& a, const tree::Tree& b,

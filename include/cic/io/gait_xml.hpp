@@ -30,6 +30,14 @@ struct GaitRestartRecord {
     std::vector<int> generations;        // the generation of each restart's first batch
 };
 
+// Switch-HybrID's gait phase (Neural.switchPatience / switchShare): where the
+// HyperGP phase ended, and the start point of the search (Search::set_start).
+struct GaitHandover {
+    int generation = 0;                  // the last HyperGP generation
+    long evaluations = 0;                // HyperGP's evaluations, before the gait's
+    std::vector<double> x;               // the best individual's gait, centred layout
+};
+
 struct GaitFile {
     std::string settings_digest;
     std::string optimizer;               // cmaes | xnes | sade
@@ -43,6 +51,7 @@ struct GaitFile {
     // Written by runs with restarts only; files without it (restarts = none,
     // or made before the key) load as before.
     std::optional<GaitRestartRecord> restarts;
+    std::optional<GaitHandover> handover;   // a Switch-HybrID run's gait phase only
 };
 
 std::string to_xml(const GaitFile& g);

@@ -3,6 +3,7 @@
 // state a run needs to continue bit for bit (seed, RNG state, generation,
 // bloat control, id counter). Human-readable and editable by hand.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,8 +18,20 @@ struct PopulationFile {
     int variables = 0;                    // genotype shape the file was made with
     std::vector<std::string> functions;
     int trees = 1;
+    // Direct genes per individual beside the trees (Offset-HybrID's offsets,
+    // gp::GpConfig::direct) and their range [-limit, limit]; 0 = none.
+    std::size_t offsets = 0;
+    double offset_limit = 0;
     gp::Population population;
     gp::EvolutionState state;
+    // Switch-HybrID's stagnation clock (Neural.switchPatience), in the files of
+    // its HyperGP phase: the best fitness so far and the first generation that
+    // reached it. <switch bestFitness bestGeneration>; absent elsewhere.
+    struct SwitchClock {
+        double best = 0;
+        int best_generation = 0;
+    };
+    std::optional<SwitchClock> switch_clock;
 };
 
 // The shape fields and digest of the given settings, with an empty population.

@@ -43,6 +43,19 @@ struct NeuralConfig {
     double cpg_weight_scale = 6.283185307179586;   // rad/s: w = scale * tanh(tree)
     int cpg_hops = 2;                       // joints at most this many links apart are coupled
     double cpg_feedback = 0.0;              // 1/s: largest feedback gain; 0 = open loop
+    // Offset-HybrID (substrate gait; docs/hypergp.md): one directly encoded
+    // offset per joint beside the trees, moved by N(0, offset_sigma) steps (in
+    // units of pi/2) with probability offset_rate in each bred child.
+    bool direct_offsets = false;
+    double offset_sigma = 0.2;
+    double offset_rate = 0.25;
+    // Switch-HybrID (substrate gait; docs/hypergp.md): the run hands over to
+    // CMA-ES on the direct gait (the Gait.* keys) after switch_patience
+    // generations without improvement of the best, or once HyperGP has spent
+    // switch_share of the budget Gait.evaluations; 0 = that rule is off.
+    int switch_patience = 0;
+    double switch_share = 0.0;
+    bool switches() const { return switch_patience > 0 || switch_share > 0; }
 };
 
 } // namespace cic::nn

@@ -15,6 +15,15 @@
 // mirrors at the bounds (a triangle wave: 1.2 -> 0.8, -0.3 -> 0.3), keeping
 // the landscape continuous, the usual remedy (pycma's BoundTransform and
 // libcmaes' pwqBoundStrategy are smoothed versions of it).
+//
+// The centred layout (Switch-HybrID's, docs/hypergp.md): the phase and offset
+// coordinates are centred on 0, so that the gait HyperGP-gait reads from its
+// trees is the image of a point, bit for bit (hypergp::gait_box_point):
+//   phases      2 pi w, w = x when |x| <= 1/2, else x - round(x)  (periodic)
+//   offset      pi/2 (2 y), y = x when |x| <= 1/2, else x read into [-1/2, 1/2] as `bounds` says
+// A box of the same unit width, [-1/2, 1/2] for those coordinates (lower()).
+// The standard layout cannot be exact: (2x - 1) pi/2 loses the low bits of
+// an offset near 0, and a negative phase would become phase + 2 pi.
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -31,6 +40,7 @@ struct Encoding {
     double frequency_min = 0.1;
     double frequency_max = 3.0;
     Bounds bounds = Bounds::Clamp;
+    bool centred = false;   // the centred layout (Switch-HybrID)
 
     // Throws std::invalid_argument for no joints or a bad frequency range.
     Encoding(std::size_t joints, bool second_harmonic, double frequency_min, double frequency_max,
@@ -40,9 +50,13 @@ struct Encoding {
     std::size_t dimension() const { return 1 + joints * per_joint(); }
     // Throws std::invalid_argument when x.size() != dimension() or x holds a non-finite value.
     sim::GaitSpec decode(std::span<const double> x) const;
+    // The box's lower corner (its width is 1 in every coordinate): 0, and
+    // -1/2 for the phase and offset coordinates of the centred layout.
+    std::vector<double> lower() const;
     // The point of the unit box that decodes to the same gait, bit for bit:
-    // each parameter read as decode reads it (Bounds; a phase wrapped). How an
-    // optimiser's raw point is handed to someone who works in the box (Python).
+    // each parameter read as decode reads it (Bounds; a phase wrapped; the
+    // centred layout into its own box). How an optimiser's raw point is
+    // handed to someone who works in the box (Python).
     std::vector<double> in_box(std::span<const double> x) const;
 };
 

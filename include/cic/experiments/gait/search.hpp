@@ -74,7 +74,20 @@ public:
     Search(Search&&) noexcept;
     Search& operator=(Search&&) noexcept;
 
-    // Generation 0: `population` uniform points of the unit box, drawn from the seed.
+    // Where the search starts and samples, set before initialise() (and
+    // replay()). `lower`: the box's lower corner, each coordinate's uniform
+    // draws in [lower, lower + 1) (empty: the unit box). `x0` (Switch-HybrID's
+    // hand-over): the first start's first batch is x0 itself and population - 1
+    // points x0 + sigma0 N(0, I) from the seed, so that CMA-ES's mean, the
+    // batch's best, starts at or next to x0; restarts draw uniform points as
+    // ever (empty: uniform from the start). Throws std::invalid_argument for a
+    // size other than the dimension or a non-finite value.
+    void set_box(std::vector<double> lower);
+    void set_start(std::vector<double> x0);
+    const std::vector<double>& start_point() const;
+
+    // Generation 0: `population` uniform points of the unit box, drawn from the
+    // seed (or the start around x0, set_start).
     void initialise(const BatchEvaluator& evaluate);
     // One generation of the optimiser, or, when restart_pending(), the first
     // batch of the next start: next_batch_size() uniform points of the unit

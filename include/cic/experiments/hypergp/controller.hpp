@@ -41,8 +41,11 @@ public:
 // integrates over it). Throws like the substrate it builds (cic::InputError
 // for a bad config, std::invalid_argument for a genotype that does not fit or
 // a substrate nothing registered).
+// `offsets` are the genotype's direct offsets (Neural.directOffsets), empty
+// without them; a substrate that takes none refuses them (std::invalid_argument).
 std::unique_ptr<Controller> make_controller(const sim::RobotSpec& robot, const tree::Forest& genotype,
-                                            const nn::NeuralConfig& cfg, double control_step);
+                                            const nn::NeuralConfig& cfg, double control_step,
+                                            std::span<const double> offsets = {});
 
 // The open registry of controllers (docs/extending.md). A controller is one
 // file with a static ControllerRegistrar: its Neural.substrate name and how a
@@ -53,11 +56,20 @@ std::unique_ptr<Controller> make_controller(const sim::RobotSpec& robot, const t
 using ControllerFactory = std::function<std::unique_ptr<Controller>(
     const sim::RobotSpec& robot, const tree::Forest& genotype, const nn::NeuralConfig& cfg, double control_step)>;
 
+// A substrate that also reads direct per-joint offsets (Offset-HybrID).
+using OffsetControllerFactory = std::function<std::unique_ptr<Controller>(
+    const sim::RobotSpec& robot, const tree::Forest& genotype, std::span<const double> offsets,
+    const nn::NeuralConfig& cfg, double control_step)>;
+
 struct ControllerKind {
     std::string name;   // the Neural.substrate value
     std::string doc;    // one line, for the key's documentation
     ControllerFactory make;
+    OffsetControllerFactory make_with_offsets = {};   // empty: takes no direct offsets
 };
+
+// Whether the substrate called `name` takes direct offsets (Neural.directOffsets).
+bool takes_direct_offsets(std::string_view name);
 
 // Throws std::invalid_argument for a name registered twice or a kind without `make`.
 void register_controller(ControllerKind kind);

@@ -6,8 +6,10 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 
+#include "cic/gp/config.hpp"
 #include "cic/io/settings.hpp"
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/job_text.hpp"
@@ -43,16 +45,28 @@ void check_inputs(const io::Settings& s);
 
 Outcome run(const Model& m, const tree::Forest& genotype, const sim::EvalOptions& options = {},
             bool record_control = false);
+// With the genotype's direct offsets (gp::Individual::direct; Neural.directOffsets), empty for none.
+Outcome run(const Model& m, const tree::Forest& genotype, std::span<const double> offsets,
+            const sim::EvalOptions& options = {}, bool record_control = false);
 
-// Worker protocol: the job body is the trees, one S-expression per line, and,
-// for MAP-Elites, a last line "descriptor NAME"; the reply is sim's evaluation
+// Offset-HybrID's genes (Neural.directOffsets): one offset per joint, in
+// [-kOffsetLimit, kOffsetLimit] (gait_substrate.hpp), stepped by
+// Neural.offsetSigma with probability Neural.offsetRate; none when off.
+gp::DirectGenes direct_offset_genes(const Model& m);
+
+// Worker protocol: the job body is the trees, one S-expression per line, then,
+// with direct offsets, a line "offsets D1 D2 ..." (shortest round-trip
+// decimals: the exact doubles), and, for MAP-Elites, a last line
+// "descriptor NAME"; the reply is sim's evaluation
 // reply (sim/job_text.hpp), the same for every runner, with the descriptor's
 // values when one was asked for.
 struct Job {
     tree::Forest genotype;
+    std::vector<double> offsets;
     sim::Descriptor descriptor = sim::Descriptor::None;
 };
-std::string job_body(const tree::Forest& genotype, sim::Descriptor descriptor = sim::Descriptor::None);
+std::string job_body(const tree::Forest& genotype, sim::Descriptor descriptor = sim::Descriptor::None,
+                     std::span<const double> offsets = {});
 Job parse_job_body(const std::string& body);   // throws std::invalid_argument
 // The reply of an evaluation of `m`'s robot: eq. 7.1's terms come from the walk,
 // whatever score the fitness is.

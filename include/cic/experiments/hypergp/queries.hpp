@@ -45,5 +45,7 @@ double unit(double v);
 
 // f_min + (f_max - f_min) unit(tree 0 at (F, F)), Hz: the evolved frequency.
 double evolved_frequency(const tree::Forest& genotype, const nn::NeuralConfig& cfg);
+// Its position in the range, in [0, 1]: unit(T_0(F, F)).
+double evolved_frequency_unit(const tree::Forest& genotype, const nn::NeuralConfig& cfg);
 
 } // namespace cic::hypergp
