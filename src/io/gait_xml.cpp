@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cic/core/error.hpp"
+#include "cic/core/hash.hpp"
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
 #include "xml_numbers.hpp"
@@ -40,6 +41,20 @@ GaitPoint read_point(const xml::Node& n, std::size_t dimension) {
 
 } // namespace
 
+std::string content_hash(const GaitFile& g) {
+    std::string text = g.optimizer + " " + std::to_string(g.seed) + " " + std::to_string(g.generation) + " " +
+                       std::to_string(g.evaluations) + " " + std::to_string(g.dimension) + "\n";
+    auto point = [&](const GaitPoint& p) { text += exact(p.fitness) + ":" + exact_list(p.x) + "\n"; };
+    point(g.champion);
+    for (const GaitPoint& p : g.population) point(p);
+    text += exact_list(g.history) + "\n";
+    if (g.restarts) {
+        text += std::to_string(g.restarts->count) + " " + std::to_string(g.restarts->population_size);
+        for (int v : g.restarts->generations) text += " " + std::to_string(v);
+    }
+    return hex16(fnv1a_64(text));
+}
+
 std::string to_xml(const GaitFile& g) {
     auto doc = xml::Document::create("gaitRun");
     auto root = doc.root();
@@ -51,6 +66,8 @@ std::string to_xml(const GaitFile& g) {
     root.set_attribute("generation", std::to_string(g.generation));
     root.set_attribute("evaluations", std::to_string(g.evaluations));
     root.set_attribute("dimension", std::to_string(g.dimension));
+    root.set_attribute("contentHash", content_hash(g));
+    if (g.origin) write_origin(root, *g.origin);
     write_point(root, "champion", g.champion);
     auto list = root.add_element("candidates");
     list.set_attribute("count", std::to_string(g.population.size()));
@@ -90,7 +107,9 @@ GaitFile read_gait(const xml::Document& doc) {
     bool champion = false, candidates = false, state = false;
     for (const auto& c : root.children()) {
         const auto n = c.name();
-        if (n == "champion") {
+        if (n == "origin") {
+            g.origin = read_origin(c);
+        } else if (n == "champion") {
             g.champion = read_point(c, g.dimension);
             champion = true;
         } else if (n == "candidates") {
@@ -135,7 +154,7 @@ GaitFile read_gait(const xml::Document& doc) {
             g.restarts = std::move(r);
         } else {
             throw c.error("unknown element <" + std::string(n) +
-                          "> in <gaitRun>; allowed: champion, candidates, history, restarts");
+                          "> in <gaitRun>; allowed: origin, champion, candidates, history, restarts");
         }
     }
     if (!champion || !candidates || !state)
@@ -143,6 +162,10 @@ GaitFile read_gait(const xml::Document& doc) {
     if (g.restarts && static_cast<std::size_t>(g.restarts->population_size) != g.population.size())
         throw root.error("<restarts populationSize=\"" + std::to_string(g.restarts->population_size) + "\"> but " +
                          std::to_string(g.population.size()) + " candidates");
+    // An edited point or history value would be believed on resume: refuse it.
+    if (const auto h = root.attribute("contentHash"); h && *h != content_hash(g))
+        throw root.error("<gaitRun contentHash=\"" + *h + "\"> does not match the champion, candidates and history (" +
+                         content_hash(g) + "; edited by hand?): a gait checkpoint cannot be re-evaluated in part");
     return g;
 }
 

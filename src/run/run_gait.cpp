@@ -34,8 +34,9 @@ gp::GenerationRecord record_of(const gait::Search& search, long failed, double w
     return r;
 }
 
-io::GaitFile checkpoint_of(const gait::Search& search, const io::Settings& s) {
+io::GaitFile checkpoint_of(const gait::Search& search, const io::Settings& s, const io::CheckpointOrigin& origin) {
     io::GaitFile g;
+    g.origin = origin;
     g.settings_digest = io::settings_digest(s);
     g.optimizer = gait::to_string(search.optimizer());
     g.seed = search.seed();
@@ -61,6 +62,7 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
     const gait::Setup setup = gait::Setup::from_settings(s);
     const gait::RestartRule restart_rule = gait::restart_rule_of(s);
     const bool ipop = restart_rule.mode == gait::Restarts::Ipop;
+    const io::CheckpointOrigin origin = io::origin_of(s, setup.robot);
     gait::Search search = prepared.gait_resume
         ? gait::resume_search(setup, restart_rule, *prepared.gait_resume, s.control.population_load_from)
         : gait::make_search(setup, restart_rule, s.experiment.seed);
@@ -68,6 +70,11 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
                     "evaluations), seed {}, {} worker{}, output {}",
                     CIC_VERSION, gait::to_string(setup.optimizer), setup.dimension(), setup.population,
                     s.gait.evaluations, s.experiment.seed, workers, workers == 1 ? "" : "s", opt.run_dir.string()));
+    if (!ipop && s.gait.evaluations % setup.population != 0)   // whole generations only: said, not done silently
+        say(fmt::format("note: Gait.evaluations {} is not a whole number of generations of {} candidates; the run "
+                        "stops after {} generations, at {} evaluations",
+                        s.gait.evaluations, setup.population, s.gait.evaluations / setup.population,
+                        s.gait.evaluations / setup.population * setup.population));
     if (ipop)
         say(fmt::format("ipop restarts: a start stagnates when its best rises by <= {:g} over {} generations{}; "
                         "each restart doubles the population",
@@ -105,7 +112,7 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
                                 r.wall_seconds));
         const int interval = std::max(1, s.experiment.checkpoint_interval);
         if ((r.generation + 1) % interval == 0 || s.gait.evaluations - search.evaluations() < search.next_batch_size())
-            write_checkpoint(opt.run_dir, r.generation, io::to_xml(checkpoint_of(search, s)));
+            write_checkpoint(opt.run_dir, r.generation, io::to_xml(checkpoint_of(search, s, origin)));
         const long per_generation = search.population_size();
         // The generations the budget allows at the next batch's size (without
         // restarts: floor(budget / lambda)).
@@ -125,9 +132,7 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
     StopSignalGuard stop_signals;
     if (prepared.gait_resume) {
         io::GaitFile& g = *prepared.gait_resume;
-        if (g.settings_digest != io::settings_digest(s))
-            say(fmt::format("note: {} was made with other settings; continuing with these settings",
-                            s.control.population_load_from));
+        say_checkpoint_notes(prepared, console);
         say(fmt::format("resuming from {} at generation {} ({} evaluations)", s.control.population_load_from,
                         g.generation, g.evaluations));
         stats.emplace(opt.continue_in_place ? io::StatsWriter(opt.run_dir / "stats.csv", g.generation)
@@ -178,7 +183,7 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
                     walk);
     if (reason == "interrupted") {
         // The checkpoint of the last finished generation is on disk unless the interval skipped it.
-        write_checkpoint(opt.run_dir, search.generation(), io::to_xml(checkpoint_of(search, s)));
+        write_checkpoint(opt.run_dir, search.generation(), io::to_xml(checkpoint_of(search, s, origin)));
         return console.interrupted();
     }
     finish_run(s, opt, console);

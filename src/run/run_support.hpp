@@ -90,6 +90,9 @@ void fill_fitness_stats(gp::GenerationRecord& r, std::vector<double> fitness);
 // The summary line that splits the best's score into eq. 7.1's terms.
 std::string eq71_line(double distance, double elevation);
 
+// The prepared run's notes on its checkpoint (origin_note, search_note), if any.
+void say_checkpoint_notes(const PreparedRun& prepared, RunConsole& console);
+
 // The gait experiment's loop (run_gait.cpp); run_experiment hands over to it.
 int run_gait(PreparedRun prepared, const RunOptions& opt);
 // The MAP-Elites loop of either robot family (run_map_elites.cpp).

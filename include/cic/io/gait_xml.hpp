@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cic/io/checkpoint_origin.hpp"
 #include "cic/io/settings.hpp"
 
 namespace cic::io {
@@ -43,7 +44,14 @@ struct GaitFile {
     // Written by runs with restarts only; files without it (restarts = none,
     // or made before the key) load as before.
     std::optional<GaitRestartRecord> restarts;
+    // Where it came from (checkpoint_origin.hpp); none in files written before origins.
+    std::optional<CheckpointOrigin> origin;
 };
+
+// A digest of the state a resume believes (seed, counters, points, history,
+// restarts), written as <gaitRun contentHash>: a hand edit is refused, since a
+// gait checkpoint cannot be re-evaluated in part.
+std::string content_hash(const GaitFile& g);
 
 std::string to_xml(const GaitFile& g);
 // Throws InputError "FILE:LINE: ..." for anything malformed, truncated or inconsistent.

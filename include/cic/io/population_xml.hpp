@@ -6,7 +6,11 @@
 #include <string>
 #include <vector>
 
+#include <map>
+#include <optional>
+
 #include "cic/gp/evolution.hpp"
+#include "cic/io/checkpoint_origin.hpp"
 #include "cic/io/settings.hpp"
 
 namespace cic::io {
@@ -19,9 +23,12 @@ struct PopulationFile {
     int trees = 1;
     gp::Population population;
     gp::EvolutionState state;
+    // Where it came from (checkpoint_origin.hpp); none in files written before origins.
+    std::optional<CheckpointOrigin> origin;
+    std::map<std::uint64_t, int> lines;   // individual id -> line of its <individual> (files read)
 };
 
-// The shape fields and digest of the given settings, with an empty population.
+// The shape fields, digest and origin of the given settings, with an empty population.
 PopulationFile describe(const Settings& s);
 
 std::string to_xml(const PopulationFile& p);
