@@ -88,7 +88,9 @@ ArchiveFile read_archive(const xml::Document& doc) {
     a.evaluations = attribute<long>(root, "evaluations");
     a.failed = attribute<long>(root, "failed");
     if (a.batches < 1 || a.evaluations < a.batches || a.failed < 0 || a.failed > a.evaluations)
-        throw root.error("batches must be >= 1, evaluations >= batches and failed in [0, evaluations]");
+        throw root.error("<archive batches=\"" + std::to_string(a.batches) + "\" evaluations=\"" + std::to_string(a.evaluations) +
+                         "\" failed=\"" + std::to_string(a.failed) +
+                         "\">: batches must be >= 1, evaluations >= batches and failed in [0, evaluations]");
     try {
         a.rng = Rng::parse_state(std::string(root.attribute("rng").value_or("")));
     } catch (const std::invalid_argument& e) {
@@ -135,10 +137,11 @@ ArchiveFile read_archive(const xml::Document& doc) {
                 throw c.error("<emitter> needs a name and its state (truncated or edited?)");
         }
     }
-    if (!grid) throw root.error("an archive needs a <grid> (truncated?)");
-    if (gait && hypergp) throw root.error("an archive holds either parameter vectors or trees, not both");
+    if (!grid) throw root.error("<archive> needs a <grid> (truncated?)");
+    if (gait && hypergp) throw root.error("<archive> holds either parameter vectors or trees, not both");
     if (static_cast<long>(a.elites.size()) > a.evaluations - a.failed)
-        throw root.error("more elites than successful evaluations");
+        throw root.error(fmt::format("<archive> holds {} elites but only {} successful evaluations (evaluations - failed)",
+                                     a.elites.size(), a.evaluations - a.failed));
     return a;
 }
 

@@ -103,7 +103,9 @@ GaitFile read_gait(const xml::Document& doc) {
     g.evaluations = attribute<long>(root, "evaluations");
     g.dimension = attribute<std::size_t>(root, "dimension");
     if (g.generation < 0 || g.evaluations < 0 || g.dimension == 0 || g.dimension > 1000000)
-        throw root.error("generation and evaluations must be >= 0 and dimension in [1, 1000000]");
+        throw root.error("<gaitRun generation=\"" + *root.attribute("generation") + "\" evaluations=\"" +
+                         *root.attribute("evaluations") + "\" dimension=\"" + *root.attribute("dimension") +
+                         "\">: generation and evaluations must be >= 0 and dimension in [1, 1000000]");
     bool champion = false, candidates = false, state = false;
     for (const auto& c : root.children()) {
         const auto n = c.name();
@@ -158,7 +160,7 @@ GaitFile read_gait(const xml::Document& doc) {
         }
     }
     if (!champion || !candidates || !state)
-        throw root.error("a gait checkpoint needs <champion>, <candidates> and <history> (truncated?)");
+        throw root.error("<gaitRun> needs <champion>, <candidates> and <history> (truncated?)");
     if (g.restarts && static_cast<std::size_t>(g.restarts->population_size) != g.population.size())
         throw root.error("<restarts populationSize=\"" + std::to_string(g.restarts->population_size) + "\"> but " +
                          std::to_string(g.population.size()) + " candidates");
