@@ -128,8 +128,9 @@ CheckpointOrigin origin_of(const Settings& s, const sim::RobotSpec& robot) {
         }
         std::string functions;
         for (auto op : s.gp.primitives.functions) functions += (functions.empty() ? "" : ",") + std::string(tree::name(op));
-        o.parts.push_back({"genotype", fmt::format("variables={} trees={} functions={}", s.gp.primitives.variable_count,
-                                                   s.gp.trees_per_genotype, functions)});
+        // Named by their settings keys, so that a refusal names the key to change.
+        o.parts.push_back({"genotype", fmt::format("terminalVariableCount={} numberOfTreesInForestGenotype={} functions={}",
+                                                   s.gp.primitives.variable_count, s.gp.trees_per_genotype, functions)});
         if (family == ExperimentFamily::Symreg)
             o.parts.push_back({"dataset", section_text(s, "SymbolicRegression", {})});
     }

@@ -82,7 +82,7 @@ TEST(CheckpointOrigin, BudgetSeedWorkersAndSearchSettingsAreLeftOut) {
     gp2.gp.mutation_rate = 0.5;
     EXPECT_EQ(origin_of(gp2).digest(), origin_of(gp).digest());
     gp2.gp.primitives.variable_count = 5;
-    EXPECT_NE(refusal(origin_of(gp2), gp).find("genotype: variables checkpoint 5, settings 4"), std::string::npos);
+    EXPECT_NE(refusal(origin_of(gp2), gp).find("genotype: terminalVariableCount checkpoint 5, settings 4"), std::string::npos);
     gp2 = gp;
     gp2.neural.substrate = "cpg";
     EXPECT_NE(refusal(origin_of(gp2), gp).find("controller: substrate checkpoint cpg, settings network"),
@@ -111,7 +111,7 @@ TEST(CheckpointOrigin, APopulationFileCarriesItAndAnEditIsRefused) {
     EXPECT_EQ(back.origin->parts, p.origin->parts);
     EXPECT_GT(back.origin->line, 0);
     std::string edited = text;
-    edited.replace(edited.find("variables=4 trees=1"), 11, "variables=5");
+    edited.replace(edited.find("terminalVariableCount=4"), 23, "terminalVariableCount=5");
     try {
         parse_population(edited, "p.xml");
         ADD_FAILURE() << "an edited origin was believed";

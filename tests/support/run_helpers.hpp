@@ -155,9 +155,9 @@ inline std::string golden_symreg_settings(int threads) {
 
 // The hashes of golden_hypergp_settings' and golden_symreg_settings' final
 // population.xml (tests/experiments/golden_test.cpp, tests/run/mpi_test.cpp).
-inline const std::string kGoldenHypergp = "21e7ded2a4920e50";
-inline const std::string kGoldenSymreg = "563fa143df840681";
-inline const std::string kGoldenCpg = "16deb57406c0152d";   // golden_cpg_settings
+inline const std::string kGoldenHypergp = "09db9dd1955dcc96";
+inline const std::string kGoldenSymreg = "736b635d6cde4c4c";
+inline const std::string kGoldenCpg = "c9474be13ed77341";   // golden_cpg_settings
 
 // The golden MAP-Elites runs (docs/quality-diversity.md): HyperGP-gait genotypes
 // varied by crossover and subtree mutation, and gait vectors varied by
@@ -175,7 +175,7 @@ inline std::string golden_map_elites_settings(const std::string& type, int worke
 }
 inline std::string golden_me_hypergp_settings(int workers) { return golden_map_elites_settings("hypergp", workers); }
 inline std::string golden_me_gait_settings(int workers) { return golden_map_elites_settings("gait", workers); }
-inline const std::string kGoldenMapElitesHypergp = "842ad770a5b4b900";   // golden_me_hypergp_settings' final population.xml
+inline const std::string kGoldenMapElitesHypergp = "826a6b8e1feaa542";   // golden_me_hypergp_settings' final population.xml
 inline const std::string kGoldenMapElitesGait = "f531a82e59ea5987";      // golden_me_gait_settings' final population.xml
 
 
