@@ -37,7 +37,7 @@ Setup Setup::from_settings(const io::Settings& s) {
         : default_population(out.dimension(), out.optimizer == Optimizer::Sade ? 7 : 5);
     out.sigma0 = s.gait.sigma0;
     if (out.population > s.gait.evaluations)
-        throw io::key_error(s, {"Gait.evaluations", "Gait.populationSize"},
+        throw io::key_error(s, {"Gait.evaluations"},
                             fmt::format("a budget of {} does not cover one generation of {} candidates",
                                         s.gait.evaluations, out.population));
     return out;
