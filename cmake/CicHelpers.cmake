@@ -17,6 +17,10 @@ function(cic_layer name dir)
   string(REGEX REPLACE "^cic_" "" _export ${name})
   set_target_properties(${name} PROPERTIES EXPORT_NAME ${_export})
   add_dependencies(${name} cic_layer_check)   # an upward include fails the build
+  if(CIC_LAYER_PIC)   # linked into the Python module too (cmake/CicPython.cmake)
+    set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    target_compile_options(${name} PRIVATE -fno-semantic-interposition)
+  endif()
   set_property(GLOBAL APPEND PROPERTY CIC_LAYERS ${name})
 endfunction()
 

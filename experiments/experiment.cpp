@@ -21,6 +21,7 @@ std::unique_ptr<JobRunner> make_job_runner(const Context& ctx) {
     opt.workers = std::max(1, ctx.workers);
     opt.argv = {ctx.worker_executable, "worker", "--settings", ctx.settings_file.string()};
     opt.timeout_seconds = ctx.settings.experiment.worker_timeout;
+    opt.interrupted = ctx.interrupted;
     return std::make_unique<ProcessPool>(opt);
 }
 

@@ -7,6 +7,7 @@
 #   sweep overhead per run and --jobs 2 x 1 worker vs --jobs 1 x 2 workers;
 #   per-evaluation breakdown (substrate build, network steps, physics);
 #   MAP-Elites: the archive's cost per evaluation (variation, offer, checkpoint) against physics;
+#   Python (cic.Evaluator) against cic's own run, and a batch of one's overhead;
 #   with --deap N: DEAP vs cic on DEAP's symbreg example over N seeds (default off);
 #   with --r1: the default R1 run (50 x 50, seed 1, 2 workers): wall time and best fitness;
 #   with --tricks: whether the GP loop's speed tricks pay (scripts/bench-gp-tricks.sh).
@@ -22,7 +23,7 @@ while [ $# -gt 0 ]; do
     --deap) deap="$2"; shift 2 ;;
     --r1) r1=1; shift ;;
     --tricks) tricks=1; shift ;;
-    -h|--help) sed -n '2,11p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
     *) echo "bench.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -46,6 +47,10 @@ echo
 echo "== Simulator"
 bash "$ROOT/scripts/bench-sim.sh" "$ROOT/build"
 echo
+if [ -f "$ROOT/build/python/cic/__init__.py" ]; then   # the Python package (docs/python.md)
+  /usr/bin/python3 "$ROOT/scripts/bench-python.py" "$ROOT/build"
+  echo
+fi
 echo "== Studies (cic sweep)"
 bash "$ROOT/scripts/bench-sweep.sh" "$ROOT/build"
 echo

@@ -20,6 +20,8 @@ RUN_PACKAGES=(
   # libraries
   libode-dev libeigen3-dev libxml2-dev libcli11-dev libfmt-dev libpagmo-dev
   libopenscenegraph-dev libopenmpi-dev openmpi-bin
+  # `cic eval`'s JSON lines (header-only)
+  nlohmann-json3-dev
   # the plots a run draws (Control.useMatlabPlot)
   gnuplot-nox
 )
@@ -34,6 +36,9 @@ MORE_PACKAGES=(
   python3-deap
   # docs/analysis.md: a study read into pandas, a figure redrawn with matplotlib
   python3-pandas python3-matplotlib
+  # the Python package (docs/python.md): built when these are present; its tests, and
+  # the Octave example of the JSON-lines stream
+  pybind11-dev python3-dev python3-numpy python3-pytest octave
 )
 
 PACKAGES=("${RUN_PACKAGES[@]}")

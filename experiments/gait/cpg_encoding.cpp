@@ -34,4 +34,11 @@ sim::CpgSpec CpgEncoding::decode(std::span<const double> x) const {
     return spec;
 }
 
+std::vector<double> CpgEncoding::in_box(std::span<const double> x) const {
+    (void)decode(x);   // the same checks
+    std::vector<double> out;
+    for (double v : x) out.push_back(to_unit(v, bounds));   // every weight is read through to_unit
+    return out;
+}
+
 } // namespace cic::gait

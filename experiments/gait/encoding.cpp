@@ -44,6 +44,23 @@ sim::GaitSpec Encoding::decode(std::span<const double> x) const {
     return g;
 }
 
+std::vector<double> Encoding::in_box(std::span<const double> x) const {
+    (void)decode(x);   // the same checks
+    std::vector<double> out(x.begin(), x.end());
+    out[0] = to_unit(x[0], bounds);
+    for (std::size_t j = 0; j < joints; ++j) {
+        double* p = out.data() + 1 + j * per_joint();
+        p[0] = to_unit(p[0], bounds);
+        p[1] = p[1] - std::floor(p[1]);   // decode's angle(): 2 pi (v - floor v), the same bits from [0, 1)
+        p[2] = to_unit(p[2], bounds);
+        if (second_harmonic) {
+            p[3] = to_unit(p[3], bounds);
+            p[4] = p[4] - std::floor(p[4]);
+        }
+    }
+    return out;
+}
+
 double to_unit(double v, Bounds bounds) {
     if (bounds == Bounds::Clamp) return std::clamp(v, 0.0, 1.0);
     const double t = v - 2.0 * std::floor(v / 2.0);   // in [0, 2): the triangle wave's period

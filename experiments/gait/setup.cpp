@@ -87,7 +87,7 @@ Evaluator::Evaluator(const experiments::Context& ctx, const Setup& setup)
 
 Evaluator::~Evaluator() = default;
 
-std::vector<sim::EvalReply> Evaluator::run(const std::vector<std::vector<double>>& xs, sim::Descriptor descriptor) {
+std::vector<sim::EvalReply> Evaluator::replies(const std::vector<std::vector<double>>& xs, sim::Descriptor descriptor) {
     std::vector<std::string> jobs;
     jobs.reserve(xs.size());
     for (const auto& x : xs) jobs.push_back(make_job(setup_, x, descriptor));
@@ -111,14 +111,14 @@ std::vector<sim::EvalReply> Evaluator::run(const std::vector<std::vector<double>
 
 std::vector<double> Evaluator::operator()(const std::vector<std::vector<double>>& xs) {
     std::vector<double> f;
-    for (const sim::EvalReply& r : run(xs, sim::Descriptor::None)) f.push_back(r.fitness);
+    for (const sim::EvalReply& r : replies(xs, sim::Descriptor::None)) f.push_back(r.fitness);
     return f;
 }
 
 std::vector<gp::Evaluation> Evaluator::described(const std::vector<std::vector<double>>& xs,
                                                  sim::Descriptor descriptor) {
     std::vector<gp::Evaluation> out;
-    for (sim::EvalReply& r : run(xs, descriptor)) out.push_back({r.fitness, std::move(r.descriptor), r.failed});
+    for (sim::EvalReply& r : replies(xs, descriptor)) out.push_back({r.fitness, std::move(r.descriptor), r.failed});
     return out;
 }
 

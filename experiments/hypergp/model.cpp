@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "cic/core/error.hpp"
 #include "cic/core/limits.hpp"
@@ -127,8 +128,10 @@ Job parse_job_body(const std::string& body) {
     return job;
 }
 
-sim::EvalReply to_reply(const Outcome& o, std::vector<double> descriptor) {
-    return {o.fitness, o.failed ? std::vector<double>{} : std::move(descriptor), o.failed, o.failure};
+sim::EvalReply to_reply(const Model& m, const Outcome& o, std::vector<double> descriptor) {
+    sim::EvalReply reply{o.fitness, o.failed ? std::vector<double>{} : std::move(descriptor), o.failed, o.failure};
+    if (!o.failed) std::tie(reply.distance, reply.elevation) = sim::walk_terms(m.robot, o.result);
+    return reply;
 }
 
 std::function<std::string(const std::string&)> make_job_handler(std::function<io::Settings()> settings,
@@ -157,7 +160,7 @@ std::function<std::string(const std::string&)> make_job_handler(std::function<io
             }
         }
         return sim::format_eval_reply(
-            to_reply(o, o.failed ? std::vector<double>{}
+            to_reply((*loaded)->model, o, o.failed ? std::vector<double>{}
                                  : sim::descriptor_of(job.descriptor, (*loaded)->model.robot, o.result)));
     };
 }

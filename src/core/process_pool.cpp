@@ -2,6 +2,7 @@
 // Frame = 8-byte little-endian length + payload. A reply payload starts with
 // 'O' (ok) or 'E' (the handler threw; the rest is the message).
 #include "cic/core/process_pool.hpp"
+#include "cic/core/error.hpp"
 
 #include <cerrno>
 #include <chrono>
@@ -203,7 +204,17 @@ std::vector<JobResult> ProcessPool::run(const std::vector<std::string>& jobs) {
         }
     };
 
+    // Workers ended by an interrupt come back for the next batch.
+    for (Worker& w : im.workers)
+        if (w.pid <= 0) im.spawn(w);
     while (done < jobs.size()) {
+        if (im.opt.interrupted && im.opt.interrupted()) {
+            for (Worker& w : im.workers) {
+                Impl::end(w, true);
+                w.job = -1;
+            }
+            throw Interrupted();
+        }
         for (Worker& w : im.workers) {
             if (w.job >= 0 || pending.empty()) continue;
             const long j = pending.front();
@@ -216,7 +227,7 @@ std::vector<JobResult> ProcessPool::run(const std::vector<std::string>& jobs) {
 
         std::vector<pollfd> fds;
         for (const Worker& w : im.workers) fds.push_back({w.fd, POLLIN, 0});
-        auto wait = std::chrono::milliseconds(1000);
+        auto wait = std::chrono::milliseconds(im.opt.interrupted ? 50 : 1000);
         const auto now = Clock::now();
         for (const Worker& w : im.workers)
             if (w.job >= 0) {

@@ -218,8 +218,7 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
 } // namespace
 
 std::pair<double, double> eq71_terms(const sim::RobotSpec& robot, const sim::EvalResult& r) {
-    const std::size_t p = robot.preferred == sim::Axis::X ? 0 : 1;
-    return {std::fabs(r.end[p] - r.start[p]), r.end[2] - r.start[2]};
+    return sim::walk_terms(robot, r);
 }
 
 // Eq. 7.1's terms and, when the ground was recorded, each foot's duty factor.

@@ -16,21 +16,22 @@ namespace cic::app {
 
 namespace fs = std::filesystem;
 
-std::vector<fs::path> settings_search_folders() {
+std::vector<fs::path> settings_search_folders(const fs::path& cic_binary) {
+    const fs::path exe = cic_binary.empty() ? fs::path(self_path()) : cic_binary;
     std::vector<fs::path> out;
-    if (const fs::path exe = self_path(); exe.has_parent_path())
+    if (exe.has_parent_path())
         out.push_back((exe.parent_path() / ".." / "share" / "cic" / "settings").lexically_normal());
 #if defined(CIC_SOURCE_DIR) && defined(CIC_BINARY_DIR)
     // Only a binary still in its build folder looks in the source tree: an
     // installed one (or a .deb's) never reads files of the machine it was built on.
-    const fs::path exe = self_path(), build = fs::path(CIC_BINARY_DIR);
+    const fs::path build = fs::path(CIC_BINARY_DIR);
     if (!exe.empty() && std::mismatch(build.begin(), build.end(), exe.begin(), exe.end()).first == build.end())
         out.push_back(fs::path(CIC_SOURCE_DIR) / "settings");
 #endif
     return out;
 }
 
-fs::path find_settings_file(const std::string& given) {
+fs::path find_settings_file(const std::string& given, const fs::path& cic_binary) {
     if (given.empty()) throw InputError("--settings: the file name is empty");
     const fs::path p(given);
     std::error_code ec;
@@ -43,7 +44,7 @@ fs::path find_settings_file(const std::string& given) {
         // "settings/NAME.xml" (the source tree's spelling) is NAME.xml in a settings folder, not settings/settings/.
         const fs::path inside = *p.begin() == "settings" && std::distance(p.begin(), p.end()) > 1
             ? p.lexically_relative("settings") : p;
-        for (const auto& dir : settings_search_folders()) {
+        for (const auto& dir : settings_search_folders(cic_binary)) {
             const fs::path candidate = (dir / inside).lexically_normal();
             if (fs::is_regular_file(candidate, ec)) {
                 fs::path full = fs::weakly_canonical(candidate, ec);

@@ -50,6 +50,9 @@ EvalResult evaluate(const RobotSpec& robot, Controller& controller, const SimCon
         world.track_ground_geoms(true);
         r.module_ground_steps.assign(robot.modules.size(), 0);
     }
+    // Each foot's contacts per trace row (a fitness that needs the whole walk pays only when it asks).
+    const std::vector<int> feet = options.record_ground && options.record_trace ? branch_ends(robot) : std::vector<int>{};
+    std::vector<char> module_touched(robot.modules.size(), 0);
     long next_frame = 0;
     auto fail = [&](std::string why, double t) {
         r.failed = true;
@@ -78,8 +81,10 @@ EvalResult evaluate(const RobotSpec& robot, Controller& controller, const SimCon
             if (!std::isfinite(d)) return fail("the controller gave a non-finite angle at t=" + std::to_string(t), t);
             d = std::clamp(d, -kHingeLimit, kHingeLimit);
         }
-        if (options.record_trace)
-            r.trace.push_back({t, desired, angles, world.geom_position(layout.centre_geom)});
+        if (options.record_trace) {
+            r.trace.push_back({t, desired, angles, world.geom_position(layout.centre_geom), {}});
+            r.trace.back().feet_on_ground.assign(feet.size(), 0);
+        }
 
         for (int s = 0; s < cfg.step_divider; ++s) {
             // The thesis's P-controller, on the current angle every physics step.
@@ -92,13 +97,17 @@ EvalResult evaluate(const RobotSpec& robot, Controller& controller, const SimCon
             r.max_ground_contacts = std::max(r.max_ground_contacts, world.last_ground_contacts());
             r.max_self_contacts = std::max(r.max_self_contacts, world.last_self_contacts());
             r.max_ground_depth = std::max(r.max_ground_depth, world.last_ground_depth());
-            if (options.record_ground && k >= k_start) {
-                ++r.ground_steps;
+            if (options.record_ground) {
                 const auto& touched = world.last_ground_geoms();
-                std::vector<char> module_touched(robot.modules.size(), 0);
+                std::fill(module_touched.begin(), module_touched.end(), 0);
                 for (std::size_t g = 0; g < touched.size(); ++g)
                     if (touched[g]) module_touched[static_cast<std::size_t>(layout.geoms[g].module)] = 1;
-                for (std::size_t m = 0; m < module_touched.size(); ++m) r.module_ground_steps[m] += module_touched[m];
+                if (k >= k_start) {
+                    ++r.ground_steps;
+                    for (std::size_t m = 0; m < module_touched.size(); ++m) r.module_ground_steps[m] += module_touched[m];
+                }
+                for (std::size_t f = 0; f < feet.size(); ++f)
+                    if (module_touched[static_cast<std::size_t>(feet[f])]) r.trace.back().feet_on_ground[f] = 1;
             }
             double fastest = 0.0;
             const std::string why = world.check(cfg.blowup_bound, cfg.max_body_speed, fastest);
@@ -109,10 +118,15 @@ EvalResult evaluate(const RobotSpec& robot, Controller& controller, const SimCon
     }
     r.end = world.geom_position(layout.centre_geom);
     r.simulated_seconds = static_cast<double>(n_steps) * cfg.sample_step;
-    const std::size_t p = robot.preferred == Axis::X ? 0 : 1;
-    r.fitness = std::fabs(r.end[p] - r.start[p]) + (r.end[2] - r.start[2]);
+    const auto [distance, elevation] = walk_terms(robot, r);
+    r.fitness = distance + elevation;
     if (!std::isfinite(r.fitness)) return fail("non-finite fitness", cfg.sample_to);
     return r;
+}
+
+std::pair<double, double> walk_terms(const RobotSpec& robot, const EvalResult& r) {
+    const std::size_t p = robot.preferred == Axis::X ? 0 : 1;
+    return {std::fabs(r.end[p] - r.start[p]), r.end[2] - r.start[2]};
 }
 
 std::vector<int> branch_ends(const RobotSpec& robot) {

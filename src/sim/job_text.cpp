@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace cic::sim {
 
@@ -134,11 +135,16 @@ std::string format_eval_reply(const EvalReply& r) {
         for (double v : r.descriptor) out << ' ' << hexfloat(v);
         out << '\n';
     }
+    out << "walk " << hexfloat(r.distance) << ' ' << hexfloat(r.elevation) << '\n';
     out << "failed " << (r.failed ? 1 : 0) << '\n' << r.failure;
     return out.str();
 }
 
-std::string format_eval_reply(const EvalResult& r) { return format_eval_reply(EvalReply{r.fitness, {}, r.failed, r.failure}); }
+EvalReply reply_of(const RobotSpec& robot, const EvalResult& r, std::vector<double> descriptor) {
+    EvalReply reply{r.fitness, r.failed ? std::vector<double>{} : std::move(descriptor), r.failed, r.failure};
+    if (!r.failed) std::tie(reply.distance, reply.elevation) = walk_terms(robot, r);
+    return reply;
+}
 
 EvalReply parse_eval_reply(const std::string& text) {
     std::istringstream in(text);
@@ -151,6 +157,11 @@ EvalReply parse_eval_reply(const std::string& text) {
         const long n = read_int(in);
         if (n < 1 || n > 100000) bad("bad descriptor size");
         for (long i = 0; i < n; ++i) e.descriptor.push_back(read_double(in));
+        in >> w;
+    }
+    if (w == "walk") {
+        e.distance = read_double(in);
+        e.elevation = read_double(in);
         in >> w;
     }
     if (w != "failed") bad("expected 'failed', got '" + w + "'");
@@ -186,7 +197,7 @@ std::string run_sine_job(const std::string& body) {
         j.phase = read_double(in);
     }
     SineController controller(std::move(joints));
-    return format_eval_reply(evaluate(robot, controller, cfg));
+    return format_eval_reply(reply_of(robot, evaluate(robot, controller, cfg)));
 }
 
 namespace {
@@ -215,8 +226,7 @@ std::string evaluate_and_reply(const RobotSpec& robot, Controller& controller, c
     EvalOptions options;
     options.record_ground = needs_ground(d);
     const EvalResult r = evaluate(robot, controller, cfg, options);
-    EvalReply reply{r.fitness, r.failed ? std::vector<double>{} : descriptor_of(d, robot, r), r.failed, r.failure};
-    return format_eval_reply(reply);
+    return format_eval_reply(reply_of(robot, r, r.failed ? std::vector<double>{} : descriptor_of(d, robot, r)));
 }
 
 } // namespace

@@ -263,6 +263,30 @@ TEST(Install, PluginTypeBuildsAndRunsThroughCicsCommandLine) {
     EXPECT_NE(g.fitness, square_pop.population.best().fitness) << "the square wave was not used";
 }
 
+// The Python package (docs/python.md) from an installed prefix: found with
+// PYTHONPATH at PREFIX/lib/python3.X/dist-packages, it runs the installed cic as
+// its workers and finds the installed settings, from a folder unrelated to both.
+TEST(Install, PythonPackageImportsFromThePrefixAndScores) {
+#ifndef CIC_HAVE_PYTHON
+    GTEST_SKIP() << "built without the Python package (CIC_WITH_PYTHON)";
+#else
+    const fs::path& p = installed_prefix();
+    fs::path site;
+    for (const auto& e : fs::directory_iterator(p / "lib"))
+        if (e.path().filename().string().rfind("python3.", 0) == 0) site = e.path() / "dist-packages";
+    ASSERT_TRUE(fs::exists(site / "cic" / "__init__.py")) << "no package under " << (p / "lib");
+    const ScratchDir scratch("install-python");
+    const Shell r = sh("cd " + q(scratch.path) + " && env -u CIC_EXECUTABLE PYTHONPATH=" + q(site) +
+                       " /usr/bin/python3 -c \"import cic; ev = cic.Evaluator('r1_gait.xml', "
+                       "set={'Simulator.sample_to': 1, 'Simulator.delayed_start': 0}); print(cic.executable()); print(ev.settings_file); "
+                       "print(len(ev.evaluate([[0.5] * ev.dimension]).fitness))\" 2>&1");
+    ASSERT_EQ(r.rc, 0) << r.out;
+    EXPECT_HAS(r.out, (p / "bin" / "cic").string() + "\n");
+    EXPECT_HAS(r.out, (p / "share" / "cic" / "settings" / "r1_gait.xml").string() + "\n");
+    EXPECT_HAS(r.out, "\n1\n");
+#endif
+}
+
 TEST(Install, DebianPackage) {
     if (!have(q(CIC_CPACK_COMMAND)) || !have("dpkg-deb")) GTEST_SKIP() << "cpack or dpkg-deb missing";
     const ScratchDir scratch("install-deb");
@@ -298,6 +322,11 @@ TEST(Install, DebianPackage) {
                           "./usr/share/cic/examples/tournament-sweep.xml", "./usr/share/doc/cic/README.md",
                           "./usr/share/bash-completion/completions/cic"})
         EXPECT_HAS(contents.out, std::string(f) + "\n");
+#ifdef CIC_HAVE_PYTHON
+    // The Python package where Debian's python3 finds it, with its core module.
+    EXPECT_HAS(contents.out, "./usr/lib/python3/dist-packages/cic/__init__.py\n");
+    EXPECT_HAS(contents.out, "./usr/lib/python3/dist-packages/cic/_core.cpython-");
+#endif
     EXPECT_TRUE(contents.out.find("./usr/share/man/man1/cic.1\n") != std::string::npos ||
                 contents.out.find("./usr/share/man/man1/cic.1.gz\n") != std::string::npos)
         << contents.out;

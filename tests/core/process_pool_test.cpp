@@ -4,12 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <csignal>
 #include <stdexcept>
 #include <thread>
 
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include "cic/core/error.hpp"
 #include "cic/core/process_pool.hpp"
 
 using namespace cic;
@@ -87,6 +90,31 @@ TEST(ProcessPool, KilledIdleWorkerIsReplaced) {
     for (const JobResult& j : r) EXPECT_TRUE(j.ok) << j.error;
     EXPECT_EQ(pool.restarts(), 1);
     EXPECT_NE(pool.pids()[0], before[0]);
+}
+
+// An interrupt (Python's Ctrl-C) ends a batch of hung jobs at once: every
+// worker is gone, run() throws, and the next batch starts fresh workers.
+TEST(ProcessPool, InterruptEndsTheBatchAndItsWorkers) {
+    PoolOptions o = command({"/bin/sh", "-c", "read line; exec sleep 1000"}, 2);
+    std::atomic<int> asked{0};
+    std::atomic<bool> stop{true};
+    o.interrupted = [&] { return ++asked >= 4 && stop.load(); };
+    ProcessPool pool(o);
+    const auto before = pool.pids();
+    const auto t0 = std::chrono::steady_clock::now();
+    EXPECT_THROW(pool.run({"Oa", "Ob", "Oc"}), Interrupted);
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(5));
+    for (int pid : before) EXPECT_NE(::kill(pid, 0), 0) << "worker " << pid << " still runs";
+    stop = false;
+    PoolOptions echo = command({"/bin/cat"}, 2);
+    echo.interrupted = [&] { return stop.load(); };
+    ProcessPool cats(echo);
+    stop = true;
+    EXPECT_THROW(cats.run({"Oa"}), Interrupted);
+    stop = false;
+    const auto r = cats.run({"Oa", "Ob"});   // new workers for the next batch
+    EXPECT_TRUE(r[0].ok && r[1].ok);
+    EXPECT_EQ(r[1].output, "b");
 }
 
 TEST(ProcessPool, BadArgumentsThrow) {

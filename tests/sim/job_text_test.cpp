@@ -58,10 +58,20 @@ TEST(JobText, RoundTripsExactly) {
     r.fitness = 1.0 / 3.0;
     r.failed = true;
     r.failure = "physics blow-up: body 3\nsecond line";
-    const EvalReply e = parse_eval_reply(format_eval_reply(r));
+    const EvalReply e = parse_eval_reply(format_eval_reply(reply_of(preset(1, false), r)));
     EXPECT_EQ(bits(e.fitness), bits(r.fitness));
     EXPECT_TRUE(e.failed);
     EXPECT_EQ(e.failure, r.failure);
+    EXPECT_EQ(e.distance, 0.0);   // a failed evaluation walked nowhere
+    // Eq. 7.1's terms travel exactly: distance along the preferred axis (y for R1), elevation.
+    EvalResult walked;
+    walked.start = {0.1, 0.2, 0.3};
+    walked.end = {0.7, -1.0 / 3.0, 0.25};
+    walked.fitness = 0.5;
+    const EvalReply w = parse_eval_reply(format_eval_reply(reply_of(preset(1, false), walked)));
+    EXPECT_EQ(bits(w.distance), bits(std::fabs(-1.0 / 3.0 - 0.2)));
+    EXPECT_EQ(bits(w.elevation), bits(0.25 - 0.3));
+    EXPECT_EQ(bits(w.fitness), bits(0.5));
     EXPECT_THROW(parse_eval_reply("fitness abc\nfailed 0\n"), std::invalid_argument);
     std::stringstream bad("robot 2 0 y x\nmodule 0 0 0 fixed none a\nmodule 1 0 0 w -x b\n");
     EXPECT_THROW(read_robot_text(bad), std::invalid_argument);

@@ -25,6 +25,7 @@ void add_sweep_command(Command& app, CommandContext& ctx);      // cmd_sweep.cpp
 void add_assess_command(Command& app, CommandContext& ctx);     // cmd_assess.cpp
 void add_resume_command(Command& app, CommandContext& ctx);     // cmd_resume.cpp
 void add_export_command(Command& app, CommandContext& ctx);     // cmd_export.cpp
+void add_eval_command(Command& app, CommandContext& ctx);       // cmd_eval.cpp
 #ifdef CIC_HAVE_VIEWER
 void add_view_command(Command& app, CommandContext& ctx);       // cmd_view.cpp
 #endif

@@ -28,4 +28,10 @@ private:
     std::string message_;
 };
 
+// A batch stopped on request (PoolOptions::interrupted): no result, no worker left.
+class Interrupted : public std::runtime_error {
+public:
+    Interrupted() : std::runtime_error("interrupted") {}
+};
+
 } // namespace cic

@@ -17,6 +17,10 @@ struct PoolOptions {
     std::vector<std::string> argv;      // command that starts one worker (argv[0] = executable path)
     double timeout_seconds = 120.0;     // per job
     int retries = 1;                    // extra attempts after a crash or hang
+    // Asked about every 50 ms while a batch runs (e.g. Python's Ctrl-C check);
+    // true ends every worker at once and run() throws cic::Interrupted. The
+    // next run() starts fresh workers.
+    std::function<bool()> interrupted = {};
 };
 
 // JobResult is declared in job_runner.hpp.

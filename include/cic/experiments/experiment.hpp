@@ -25,6 +25,9 @@ struct Context {
     // Where an experiment reports trouble that does not stop the run (a worker
     // replaced, a job retried or scored as failed): run.log and the console.
     std::function<void(const std::string&)> warn = [](const std::string&) {};
+    // Worker processes ask it during a batch; true stops the batch
+    // (core/process_pool.hpp PoolOptions::interrupted). Python's Ctrl-C.
+    std::function<bool()> interrupted = {};
 };
 
 class Experiment {

@@ -10,12 +10,14 @@ namespace cic::app {
 
 // The folders searched, in order, when `given` is not found as given:
 // <exe dir>/../share/cic/settings, then CIC_SOURCE_DIR/settings.
-std::vector<std::filesystem::path> settings_search_folders();
+// `cic_binary` stands for the running binary when the caller is not cic itself
+// (the Python package: the cic its workers run); empty = this process's.
+std::vector<std::filesystem::path> settings_search_folders(const std::filesystem::path& cic_binary = {});
 
 // `given` when it names an existing file; else the first folder of
 // settings_search_folders() holding it, announced on stderr as
 // "cic: settings GIVEN: using FULL_PATH". Only a relative `given` is looked
 // up elsewhere. Throws cic::InputError naming every place it looked.
-std::filesystem::path find_settings_file(const std::string& given);
+std::filesystem::path find_settings_file(const std::string& given, const std::filesystem::path& cic_binary = {});
 
 } // namespace cic::app

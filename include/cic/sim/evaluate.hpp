@@ -4,6 +4,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cic/sim/config.hpp"
@@ -17,6 +18,7 @@ struct EvalOptions {
     double record_fps = 0.0;        // > 0: record frames at this rate
     bool record_trace = false;      // record a TraceRow per control step
     bool record_ground = false;     // count, per module, the physics steps it touches the ground
+                                    // (with record_trace, also each row's foot contacts)
 };
 
 struct EvalResult {
@@ -40,6 +42,11 @@ struct EvalResult {
     std::vector<long> module_ground_steps;
     long ground_steps = 0;
 };
+
+// Eq. 7.1's two terms of an evaluation, m: the walk along the robot's preferred
+// axis, |t_p - s_p|, and the elevation its centre gained, t_z - s_z. Their sum
+// is the fitness of a plain evaluation.
+std::pair<double, double> walk_terms(const RobotSpec& robot, const EvalResult& result);
 
 // The end modules of the robot's branches (modules no other module attaches
 // to, the centre excepted), in module order: a legged robot's feet, a snake's

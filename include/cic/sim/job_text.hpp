@@ -27,15 +27,19 @@ double parse_hexfloat(const std::string& s);   // also accepts decimal, "inf"
 
 // The one reply of every evaluation job (sine, gait, hypergp), whether it ran in a
 // worker process or on an MPI rank: fitness (exact), the behaviour descriptor
-// when the job asked for one, failed flag, failure text.
+// when the job asked for one, eq. 7.1's two terms, failed flag, failure text.
 struct EvalReply {
     double fitness = 0.0;
     std::vector<double> descriptor;   // the behaviour descriptor the job asked for (empty when failed)
     bool failed = false;
     std::string failure;   // the rest of the reply (may span lines)
+    // Eq. 7.1's terms (walk_terms, sim/evaluate.hpp), whatever the fitness is made of
+    // (a registered type may score otherwise): 0 when failed.
+    double distance = 0.0, elevation = 0.0;
 };
 std::string format_eval_reply(const EvalReply& r);
-std::string format_eval_reply(const EvalResult& r);
+// The reply of an evaluation of `robot`: its fitness, eq. 7.1's terms and `descriptor`.
+EvalReply reply_of(const RobotSpec& robot, const EvalResult& r, std::vector<double> descriptor = {});
 EvalReply parse_eval_reply(const std::string& text);
 
 // Job kind "sine": the first line is "sine", then robot, config and joints.

@@ -36,6 +36,10 @@ struct TraceRow {
     std::vector<double> desired;   // commanded angles after clamping
     std::vector<double> actual;    // measured joint angles
     std::array<double, 3> centre{};
+    // With EvalOptions::record_ground: for each branch end (evaluate.hpp's
+    // branch_ends, the feet), 1 when it touched the ground in any physics step
+    // of this control step.
+    std::vector<unsigned char> feet_on_ground;
 };
 
 } // namespace cic::sim

@@ -33,6 +33,8 @@ struct CpgEncoding {
     std::size_t dimension() const { return joints + edges.size() + (feedback_scale > 0 ? joints : 0); }
     // Throws std::invalid_argument when x.size() != dimension() or x holds a non-finite value.
     sim::CpgSpec decode(std::span<const double> x) const;
+    // The point of the unit box that decodes to the same CPG, bit for bit (Encoding::in_box).
+    std::vector<double> in_box(std::span<const double> x) const;
 };
 
 } // namespace cic::gait

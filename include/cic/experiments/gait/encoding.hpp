@@ -17,6 +17,7 @@
 // libcmaes' pwqBoundStrategy are smoothed versions of it).
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "cic/sim/controller.hpp"
 
@@ -39,6 +40,10 @@ struct Encoding {
     std::size_t dimension() const { return 1 + joints * per_joint(); }
     // Throws std::invalid_argument when x.size() != dimension() or x holds a non-finite value.
     sim::GaitSpec decode(std::span<const double> x) const;
+    // The point of the unit box that decodes to the same gait, bit for bit:
+    // each parameter read as decode reads it (Bounds; a phase wrapped). How an
+    // optimiser's raw point is handed to someone who works in the box (Python).
+    std::vector<double> in_box(std::span<const double> x) const;
 };
 
 // A sampled coordinate read into [0, 1] as `bounds` says.

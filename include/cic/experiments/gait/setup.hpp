@@ -35,6 +35,8 @@ struct Setup {
     // Of the encoding Gait.controller chooses.
     std::size_t dimension() const { return cpg ? cpg->dimension() : encoding.dimension(); }
     std::unique_ptr<sim::Controller> controller(std::span<const double> x) const;
+    // The unit-box point with the same controller, bit for bit (Encoding::in_box).
+    std::vector<double> in_box(std::span<const double> x) const { return cpg ? cpg->in_box(x) : encoding.in_box(x); }
     // One line: the frequency and each joint's parameters, or the CPG's weights.
     std::string describe(std::span<const double> x) const;
 
@@ -64,11 +66,11 @@ public:
     std::vector<gp::Evaluation> described(const std::vector<std::vector<double>>& xs,
                                           sim::Descriptor descriptor = sim::Descriptor::DutyFactor);
     long failed() const { return failed_; }   // evaluations that failed (physics or worker)
+    // Each point's whole reply (fitness, eq. 7.1's terms, descriptor); a job the
+    // runner could not run scores the failure fitness. The Python bindings' path.
+    std::vector<sim::EvalReply> replies(const std::vector<std::vector<double>>& xs, sim::Descriptor descriptor);
 
 private:
-    // Each point's reply; a job the runner could not run scores the failure fitness.
-    std::vector<sim::EvalReply> run(const std::vector<std::vector<double>>& xs, sim::Descriptor descriptor);
-
     const Setup& setup_;
     std::function<void(const std::string&)> warn_;
     std::unique_ptr<JobRunner> runner_;

@@ -59,7 +59,9 @@ struct Job {
 };
 std::string job_body(const tree::Forest& genotype, sim::Descriptor descriptor = sim::Descriptor::None);
 Job parse_job_body(const std::string& body);   // throws std::invalid_argument
-sim::EvalReply to_reply(const Outcome& o, std::vector<double> descriptor = {});
+// The reply of an evaluation of `m`'s robot: eq. 7.1's terms come from the walk,
+// whatever score the fitness is.
+sim::EvalReply to_reply(const Model& m, const Outcome& o, std::vector<double> descriptor = {});
 
 // A fitness other than eq. 7.1 for the same simulation (a registered type's
 // own, examples/plugin): called for each evaluation that did not fail, with

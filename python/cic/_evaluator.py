@@ -1,0 +1,227 @@
+"""Evaluator and simulate: cic's robots scored from Python, to the last bit of a run.
+
+Every number comes from cic's own C++ code (cic._core over the run layer's
+EvaluationSession): the same job texts and ``cic worker`` processes as a run of
+the same settings, so ODE's process-global state is handled as it is there.
+"""
+
+import warnings
+
+import numpy as np
+
+from . import _core, _paths
+
+
+class CicWarning(RuntimeWarning):
+    """Trouble that does not stop a batch: a worker replaced, a job retried or scored as failed."""
+
+
+def _overrides(set):
+    """A dict of 'Section.key' -> value as cic's --set texts (checked by cic, exactly like --set)."""
+    if set is None:
+        return []
+    if not isinstance(set, dict):
+        raise ValueError(f"set must be a dict of 'Section.key' -> value, got {type(set).__name__}")
+    out = []
+    for key, value in set.items():
+        if not isinstance(key, str):
+            raise ValueError(f"set: keys are 'Section.key' strings, got {key!r}")
+        if isinstance(value, bool):
+            value = int(value)
+        out.append(f"{key}={value}")
+    return out
+
+
+class Evaluation:
+    """The scores of one batch, one entry per genotype in batch order.
+
+    fitness    the run's score (with the oscillation penalty or a type's own score where the settings have one)
+    distance   eq. 7.1's walk along the robot's preferred axis, m (0 when failed)
+    elevation  eq. 7.1's elevation gained by the centre module, m (0 when failed)
+    failed     bool array: the physics failed or the worker could not run it (fitness is then Simulator.failureFitness)
+    failure    why, per genotype ('' when it did not fail)
+    descriptor (n, d) array of behaviour descriptors when the settings ask for one (MapElites), else None;
+               a failed evaluation's row is NaN
+    """
+
+    def __init__(self, d):
+        self.fitness = d["fitness"]
+        self.distance = d["distance"]
+        self.elevation = d["elevation"]
+        self.failed = d["failed"]
+        self.failure = list(d["failure"])
+        self.descriptor = d.get("descriptor")
+
+    def __len__(self):
+        return len(self.fitness)
+
+    def __repr__(self):
+        best = f", best {self.fitness.max():.6g}" if len(self) else ""
+        return f"<cic.Evaluation of {len(self)} genotypes{best}>"
+
+    def to_dataframe(self):
+        """The scores as a pandas DataFrame (descriptor columns d0, d1, ... when there are any)."""
+        import pandas as pd
+
+        frame = pd.DataFrame({"fitness": self.fitness, "distance": self.distance, "elevation": self.elevation,
+                              "failed": self.failed, "failure": self.failure})
+        if self.descriptor is not None:
+            for j in range(self.descriptor.shape[1]):
+                frame[f"d{j}"] = self.descriptor[:, j]
+        return frame
+
+
+class Simulation:
+    """The whole of one evaluation (cic.simulate): per control step of Simulator.sample_step seconds,
+
+    time     (n,)          s
+    centre   (n, 3)        the centre module's position x, y, z, m
+    angles   (n, joints)   each actuated joint's measured angle, rad (joint_names gives the order)
+    targets  (n, joints)   each joint's commanded angle after the simulator's clamp, rad
+    feet     (n, feet)     bool: the foot (a branch end, foot_names) touched the ground during the step
+
+    and fitness, distance, elevation, failed, failure as in Evaluation. Without trace the arrays have no rows.
+    """
+
+    def __init__(self, d):
+        for key in ("fitness", "distance", "elevation", "failed", "failure", "time", "centre", "angles", "targets"):
+            setattr(self, key, d[key])
+        self.feet = d["feet"].astype(bool)
+        self.joint_names = list(d["joint_names"])
+        self.foot_names = list(d["foot_names"])
+
+    def __repr__(self):
+        return (f"<cic.Simulation fitness {self.fitness:.6g}, {len(self.time)} steps, "
+                f"{len(self.joint_names)} joints, {len(self.foot_names)} feet>")
+
+
+class Evaluator:
+    """Scores batches of genotypes for one settings file.
+
+    >>> with cic.Evaluator("r1_gait_ipop.xml", workers=2) as ev:
+    ...     scores = ev.evaluate(np.random.default_rng(1).random((8, ev.dimension)))
+
+    settings_path  found like ``cic --settings`` (as given, else among the installed settings)
+    workers        ``cic worker`` processes (1 or N give identical arrays)
+    set            {'Section.key': value} overrides, checked exactly like ``--set``
+
+    Bad input raises ValueError with cic's message. A worker that dies is replaced
+    and its job retried, as in a run (a CicWarning says so). Ctrl-C during a batch
+    raises KeyboardInterrupt and ends the workers; the next batch starts new ones.
+    One Evaluator may be shared by threads: its calls run one at a time, with the
+    GIL released while a batch runs.
+    """
+
+    def __init__(self, settings_path, workers=1, set=None):
+        if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)):
+            raise ValueError(f"workers must be a whole number >= 1, got {workers!r}")
+        self._session = _core.Session(str(settings_path), int(workers), _overrides(set), _paths.executable())
+        self.form = self._session.form                  # 'vector' (gait, CPG) or 'forest' (HyperGP trees)
+        self.dimension = self._session.dimension        # a vector's length, or the trees of a forest
+        self.workers = self._session.workers
+        self.settings_file = self._session.settings_file   # the file found
+        self.experiment = self._session.experiment      # Experiment.type
+        self.descriptor = self._session.descriptor      # 'none' or the MapElites descriptor
+        self._closed = False
+
+    # --- context manager ---------------------------------------------------------------
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:
+            pass
+
+    def close(self):
+        """Ends the worker processes (also at the end of a with block)."""
+        if not getattr(self, "_closed", True):
+            self._closed = True
+            self._session.close()
+
+    def __repr__(self):
+        return (f"<cic.Evaluator {self.experiment} ({self.form} of {self.dimension}) from {self.settings_file}, "
+                f"{self.workers} worker{'s' if self.workers != 1 else ''}>")
+
+    # --- scoring -------------------------------------------------------------------------
+    def evaluate(self, batch):
+        """Scores a batch: a 2-D array or list of unit-box vectors (gait, CPG), or a list of
+        S-expression strings / lists of strings (HyperGP trees, one list per forest). Returns an Evaluation."""
+        if self._closed:
+            raise ValueError("this Evaluator is closed")
+        if self.form == "vector":
+            result = self._session.evaluate_vectors(_vector_batch(batch, self.dimension))
+        else:
+            result = self._session.evaluate_forests(_forest_batch(batch))
+        for line in self._session.take_warnings():
+            warnings.warn(line, CicWarning, stacklevel=2)
+        return Evaluation(result)
+
+    def simulate(self, genotype, trace=True):
+        """The whole evaluation of one genotype, in this process (see cic.simulate)."""
+        if self._closed:
+            raise ValueError("this Evaluator is closed")
+        return _simulate(self._session, self.form, genotype, trace)
+
+
+def _vector_batch(batch, dimension):
+    if isinstance(batch, (str, bytes)):
+        raise ValueError("a batch of gait vectors is a 2-D array or a list of vectors, not a string")
+    try:
+        arr = np.asarray(batch)
+    except ValueError as e:   # ragged lists
+        raise ValueError(f"a batch of gait vectors must be rectangular (every vector {dimension} numbers): {e}") from None
+    if arr.size == 0 and arr.ndim <= 2:
+        return np.zeros((0, dimension))
+    if arr.dtype.kind not in "fiu":
+        raise ValueError(f"a batch of gait vectors holds real numbers; got dtype {arr.dtype}")
+    if arr.ndim != 2:
+        hint = " (one genotype: pass [x])" if arr.ndim == 1 else ""
+        raise ValueError(f"a batch of gait vectors is 2-D, one row per genotype; got {arr.ndim}-D, shape {arr.shape}{hint}")
+    return np.ascontiguousarray(arr, dtype=np.float64)
+
+
+def _forest_batch(batch):
+    if isinstance(batch, (str, bytes)):
+        raise ValueError("a batch is a list of genotypes; for one tree pass [tree]")
+    if isinstance(batch, np.ndarray) and batch.dtype.kind in "fiub":
+        raise ValueError("these settings evolve HyperGP trees: a genotype is an S-expression string or a list of them")
+    forests = []
+    for i, g in enumerate(batch):
+        if isinstance(g, str):
+            forests.append([g])
+        elif isinstance(g, (list, tuple)) and all(isinstance(t, str) for t in g):
+            forests.append(list(g))
+        else:
+            raise ValueError(f"genotype {i}: a HyperGP genotype is an S-expression string or a list of them "
+                             f"(a forest), got {type(g).__name__}")
+    return forests
+
+
+def _simulate(session, form, genotype, trace):
+    if form == "vector":
+        if isinstance(genotype, (str, bytes)):
+            raise ValueError("these settings evolve gait vectors: a genotype is a sequence of numbers")
+        arr = np.asarray(genotype)
+        if arr.dtype.kind not in "fiu" or arr.ndim != 1:
+            raise ValueError(f"a gait genotype is a 1-D sequence of numbers; got dtype {arr.dtype}, shape {arr.shape}")
+        return Simulation(session.simulate(arr.astype(np.float64).tolist(), [], bool(trace)))
+    trees = _forest_batch([genotype])[0]
+    return Simulation(session.simulate([], trees, bool(trace)))
+
+
+def simulate(settings_path, genotype, trace=True, set=None):
+    """The whole evaluation of one genotype for these settings, in this process: a Simulation with the
+    time, the centre's path, joint angles and targets and each foot's contacts, as numpy arrays, and
+    the fitness a run would give it (bit for bit). What a fitness of your own, such as walking in a
+    circle, needs."""
+    session = _core.Session(str(settings_path), 1, _overrides(set), _paths.executable())
+    try:
+        return _simulate(session, session.form, genotype, trace)
+    finally:
+        session.close()

@@ -1,0 +1,315 @@
+// Scoring genotypes from outside a run (cic/run/evaluation_session.hpp): the
+// settings' own experiment wiring, job texts and worker processes.
+#include "cic/run/evaluation_session.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <system_error>
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "cic/core/error.hpp"
+#include "cic/core/job_runner.hpp"
+#include "cic/experiments/experiment.hpp"
+#include "cic/experiments/gait/setup.hpp"
+#include "cic/experiments/hypergp/model.hpp"
+#include "cic/experiments/registry.hpp"
+#include "cic/gp/individual.hpp"
+#include "cic/io/archive_xml.hpp"
+#include "cic/io/experiment_types.hpp"
+#include "cic/io/gait_xml.hpp"
+#include "cic/io/population_xml.hpp"
+#include "cic/io/settings_io.hpp"
+#include "cic/io/xml.hpp"
+#include "cic/run/settings_lookup.hpp"
+#include "cic/sim/job_text.hpp"
+#include "cic/tree/primitives.hpp"
+#include "cic/tree/tree.hpp"
+
+namespace cic::app {
+namespace fs = std::filesystem;
+
+namespace {
+
+// A private folder for the effective settings the workers read.
+fs::path make_private_folder() {
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = (tmp && *tmp ? std::string(tmp) : std::string("/tmp")) + "/cic-eval-XXXXXX";
+    if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot make a folder for the workers' settings in " + pattern);
+    return pattern;
+}
+
+// The job kind a HyperGP-family type's workers serve: its own name's, or its only one.
+std::string job_kind_of(const io::Settings& s) {
+    const experiments::ExperimentKind& kind = experiments::experiment_kind(s.experiment.type);
+    if (kind.job_kinds.count(kind.type.name)) return kind.type.name;
+    if (kind.job_kinds.size() == 1) return kind.job_kinds.begin()->first;
+    throw InputError("experiment type '" + kind.type.name + "' serves no single job kind to evaluate genotypes with");
+}
+
+std::vector<std::string> joint_names_of(const sim::RobotSpec& robot) {
+    std::vector<std::string> names;
+    for (int m : robot.actuated()) {
+        const auto& mod = robot.modules[static_cast<std::size_t>(m)];
+        names.push_back(mod.name.empty() ? fmt::format("m{}", m) : mod.name);
+    }
+    return names;
+}
+
+} // namespace
+
+struct EvaluationSession::Impl {
+    SessionOptions opt;
+    fs::path found;
+    io::Settings settings;
+    fs::path folder;                       // the workers' settings.xml lives here
+    GenotypeForm form = GenotypeForm::Vector;
+    sim::Descriptor descriptor = sim::Descriptor::None;
+    std::optional<gait::Setup> setup;      // gait family
+    std::optional<hypergp::Model> model;   // HyperGP family
+    std::optional<tree::PrimitiveSet> primitives;
+    std::string job_kind;
+    std::unique_ptr<experiments::Context> ctx;
+    std::unique_ptr<gait::Evaluator> gait_evaluator;
+    std::unique_ptr<JobRunner> runner;
+    bool closed = false;
+
+    const sim::RobotSpec& robot() const { return setup ? setup->robot : model->robot; }
+
+    // Throws InputError naming the genotype's place in the batch.
+    void check(const Genotype& g, std::size_t index) const {
+        const std::string who = fmt::format("genotype {}", index);
+        if (form == GenotypeForm::Vector) {
+            if (!g.trees.empty())
+                throw InputError(who + ": these settings evolve " + settings.experiment.type +
+                                 " vectors of numbers, not trees (S-expressions)");
+            if (g.vector.size() != setup->dimension())
+                throw InputError(fmt::format("{}: {} values, but these settings' {} has {} (robot {})", who,
+                                             g.vector.size(), setup->cpg ? "CPG" : "gait", setup->dimension(),
+                                             setup->robot.name));
+            for (std::size_t i = 0; i < g.vector.size(); ++i)
+                if (!std::isfinite(g.vector[i]) || g.vector[i] < 0.0 || g.vector[i] > 1.0)
+                    throw InputError(fmt::format("{}: value {} is {}, outside the unit box [0, 1] the gait family "
+                                                 "searches", who, i, g.vector[i]));
+            return;
+        }
+        if (!g.vector.empty())
+            throw InputError(who + ": these settings evolve HyperGP trees (S-expressions), not vectors of numbers");
+        if (g.trees.size() != dimension())
+            throw InputError(fmt::format("{}: {} tree{}, but GP.numberOfTreesInForestGenotype is {}", who,
+                                         g.trees.size(), g.trees.size() == 1 ? "" : "s", dimension()));
+    }
+
+    tree::Forest forest_of(const Genotype& g, std::size_t index) const {
+        tree::Forest f;
+        for (std::size_t t = 0; t < g.trees.size(); ++t) {
+            try {
+                f.push_back(tree::Tree::parse(g.trees[t], &*primitives));
+            } catch (const InputError& e) {
+                throw InputError(fmt::format("genotype {}, tree {}: {}", index, t, e.message()));
+            }
+        }
+        return f;
+    }
+
+    std::size_t dimension() const {
+        return form == GenotypeForm::Vector ? setup->dimension()
+                                            : static_cast<std::size_t>(settings.gp.trees_per_genotype);
+    }
+};
+
+EvaluationSession::EvaluationSession(SessionOptions options) : impl_(std::make_unique<Impl>()) {
+    Impl& im = *impl_;
+    im.opt = std::move(options);
+    if (im.opt.workers < 1) throw InputError(fmt::format("workers must be at least 1, got {}", im.opt.workers));
+    im.found = find_settings_file(im.opt.settings_file, im.opt.worker_executable);   // the installed settings beside it
+    im.settings = io::load_settings(im.found, im.opt.overrides);
+    const io::Settings& s = im.settings;
+    if (io::family_of(s) == io::ExperimentFamily::Symreg)
+        throw InputError("scores robot experiments (HyperGP, gait, CPG and their types); these settings are symbolic "
+                         "regression (Experiment.type " + s.experiment.type + ")", im.found.string());
+    experiments::check_inputs(s);   // the robot and every input a run of them reads
+    if (s.map_elites.enabled) im.descriptor = s.map_elites.descriptor;
+    if (io::family_of(s) == io::ExperimentFamily::Gait) {
+        im.form = GenotypeForm::Vector;
+        im.setup.emplace(gait::Setup::from_settings(s));
+    } else {
+        im.form = GenotypeForm::Forest;
+        im.model.emplace(hypergp::Model::from_settings(s));
+        im.primitives.emplace(s.gp.primitives);
+        im.job_kind = job_kind_of(s);
+    }
+    im.folder = make_private_folder();
+    try {
+        const fs::path effective = im.folder / "settings.xml";
+        io::xml::write_file_atomically(effective, io::write_settings(s));
+        const fs::path base = s.source_file.empty() ? fs::current_path() : fs::path(s.source_file).parent_path();
+        im.ctx = std::make_unique<experiments::Context>(
+            experiments::Context{s, base, effective, im.opt.worker_executable, im.opt.workers});
+        im.ctx->warn = im.opt.warn;
+        im.ctx->interrupted = im.opt.interrupted;
+        // The workers start with the first batch (simulate() needs none); a
+        // binary that cannot serve them is said now.
+        if (::access(im.opt.worker_executable.c_str(), X_OK) != 0)
+            throw std::runtime_error("cannot execute the cic binary for worker processes: '" +
+                                     im.opt.worker_executable + "'");
+    } catch (...) {
+        std::error_code ec;
+        fs::remove_all(im.folder, ec);
+        throw;
+    }
+}
+
+EvaluationSession::~EvaluationSession() { close(); }
+
+void EvaluationSession::close() {
+    Impl& im = *impl_;
+    if (im.closed) return;
+    im.closed = true;
+    im.gait_evaluator.reset();   // ends the workers
+    im.runner.reset();
+    std::error_code ec;
+    fs::remove_all(im.folder, ec);
+}
+
+const io::Settings& EvaluationSession::settings() const { return impl_->settings; }
+fs::path EvaluationSession::settings_file() const { return impl_->found; }
+GenotypeForm EvaluationSession::form() const { return impl_->form; }
+std::size_t EvaluationSession::dimension() const { return impl_->dimension(); }
+int EvaluationSession::workers() const { return impl_->opt.workers; }
+
+void EvaluationSession::check(const Genotype& g, std::size_t index) const {
+    impl_->check(g, index);
+    if (impl_->form == GenotypeForm::Forest) (void)impl_->forest_of(g, index);
+}
+
+Scores EvaluationSession::evaluate(const std::vector<Genotype>& batch) {
+    Impl& im = *impl_;
+    if (im.closed) throw std::runtime_error("the evaluator is closed");
+    for (std::size_t i = 0; i < batch.size(); ++i) check(batch[i], i);
+    Scores out;
+    if (batch.empty()) return out;
+    if (!im.gait_evaluator && !im.runner) {
+        if (im.setup)
+            im.gait_evaluator = std::make_unique<gait::Evaluator>(*im.ctx, *im.setup);
+        else
+            im.runner = experiments::make_job_runner(*im.ctx);
+    }
+    std::vector<sim::EvalReply> replies;
+    if (im.form == GenotypeForm::Vector) {
+        std::vector<std::vector<double>> xs;
+        for (const Genotype& g : batch) xs.push_back(g.vector);
+        replies = im.gait_evaluator->replies(xs, im.descriptor);
+    } else {
+        // The run's own job texts (hypergp::job_body), parsed first so a bad tree fails the batch before it runs.
+        std::vector<std::string> jobs;
+        for (std::size_t i = 0; i < batch.size(); ++i)
+            jobs.push_back(im.job_kind + "\n" + hypergp::job_body(im.forest_of(batch[i], i), im.descriptor));
+        const std::vector<JobResult> results = im.runner->run(jobs);
+        for (const auto& note : im.runner->take_notes()) im.opt.warn("warning: " + note);
+        for (std::size_t i = 0; i < results.size(); ++i) {
+            const JobResult& r = results[i];
+            for (const auto& t : r.trouble) im.opt.warn(fmt::format("warning: genotype {}: {}", i, t));
+            if (r.ok) {
+                replies.push_back(sim::parse_eval_reply(r.output));
+            } else {   // as a run scores it (experiments/hypergp_experiment.cpp)
+                replies.push_back(sim::EvalReply{im.model->sim.failure_fitness, {}, true, "worker: " + r.error});
+                im.opt.warn(fmt::format("warning: genotype {} scored as failed (fitness {}): {}", i,
+                                        im.model->sim.failure_fitness, r.error));
+            }
+        }
+    }
+    for (sim::EvalReply& r : replies) {
+        out.fitness.push_back(r.fitness);
+        out.distance.push_back(r.distance);
+        out.elevation.push_back(r.elevation);
+        out.descriptor.push_back(std::move(r.descriptor));
+        out.failed.push_back(r.failed ? 1 : 0);
+        out.failure.push_back(std::move(r.failure));
+    }
+    return out;
+}
+
+Walk EvaluationSession::simulate(const Genotype& g, bool trace) const {
+    const Impl& im = *impl_;
+    im.check(g, 0);
+    sim::EvalOptions options;
+    options.record_trace = trace;
+    options.record_ground = trace || sim::needs_ground(im.descriptor);
+    Walk w;
+    sim::EvalResult r;
+    if (im.form == GenotypeForm::Vector) {
+        const auto controller = im.setup->controller(g.vector);
+        r = sim::evaluate(im.setup->robot, *controller, im.setup->sim, options);
+        w.fitness = r.fitness;
+    } else {
+        hypergp::Outcome o = hypergp::run(*im.model, im.forest_of(g, 0), options);
+        w.fitness = o.fitness;   // with the oscillation penalty, as the run scores it
+        r = std::move(o.result);
+    }
+    const sim::RobotSpec& robot = im.robot();
+    w.failed = r.failed;
+    w.failure = r.failure;
+    if (!r.failed) std::tie(w.distance, w.elevation) = sim::walk_terms(robot, r);
+    w.joint_names = joint_names_of(robot);
+    for (int m : sim::branch_ends(robot)) {
+        const std::string& name = robot.modules[static_cast<std::size_t>(m)].name;
+        w.foot_names.push_back(name.empty() ? fmt::format("m{}", m) : name);
+    }
+    for (const sim::TraceRow& row : r.trace) {
+        w.time.push_back(row.t);
+        w.centre.insert(w.centre.end(), row.centre.begin(), row.centre.end());
+        w.angles.insert(w.angles.end(), row.actual.begin(), row.actual.end());
+        w.targets.insert(w.targets.end(), row.desired.begin(), row.desired.end());
+        w.feet.insert(w.feet.end(), row.feet_on_ground.begin(), row.feet_on_ground.end());
+    }
+    return w;
+}
+
+RunBest read_run_best(const fs::path& run_dir) {
+    if (!fs::is_directory(run_dir)) throw InputError("no such run folder", run_dir.string());
+    RunBest best;
+    best.settings = run_dir / "settings.xml";
+    const fs::path population = run_dir / "population.xml";
+    if (!fs::exists(best.settings)) throw InputError("not a run folder: it has no settings.xml", run_dir.string());
+    if (!fs::exists(population))
+        throw InputError("the run has no population.xml yet (has it finished a generation?)", run_dir.string());
+    const io::Settings s = io::read_settings(best.settings);
+    if (io::family_of(s) == io::ExperimentFamily::Symreg)
+        throw InputError("a symbolic-regression run: only robot runs have a genotype to evaluate", run_dir.string());
+    if (s.map_elites.enabled) {
+        const io::ArchiveFile a = io::load_archive(population);
+        const io::ArchiveElite* e = a.best();
+        if (!e) throw InputError("the archive holds no elite (every evaluation failed)", population.string());
+        best.fitness = e->fitness;
+        best.generation = a.batches - 1;
+        best.form = e->genotype.empty() ? GenotypeForm::Vector : GenotypeForm::Forest;
+        if (best.form == GenotypeForm::Vector) best.genotype.vector = gait::Setup::from_settings(s).in_box(e->x);
+        for (const auto& t : e->genotype) best.genotype.trees.push_back(t.to_string());
+        return best;
+    }
+    if (io::family_of(s) == io::ExperimentFamily::Gait) {
+        const io::GaitFile g = io::load_gait(population);
+        best.form = GenotypeForm::Vector;
+        best.genotype.vector = gait::Setup::from_settings(s).in_box(g.champion.x);
+        best.fitness = g.champion.fitness;
+        best.generation = g.generation;
+        return best;
+    }
+    const io::PopulationFile p = io::load_population(population);
+    io::check_compatible(p, s, population.string());
+    const gp::IndividualPtr* top = nullptr;
+    for (const auto& ind : p.population.individuals)
+        if (!top || gp::better(*ind, **top)) top = &ind;
+    if (!top) throw InputError("the population is empty", population.string());
+    best.form = GenotypeForm::Forest;
+    for (const auto& t : (*top)->genotype) best.genotype.trees.push_back(t.to_string());
+    best.fitness = (*top)->fitness;
+    best.generation = p.population.generation;
+    return best;
+}
+
+} // namespace cic::app

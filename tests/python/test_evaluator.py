@@ -1,0 +1,230 @@
+"""cic.Evaluator, cic.simulate and cic.read_run: the same bits as cic's own runs (issue 37)."""
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import threading
+import time
+import warnings
+
+import numpy as np
+import pytest
+
+import cic
+from conftest import SOURCE, children_of
+
+R1_GAIT = os.path.join(SOURCE, "settings", "r1_gait.xml")
+QUICK = {"Simulator.sample_to": 3, "Simulator.delayed_start": 0.5}
+
+
+def bits(a):
+    return np.asarray(a, dtype=np.float64).view(np.uint64)
+
+
+# --- the same bits as a run ---------------------------------------------------------
+
+@pytest.mark.parametrize("family", ["gait", "cpg", "hypergp", "forest", "map_elites"])
+def test_best_genotype_scores_its_stored_fitness_to_the_last_bit(runs, family):
+    run = cic.read_run(runs[family])
+    with cic.Evaluator(run.settings, workers=1) as ev:
+        scores = ev.evaluate([run.best_genotype])
+    assert bits(scores.fitness[0]) == bits(run.best_fitness), (scores.fitness[0], run.best_fitness)
+    assert not scores.failed[0]
+    if family == "map_elites":
+        assert scores.descriptor.shape == (1, 4)   # R1's four feet: duty factors
+        assert ((scores.descriptor >= 0) & (scores.descriptor <= 1)).all()
+    else:
+        assert scores.descriptor is None
+
+
+@pytest.mark.parametrize("family", ["gait", "hypergp"])
+def test_distance_and_elevation_are_eq71_terms_of_the_fitness(runs, family):
+    run = cic.read_run(runs[family])
+    with cic.Evaluator(run.settings) as ev:
+        s = ev.evaluate([run.best_genotype])
+    assert s.distance[0] >= 0
+    assert s.distance[0] + s.elevation[0] == s.fitness[0]   # no penalty in these settings
+
+
+def test_read_run_gives_stats_as_a_dataframe(runs):
+    run = cic.read_run(runs["gait"])
+    assert list(run.stats.columns[:3]) == ["generation", "best", "mean"]
+    assert len(run.stats) == 5   # 40 evaluations in generations of 8
+    assert isinstance(run.best_genotype, np.ndarray) and run.best_genotype.ndim == 1
+    forest = cic.read_run(runs["forest"])
+    assert isinstance(forest.best_genotype, list) and len(forest.best_genotype) == 2
+    assert isinstance(cic.read_run(runs["hypergp"]).best_genotype, str)
+
+
+def test_one_and_two_workers_give_identical_arrays():
+    xs = np.random.default_rng(7).random((10, 37))
+    with cic.Evaluator(R1_GAIT, workers=1, set=QUICK) as one, cic.Evaluator(R1_GAIT, workers=2, set=QUICK) as two:
+        a, b = one.evaluate(xs), two.evaluate(xs)
+        c = two.evaluate(list(xs))   # a list of vectors is the same batch
+    for key in ("fitness", "distance", "elevation"):
+        assert (bits(getattr(a, key)) == bits(getattr(b, key))).all()
+        assert (bits(getattr(a, key)) == bits(getattr(c, key))).all()
+    assert len(set(a.fitness)) > 1   # ten different gaits, not one number ten times
+
+
+def test_simulate_returns_the_whole_walk_with_the_runs_fitness(runs):
+    run = cic.read_run(runs["gait"])
+    walk = cic.simulate(run.settings, run.best_genotype)
+    assert bits(walk.fitness) == bits(run.best_fitness)
+    steps = len(walk.time)
+    assert steps == 240   # 3 s at 0.0125 s
+    assert walk.centre.shape == (steps, 3)
+    assert walk.angles.shape == walk.targets.shape == (steps, 12)
+    assert walk.feet.shape == (steps, 4) and walk.feet.dtype == bool
+    assert walk.feet.any() and not walk.feet.all()   # feet touch and lift
+    assert walk.joint_names and walk.foot_names
+    # The centre's path gives eq. 7.1's distance: along y for R1, from the delayed start on.
+    start = int(round(0.5 / 0.0125))
+    assert abs(abs(walk.centre[-1, 1] - walk.centre[start, 1]) - walk.distance) < 0.05
+    quiet = cic.simulate(run.settings, run.best_genotype, trace=False)
+    assert bits(quiet.fitness) == bits(walk.fitness) and len(quiet.time) == 0
+
+
+def test_simulate_a_hypergp_forest(runs):
+    run = cic.read_run(runs["forest"])
+    walk = cic.simulate(run.settings, run.best_genotype)
+    assert bits(walk.fitness) == bits(run.best_fitness)
+    assert walk.angles.shape[1] == 8   # R0: four legs of two hinges
+
+
+# --- bad input: a Python exception, never a dead interpreter --------------------------
+
+@pytest.fixture(scope="module")
+def gait_ev():
+    with cic.Evaluator(R1_GAIT, set=QUICK) as ev:
+        yield ev
+
+
+@pytest.mark.parametrize("batch, words", [
+    (np.zeros((2, 36)), "36 values"),
+    (np.zeros(37), "2-D"),
+    (np.zeros((2, 37, 1)), "2-D"),
+    (np.array([["a"] * 37]), "dtype"),
+    (np.full((1, 37), np.nan), "outside the unit box"),
+    (np.full((1, 37), 1.5), "outside the unit box"),
+    ([[0.5] * 37, [0.5] * 36], "rectangular"),
+    (["(add x0 x1)"], "dtype"),
+])
+def test_bad_vector_batches_raise_value_error(gait_ev, batch, words):
+    with pytest.raises(ValueError, match=words):
+        gait_ev.evaluate(batch)
+
+
+def test_an_empty_batch_gives_empty_scores(gait_ev):
+    assert len(gait_ev.evaluate(np.zeros((0, 37)))) == 0
+
+
+def test_bad_trees_raise_value_error(runs):
+    run = cic.read_run(runs["hypergp"])
+    with cic.Evaluator(run.settings) as ev:
+        with pytest.raises(ValueError, match="unknown function.*frobnicate|frobnicate"):
+            ev.evaluate(["(frobnicate x0 x1)"])
+        with pytest.raises(ValueError, match="x9"):
+            ev.evaluate(["(add x0 x9)"])
+        with pytest.raises(ValueError, match="2 trees, but GP.numberOfTreesInForestGenotype is 1"):
+            ev.evaluate([["(add x0 x1)", "x2"]])
+        with pytest.raises(ValueError, match="list of genotypes"):
+            ev.evaluate("(add x0 x1)")
+        with pytest.raises(ValueError, match="S-expression"):
+            ev.evaluate([[0.5, 0.5]])
+
+
+def test_bad_settings_raise_value_error_naming_the_key():
+    with pytest.raises(ValueError, match=r"Gait.*evaluation.*did you mean.*evaluations"):
+        cic.Evaluator(R1_GAIT, set={"Gait.evaluation": 100})
+    with pytest.raises(ValueError, match="sample_step"):
+        cic.Evaluator(R1_GAIT, set={"Simulator.sample_step": -1})
+    with pytest.raises(ValueError, match="no-such-settings.xml"):
+        cic.Evaluator("no-such-settings.xml")
+    with pytest.raises(ValueError, match="workers"):
+        cic.Evaluator(R1_GAIT, workers=0)
+    with pytest.raises(ValueError, match="symbolic regression"):
+        cic.Evaluator(os.path.join(SOURCE, "settings", "symreg_settings.xml"))
+    with pytest.raises(ValueError, match="dict"):
+        cic.Evaluator(R1_GAIT, set=["Gait.evaluations=3"])
+
+
+def test_a_closed_evaluator_refuses_and_leaves_no_worker():
+    ev = cic.Evaluator(R1_GAIT, workers=2, set=QUICK)
+    ev.evaluate(np.full((2, 37), 0.5))
+    assert len(children_of(os.getpid())) >= 2
+    with ev:
+        pass
+    assert children_of(os.getpid()) == []
+    with pytest.raises(ValueError, match="closed"):
+        ev.evaluate(np.full((1, 37), 0.5))
+
+
+def test_a_worker_that_dies_is_replaced_and_its_job_retried():
+    xs = np.random.default_rng(3).random((60, 37))   # 15 s walks: about a second of work to interrupt
+    with cic.Evaluator(R1_GAIT, workers=2) as ev:
+        want = ev.evaluate(xs)
+        got = {}
+        worker = threading.Thread(target=lambda: got.setdefault("s", ev.evaluate(xs)))
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            worker.start()
+            time.sleep(0.3)
+            victims = children_of(os.getpid())
+            assert victims
+            os.kill(victims[0], signal.SIGKILL)
+            worker.join()
+        assert (bits(got["s"].fitness) == bits(want.fitness)).all()
+    # The replaced worker is said, as in a run (warnings go to the process-wide filters).
+    assert any(issubclass(w.category, cic.CicWarning) and "replaced" in str(w.message) for w in caught), \
+        [str(w.message) for w in caught]
+
+
+def test_the_gil_is_released_while_a_batch_runs():
+    xs = np.random.default_rng(5).random((8, 37))
+    with cic.Evaluator(R1_GAIT, workers=1, set=QUICK) as ev:
+        ticks = []
+        done = threading.Event()
+
+        def count():
+            while not done.is_set():
+                ticks.append(1)
+                time.sleep(0.001)
+
+        counter = threading.Thread(target=count)
+        counter.start()
+        start = time.monotonic()
+        ev.evaluate(xs)
+        elapsed = time.monotonic() - start
+        done.set()
+        counter.join()
+    # With the GIL held for the batch the counter could not run at all.
+    assert elapsed > 0.1 and len(ticks) > 20, (elapsed, len(ticks))
+
+
+def test_ctrl_c_during_a_batch_raises_keyboard_interrupt_and_leaves_no_worker(tmp_path):
+    script = tmp_path / "interrupt.py"
+    script.write_text(textwrap.dedent(f"""
+        import os, sys, numpy as np, cic
+        sys.path.insert(0, {os.path.dirname(__file__)!r})
+        from conftest import children_of
+        ev = cic.Evaluator({R1_GAIT!r}, workers=2)
+        print("ready", flush=True)
+        try:
+            ev.evaluate(np.random.default_rng(1).random((400, 37)))
+            print("finished")
+        except KeyboardInterrupt:
+            print("interrupted", len(children_of(os.getpid())), flush=True)
+        s = ev.evaluate(np.full((1, 37), 0.5))   # the next batch starts new workers
+        print("again", len(s))
+    """))
+    p = subprocess.Popen([sys.executable, str(script)], stdout=subprocess.PIPE, text=True, env=os.environ)
+    assert p.stdout.readline().strip() == "ready"
+    time.sleep(1.0)
+    p.send_signal(signal.SIGINT)
+    out, _ = p.communicate(timeout=120)
+    assert p.returncode == 0, out
+    assert "interrupted 0" in out, out
+    assert "again 1" in out, out
