@@ -333,6 +333,18 @@ TEST(Sweep, RunsEveryTaskInItsFolderAndMatchesAPlainRun) {
               0)
         << read_text(dir / "assess.log");
     EXPECT_EQ(lines(read_text(dir / "assess.csv")), 13) << read_text(dir / "assess.csv");
+    // Class 7: a run folder that index.csv does not list (a dropped configuration) is named by export.
+    fs::create_directories(dir / "study/runs/gone/s1");
+    write_text(dir / "study/runs/gone/s1/settings.xml", "<settings/>\n");
+    ASSERT_EQ(run_command("export " + (dir / "study").string() + " --out " + (dir / "export.csv").string(),
+                          dir / "export.log"),
+              0)
+        << read_text(dir / "export.log");
+    EXPECT_NE(read_text(dir / "export.log").find("1 run folder of " + (dir / "study").string() +
+                                                  " is not in its index.csv"),
+              std::string::npos)
+        << read_text(dir / "export.log");
+    fs::remove_all(dir / "study/runs/gone");
     // Run again: nothing left to do.
     ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "again.log"), 0);
     EXPECT_NE(read_text(dir / "again.log").find("0 of 12 runs to do"), std::string::npos) << read_text(dir / "again.log");
