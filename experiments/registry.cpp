@@ -1,5 +1,6 @@
 // The registry of experiment types (registry.hpp).
 #include "cic/experiments/registry.hpp"
+#include "cic/experiments/hypergp/experiment.hpp"
 
 #include <stdexcept>
 
@@ -24,7 +25,17 @@ io::Settings WorkerContext::load_settings() const {
 }
 
 void register_experiment(ExperimentKind kind) {
-    const std::string& name = kind.type.name;
+    const std::string name = kind.type.name;
+    if (kind.score && kind.type.family == io::ExperimentFamily::HyperGP) {
+        // A score is all a type needs: HyperGP's experiment, its jobs scored with it.
+        if (!kind.make) kind.make = [name](const Context& ctx) { return make_hypergp_experiment(ctx, name); };
+        if (kind.job_kinds.empty())
+            kind.job_kinds[name] = [score = kind.score, needs = kind.needs](const WorkerContext& w) {
+                return hypergp::make_job_handler([w] { return w.load_settings(); }, score, needs);
+            };
+    } else if (kind.score) {
+        throw std::invalid_argument("experiment type '" + name + "': a score of its own is for HyperGP-family types");
+    }
     for (const auto& k : kinds()) {
         if (k.type.name == name) throw std::invalid_argument("experiment type '" + name + "' is registered twice");
         for (const auto& [job, _] : kind.job_kinds)
@@ -55,6 +66,16 @@ const ExperimentKind& experiment_kind(std::string_view name) {
         if (k.type.name == name) return k;
     throw std::logic_error("experiment type '" + std::string(name) +
                            "' has no registered behaviour (is its library linked whole?)");
+}
+
+hypergp::Outcome evaluate_as_type(const hypergp::Model& model, const io::Settings& settings,
+                                  const tree::Forest& genotype, sim::EvalOptions options, bool record_control) {
+    const ExperimentKind& kind = experiment_kind(settings.experiment.type);
+    options.record_trace = options.record_trace || kind.needs.trace;
+    options.record_ground = options.record_ground || kind.needs.contacts;
+    hypergp::Outcome o = hypergp::run(model, genotype, options, record_control);
+    hypergp::apply_score(o, kind.score, model, settings);
+    return o;
 }
 
 std::map<std::string, JobHandler> make_job_handlers(const WorkerContext& context) {

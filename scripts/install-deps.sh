@@ -39,6 +39,9 @@ MORE_PACKAGES=(
   # the Python package (docs/python.md): built when these are present; its tests, and
   # the Octave example of the JSON-lines stream
   pybind11-dev python3-dev python3-numpy python3-pytest octave
+  # cic report's test: the page rendered in headless Chromium, which must fetch nothing;
+  # libpng: the tests read the pixels of figures and screenshots (tests/support/png_image.hpp)
+  chromium libpng-dev
 )
 
 PACKAGES=("${RUN_PACKAGES[@]}")

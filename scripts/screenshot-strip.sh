@@ -2,13 +2,15 @@
 # scripts/screenshot-strip.sh RUN OUT.png [--at "2 5 8 11 14"] [--width 320] [--height 240] [--view "ARGS"]
 # A strip of screenshots of a run's best individual (any input `cic view` takes:
 # a run folder or a population file), one frame per time in --at (seconds of
-# the replay), side by side in one PNG. Offscreen: `cic view --screenshot`
-# (xvfb-run when there is no display), then ffmpeg's tile filter. --view adds
-# arguments for `cic view`; with RUN "-" they say what to replay instead, e.g.
+# the replay), side by side in one PNG: `cic view --screenshot OUT --strip`
+# (offscreen; xvfb-run when there is no display), a fixed camera framing the
+# whole path, the trail on the ground and the distance walked so far in each
+# frame. --view adds arguments for `cic view` (e.g. "--camera follow
+# --no-trail"); with RUN "-" they say what to replay instead, e.g.
 # - OUT.png --view "--robot R1 --controller sine:1.1,1,1.571".
 # Environment: CIC=path to the cic binary (default: build/cic, then cic on PATH).
 set -euo pipefail
-usage() { sed -n '2,9p' "$0" >&2; exit 2; }
+usage() { sed -n '2,11p' "$0" >&2; exit 2; }
 [ $# -ge 2 ] || usage
 RUN=$1 OUT=$2
 shift 2
@@ -40,17 +42,13 @@ else
   INPUT=("$RUN")
 fi
 read -r -a VIEW_ARGS <<< "$VIEW"
-command -v ffmpeg >/dev/null || { echo "screenshot-strip.sh: ffmpeg is missing (apt-get install ffmpeg)" >&2; exit 2; }
+TIMES=$(echo $AT | tr ' ' ',')
+[ -n "$TIMES" ] || { echo "screenshot-strip.sh: --at gives no time" >&2; exit 2; }
+n=$(echo $AT | wc -w)
+mkdir -p "$(dirname "$OUT")"
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-n=0
-for t in $AT; do
-  "$CIC" view "${INPUT[@]}" "${VIEW_ARGS[@]}" --screenshot "$TMP/$(printf '%02d' "$n").png" --at "$t" --width "$W" --height "$H" \
-    >"$TMP/view.log" 2>&1 || { cat "$TMP/view.log" >&2; exit 1; }
-  n=$((n + 1))
-done
-[ "$n" -gt 0 ] || { echo "screenshot-strip.sh: --at gives no time" >&2; exit 2; }
-mkdir -p "$(dirname "$OUT")"
-ffmpeg -loglevel error -y -i "$TMP/%02d.png" -vf "tile=${n}x1" -frames:v 1 "$TMP/strip.png"
+"$CIC" view "${INPUT[@]}" "${VIEW_ARGS[@]}" --screenshot "$TMP/strip.png" --strip "$TIMES" --width "$W" --height "$H" \
+  >"$TMP/view.log" 2>&1 || { cat "$TMP/view.log" >&2; exit 1; }
 mv "$TMP/strip.png" "$OUT"
 echo "wrote $OUT ($n frames at t = $AT s)"

@@ -134,31 +134,39 @@ sim::EvalReply to_reply(const Model& m, const Outcome& o, std::vector<double> de
     return reply;
 }
 
+sim::EvalOptions options_for(const WalkNeeds& needs, sim::Descriptor descriptor) {
+    sim::EvalOptions options;
+    options.record_trace = needs.trace;
+    options.record_ground = needs.contacts || sim::needs_ground(descriptor);
+    return options;
+}
+
+void apply_score(Outcome& o, const Score& score, const Model& m, const io::Settings& s) {
+    if (!score || o.failed) return;
+    o.fitness = score(m, s, o);
+    if (!std::isfinite(o.fitness)) {
+        o.failed = true;
+        o.failure = "non-finite fitness";
+        o.fitness = m.sim.failure_fitness;
+    }
+}
+
 std::function<std::string(const std::string&)> make_job_handler(std::function<io::Settings()> settings,
-                                                                 Score score) {
+                                                                 Score score, WalkNeeds needs) {
     struct Loaded {
         io::Settings settings;
         Model model;
     };
     auto loaded = std::make_shared<std::optional<Loaded>>();
-    return [loaded, settings = std::move(settings), score = std::move(score)](const std::string& body) {
+    return [loaded, settings = std::move(settings), score = std::move(score), needs](const std::string& body) {
         if (!*loaded) {
             io::Settings s = settings();
             Model m = Model::from_settings(s);
             loaded->emplace(Loaded{std::move(s), std::move(m)});
         }
         const Job job = parse_job_body(body);
-        sim::EvalOptions options;
-        options.record_ground = sim::needs_ground(job.descriptor);
-        Outcome o = run((*loaded)->model, job.genotype, options);
-        if (score && !o.failed) {
-            o.fitness = score((*loaded)->model, (*loaded)->settings, o);
-            if (!std::isfinite(o.fitness)) {
-                o.failed = true;
-                o.failure = "non-finite fitness";
-                o.fitness = (*loaded)->model.sim.failure_fitness;
-            }
-        }
+        Outcome o = run((*loaded)->model, job.genotype, options_for(needs, job.descriptor));
+        apply_score(o, score, (*loaded)->model, (*loaded)->settings);
         return sim::format_eval_reply(
             to_reply((*loaded)->model, o, o.failed ? std::vector<double>{}
                                  : sim::descriptor_of(job.descriptor, (*loaded)->model.robot, o.result)));

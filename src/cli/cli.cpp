@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
     add_resume_command(root, ctx);
     add_export_command(root, ctx);
     add_eval_command(root, ctx);
+    add_report_command(root, ctx);
 #ifdef CIC_HAVE_VIEWER
     add_view_command(root, ctx);
 #endif

@@ -9,6 +9,7 @@
 #include "cic/cli/command_guard.hpp"
 #include "cic/cli/commands.hpp"
 #include "cic/report/archive_plot.hpp"
+#include "cic/report/path_plot.hpp"
 #include "cic/report/plot.hpp"
 #include "cic/core/error.hpp"
 
@@ -29,6 +30,7 @@ struct PlotCommandOptions {
     bool by_evaluations = false;
     std::vector<std::string> configs;
     bool archive = false;
+    bool path = false;
     std::vector<std::string> dims{"1", "2"};
 };
 
@@ -51,10 +53,12 @@ P plot_options(const PlotCommandOptions& o) {
 void add_plot_command(Command& app, CommandContext& ctx) {
     auto opts = std::make_shared<PlotCommandOptions>();
     Command cmd = app.subcommand(
-        "plot", "Plot best/mean fitness, depth and size per generation of run folders (folders named NAME-NNN "
-                "are grouped by NAME: mean curve, +-1 sd band) or of a study folder from cic sweep (one colour per "
-                "configuration), or best fitness so far against evaluations of several studies (--by-evaluations), or a "
-                "trace CSV with --trace");
+        "plot", "Plot run folders (folders named NAME-NNN are grouped by NAME: mean curve, +-1 sd band) or a study "
+                "folder from cic sweep (one colour per configuration), with the panels of their search: GP best/mean "
+                "fitness, depth and size per generation; gait best so far and each generation's best, IPOP restarts "
+                "marked; MAP-Elites QD-score, coverage and best elite per batch (and the archive's heatmap beside). "
+                "Or best fitness so far against evaluations of several studies (--by-evaluations), the centre's path "
+                "from above (--path), or a trace CSV (--trace)");
     cmd.option("runs", opts->runs,
                     "run folders (each holds stats.csv), or one study folder (holds index.csv), or with "
                     "--by-evaluations several study folders");
@@ -77,15 +81,39 @@ void add_plot_command(Command& app, CommandContext& ctx) {
                     "must have them")
         .delimiter(',');
     cmd.flag("--archive", opts->archive,
-             "a MAP-Elites run: its archive as a heatmap of the best fitness over two descriptor dimensions, the "
-             "others collapsed to their best (docs/quality-diversity.md)");
-    cmd.option("--dims", opts->dims, "with --archive: the two descriptor dimensions on the x and y axes, from 1")
+             "a MAP-Elites run: its archive alone as a heatmap (plain `cic plot RUN` draws it too, as OUT-archive.EXT): "
+             "two descriptor dimensions in each block, the next two as a grid of blocks, bins numbered as --cell "
+             "takes them, the best cell framed (docs/quality-diversity.md)");
+    cmd.flag("--path", opts->path,
+             "the centre's path seen from above, with eq. 7.1's preferred axis marked: each run folder's best "
+             "individual, or the best run of each configuration of one study, on one figure (replays them)");
+    cmd.option("--dims", opts->dims, "with --archive: the two descriptor dimensions inside each block (x, y), from 1")
         .delimiter(',')
         .show_default();
     cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "plot", [&] {
             if (opts->trace.empty() == opts->runs.empty())
                 throw InputError("give either run folders or --trace FILE.csv");
+            if (opts->path) {
+                if (opts->archive || opts->by_evaluations || !opts->trace.empty() || opts->median)
+                    throw InputError("--path plots run folders or one study folder on its own (not with --archive, "
+                                     "--by-evaluations, --trace or --median)");
+                std::vector<std::filesystem::path> dirs(opts->runs.begin(), opts->runs.end());
+                if (dirs.size() > 1)
+                    for (const auto& dir : dirs)
+                        if (is_study_folder(dir))
+                            throw InputError("a study folder is plotted on its own (give one study, or run folders)",
+                                             dir.string());
+                const auto paths = best_paths(dirs, opts->include_unfinished);
+                const std::string out = opts->out.empty() ? "path.svg" : opts->out;
+                plot_paths(paths, out, plot_options<PlotOptions>(*opts));
+                if (!ctx.quiet) {
+                    for (const auto& p : paths)
+                        std::cerr << fmt::format("{}: {:.4f} m along the preferred axis\n", p.label, p.distance);
+                    std::cerr << "wrote " << out << '\n';
+                }
+                return 0;
+            }
             if (opts->archive) {
                 if (opts->runs.size() != 1 || opts->by_evaluations || !opts->trace.empty())
                     throw InputError("--archive plots one MAP-Elites run folder");
@@ -171,6 +199,16 @@ void add_plot_command(Command& app, CommandContext& ctx) {
                 for (const auto& g : group_runs(dirs))
                     std::cerr << fmt::format("{}: {} run(s)\n", g.label, g.runs.size());
                 std::cerr << "wrote " << out << '\n';
+            }
+            // One MAP-Elites run: its archive too, beside the curves (OUT-archive.EXT).
+            if (dirs.size() == 1 && is_archive_run(dirs.front())) {
+                const std::filesystem::path curves(out);
+                const std::filesystem::path heatmap =
+                    curves.parent_path() / (curves.stem().string() + "-archive" + curves.extension().string());
+                auto archive = plot_options<ArchivePlotOptions>(*opts);
+                archive.title.clear();
+                plot_archive(dirs.front(), heatmap, archive);
+                if (!ctx.quiet) std::cerr << "wrote " << heatmap.string() << '\n';
             }
             return 0;
         });

@@ -7,6 +7,7 @@
 #include "cic/cli/command_guard.hpp"
 #include "cic/cli/commands.hpp"
 #include "cic/cli/replay_options.hpp"
+#include "cic/core/error.hpp"
 #include "cic/io/povray.hpp"
 
 namespace cic::app {
@@ -16,6 +17,8 @@ void add_render_command(Command& app, CommandContext& ctx) {
         ReplaySource source;
         std::string out;
         double fps = 25.0;
+        bool no_trail = false;
+        std::string camera = "follow";
     };
     auto opts = std::make_shared<Options>();
     Command cmd = app.subcommand(
@@ -24,13 +27,21 @@ void add_render_command(Command& app, CommandContext& ctx) {
     add_replay_options(cmd, opts->source);
     cmd.option("--out", opts->out, "folder for frame_NNNNN.pov and the shared includes").required();
     cmd.option("--fps", opts->fps, "frames per second of the video").show_default().positive();
+    cmd.flag("--no-trail", opts->no_trail,
+             "draw no trail (default: the centre's path so far on the ground, a green ring at its start)");
+    cmd.option("--camera", opts->camera, "follow (the robot's centre) or fixed (on the world, framing the whole path)")
+        .show_default();
     cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "render", [&] {
+            if (opts->camera != "follow" && opts->camera != "fixed")
+                throw InputError("--camera takes follow or fixed; got '" + opts->camera + "'");
             const auto items = load_replay(opts->source, 1, opts->fps, false);
             const ReplayItem& item = items.at(0);
             io::PovrayOptions pov;
             pov.centre_body = item.centre_body;
             pov.title = item.label;
+            pov.trail = !opts->no_trail;
+            pov.fixed_camera = opts->camera == "fixed";
             const int frames = io::write_povray(item.recording, opts->out, opts->fps, pov);
             if (!ctx.quiet)
                 std::cerr << fmt::format("{}: fitness {:.6g}; wrote {} frames to {}\n"

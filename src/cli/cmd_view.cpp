@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "cic/cli/command_guard.hpp"
+#include "cic/core/error.hpp"
 #include "cic/cli/commands.hpp"
 #include "cic/run/self_path.hpp"
 #include "cic/cli/replay_options.hpp"
@@ -47,10 +48,12 @@ viz::ViewEntry to_entry(ReplayItem& item) {
     // The HUD shows "generation G | individual I", or the label alone (a preset
     // replay, or an archive's elite: "cell I,J,... (N), batch B").
     e.info.generation = item.elite ? -1 : item.generation;
-    e.info.individual = item.generation >= 0 && !item.elite ? std::to_string(item.id) : item.label;
+    e.info.individual = item.generation >= 0 && !item.elite ? (item.who.empty() ? std::to_string(item.id) : item.who)
+                                                            : item.label;
     e.info.fitness = item.replayed_fitness;
     e.recording = std::move(item.recording);
     e.centre_body = item.centre_body;
+    e.preferred_axis = item.preferred_axis;
     return e;
 }
 
@@ -66,6 +69,9 @@ void add_view_command(Command& app, CommandContext& ctx) {
         double speed = 1.0;
         double fps = 50.0;
         bool no_shadows = false;
+        bool no_trail = false;
+        std::string camera;
+        std::vector<std::string> strip;
     };
     auto opts = std::make_shared<Options>();
     Command cmd = app.subcommand(
@@ -77,14 +83,41 @@ void add_view_command(Command& app, CommandContext& ctx) {
     cmd.option("--screenshot", opts->screenshot, "write a PNG without opening a window (uses xvfb-run when "
                                                       "there is no X display)");
     cmd.option("--at", opts->at, "with --screenshot: seconds into the replay").show_default().non_negative();
-    cmd.option("--width", opts->width, "pixels (default 1024, or 800 for a screenshot)").positive();
-    cmd.option("--height", opts->height, "pixels (default 768, or 600 for a screenshot)").positive();
+    cmd.option("--width", opts->width, "pixels (default 1024, or 800 for a screenshot, 320 for each frame of a strip)").positive();
+    cmd.option("--height", opts->height, "pixels (default 768, or 600 for a screenshot, 240 for a strip)").positive();
     cmd.option("--speed", opts->speed, "playback speed, 1 = real time (1/16 to 16)").show_default().range(1.0 / 16, 16.0);
     cmd.option("--fps", opts->fps, "recorded frames per second (interpolated in between)")
         .show_default().positive();
     cmd.flag("--no-shadows", opts->no_shadows, "draw without shadow mapping");
+    cmd.flag("--no-trail", opts->no_trail,
+             "draw no trail (default: the centre's path so far on the ground, a green ring at its start; key t)");
+    cmd.option("--camera", opts->camera,
+               "follow (the robot's centre) or fixed (on the world, framing the whole path); default: fixed for "
+               "--screenshot, follow in the window (key c switches)");
+    cmd.option("--strip", opts->strip,
+               "with --screenshot: frames at these seconds side by side in one PNG (e.g. --strip 2,5,8), each "
+               "--width wide")
+        .delimiter(',');
     cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "view", [&] {
+            if (!opts->camera.empty() && opts->camera != "follow" && opts->camera != "fixed")
+                throw InputError("--camera takes follow or fixed; got '" + opts->camera + "'");
+            if (!opts->strip.empty() && opts->screenshot.empty())
+                throw InputError("--strip needs --screenshot FILE.png");
+            std::vector<double> strip;
+            for (const std::string& text : opts->strip) {
+                std::size_t used = 0;
+                double t = -1;
+                try {
+                    t = std::stod(text, &used);
+                } catch (const std::exception&) {
+                    used = 0;
+                }
+                if (used == 0 || used != text.size() || !std::isfinite(t) || t < 0)
+                    throw InputError("--strip takes seconds >= 0, e.g. --strip 2,5,8; got '" + text + "'");
+                strip.push_back(t);
+            }
+            if (opts->strip.size() > 64) throw InputError("--strip takes at most 64 times");
             if (!opts->screenshot.empty()) reexec_under_xvfb();
             else if (const char* d = std::getenv("DISPLAY"); !d || !*d)   // before the replays: they take seconds each
                 throw std::runtime_error("no X display (DISPLAY is unset or empty): the window cannot open; "
@@ -103,8 +136,16 @@ void add_view_command(Command& app, CommandContext& ctx) {
                 entries.push_back(to_entry(item));
             }
             if (!opts->screenshot.empty()) {
-                viz::screenshot(entries.front(), opts->at, opts->width > 0 ? opts->width : 800,
-                                opts->height > 0 ? opts->height : 600, opts->screenshot, !opts->no_shadows);
+                viz::SceneOptions scene;
+                scene.shadows = !opts->no_shadows;
+                scene.trail = !opts->no_trail;
+                scene.camera = opts->camera == "follow" ? viz::CameraMode::Follow : viz::CameraMode::Fixed;
+                if (!strip.empty())
+                    viz::screenshot_strip(entries.front(), strip, opts->width > 0 ? opts->width : 320,
+                                          opts->height > 0 ? opts->height : 240, opts->screenshot, scene);
+                else
+                    viz::screenshot(entries.front(), opts->at, opts->width > 0 ? opts->width : 800,
+                                    opts->height > 0 ? opts->height : 600, opts->screenshot, scene);
                 if (!ctx.quiet) std::cerr << "wrote " << opts->screenshot << '\n';
                 return 0;
             }
@@ -113,6 +154,8 @@ void add_view_command(Command& app, CommandContext& ctx) {
             if (opts->height > 0) view.height = opts->height;
             view.speed = opts->speed;
             view.shadows = !opts->no_shadows;
+            view.trail = !opts->no_trail;
+            view.camera = opts->camera == "fixed" ? viz::CameraMode::Fixed : viz::CameraMode::Follow;
             view.window_title = "cic view";
             return viz::Viewer(std::move(entries), view).run();
         });

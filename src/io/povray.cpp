@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 #include <fstream>
 #include <stdexcept>
 
@@ -52,6 +54,43 @@ std::string lights_inc() {
 light_source { CicCentre + <9, 11, -3.5> * CicRadius rgb <1.0, 0.97, 0.92> }
 light_source { CicCentre + <-6, 4, -3> * CicRadius rgb 0.3 shadowless }
 )";
+}
+
+// A camera fixed on the world, looking at `focus` from `distance` away (as the
+// viewer's fixed camera: from above and behind, viz/scene.cpp).
+std::string fixed_camera_inc(const Vec3& focus, double distance) {
+    const double n = std::sqrt(1.2 * 1.2 + 2.0 * 2.0 + 1.9 * 1.9);
+    return fmt::format(R"(// cic: camera fixed on the world, framing the centre's whole path
+#declare CicFocus = {};
+camera {{
+  location CicFocus + <{:.6f}, {:.6f}, {:.6f}>
+  look_at CicFocus
+  right x * image_width / image_height
+  angle 50
+}}
+)",
+                       pov_vector(focus), 1.2 / n * distance, 2.0 / n * distance, -1.9 / n * distance);
+}
+
+// The centre's path up to frame `upto` (its positions at the frames so far) as
+// a magenta line on the ground, and a green ring at its start.
+std::string trail_text(const std::vector<Vec3>& path, std::size_t upto, double radius, double tile) {
+    const double lift = 0.004 * radius, width = 0.12 * tile;
+    auto ground = [&](const Vec3& p) { return fmt::format("<{:.6f}, {:.6f}, {:.6f}>", p[0], lift, p[1]); };
+    std::string text = fmt::format("torus {{ {:.6f}, {:.6f} translate {} pigment {{ rgb <0.10, 0.55, 0.20> }} "
+                                   "finish {{ ambient 0.4 }} }}\n",
+                                   0.41 * tile, 0.09 * tile, ground(path.front()));
+    const std::size_t n = std::min(upto + 1, path.size());
+    if (n < 2) return text;
+    // At most 200 points: a long video would otherwise write every frame's whole path.
+    const std::size_t step = std::max<std::size_t>(1, n / 200);
+    std::vector<Vec3> points;
+    for (std::size_t k = 0; k < n; k += step) points.push_back(path[k]);
+    if (points.size() < 2 || points.back() != path[n - 1]) points.push_back(path[n - 1]);
+    text += fmt::format("sphere_sweep {{ linear_spline {}", points.size());
+    for (const Vec3& p : points) text += fmt::format(",\n  {}, {:.6f}", ground(p), width / 2);
+    text += "\n  pigment { rgb <0.85, 0.05, 0.55> } finish { ambient 0.5 } no_shadow }\n";
+    return text;
 }
 
 std::string camera_inc() {
@@ -126,11 +165,27 @@ int write_povray(const sim::Recording& recording, const fs::path& out_dir, doubl
     const double radius = robot_radius(recording, options.centre_body);
     write_text(out_dir / "materials.inc", materials_inc());
     write_text(out_dir / "lights.inc", lights_inc());
-    write_text(out_dir / "camera.inc", camera_inc());
-    write_text(out_dir / "ground.inc", ground_inc(options.tile > 0 ? options.tile : auto_tile(recording)));
-
+    const double tile = options.tile > 0 ? options.tile : auto_tile(recording);
     const int count = resampled_frame_count(recording, fps);
     const double t0 = recording_start(recording);
+    // The centre on the ground plane (x, y) at every frame: the trail and the fixed camera's frame.
+    std::vector<Vec3> path;
+    double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+    for (int k = 0; k < count; ++k) {
+        const auto c = sample_frame(recording, t0 + k / fps)[static_cast<std::size_t>(options.centre_body)].pos;
+        path.push_back({c[0], c[1], 0.0});
+        lo_x = std::min(lo_x, c[0]), hi_x = std::max(hi_x, c[0]), lo_y = std::min(lo_y, c[1]), hi_y = std::max(hi_y, c[1]);
+    }
+    if (options.fixed_camera) {
+        const double half = 0.5 * std::max(hi_x - lo_x, hi_y - lo_y) + radius;
+        const double distance = std::max(1.15 * half / std::tan(25.0 * M_PI / 180), 3.1 * radius);
+        write_text(out_dir / "camera.inc",
+                   fixed_camera_inc({(lo_x + hi_x) / 2, (lo_y + hi_y) / 2, 0.35 * radius}, distance));
+    } else {
+        write_text(out_dir / "camera.inc", camera_inc());
+    }
+    write_text(out_dir / "ground.inc", ground_inc(tile));
+
     for (int k = 0; k < count; ++k) {
         const double t = t0 + k / fps;
         const auto bodies = sample_frame(recording, t);
@@ -143,6 +198,7 @@ int write_povray(const sim::Recording& recording, const fs::path& out_dir, doubl
                 "#include \"ground.inc\"\n";
         for (const auto& part : recording.parts)
             text += box_text(part, compose(bodies[static_cast<std::size_t>(part.body)], part.offset));
+        if (options.trail) text += trail_text(path, static_cast<std::size_t>(k), radius, tile);
         write_text(out_dir / fmt::format("frame_{:05d}.pov", k), text);
     }
     return count;

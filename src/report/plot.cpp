@@ -2,6 +2,7 @@
 #include "cic/report/plot.hpp"
 
 #include "cic/io/experiment_types.hpp"
+#include "cic/io/gait_xml.hpp"
 #include "cic/io/settings_io.hpp"
 
 #include <fmt/format.h>
@@ -97,21 +98,111 @@ std::string study_name(const fs::path& study) {
 
 } // namespace
 
+SearchKind search_kind_of(const fs::path& run_dir) {
+    try {
+        const io::Settings s = io::read_settings(run_dir / "settings.xml");
+        if (s.map_elites.enabled) return SearchKind::MapElites;
+        if (io::family_of(s) == io::ExperimentFamily::Gait) return SearchKind::Gait;
+    } catch (const std::exception&) {
+        // no readable settings: today's panels
+    }
+    return SearchKind::GP;
+}
+
+std::string x_axis_name(SearchKind kind) { return kind == SearchKind::MapElites ? "batch" : "generation"; }
+
+std::vector<int> restart_generations(const fs::path& run_dir) {
+    try {
+        const fs::path file = run_dir / "population.xml";
+        if (!io::is_gait_file(file)) return {};
+        const io::GaitFile g = io::load_gait(file);
+        return g.restarts ? g.restarts->generations : std::vector<int>{};
+    } catch (const std::exception&) {
+        return {};
+    }
+}
+
+namespace {
+
+// The search every run shares; InputError naming the first run of another.
+SearchKind common_search(const std::vector<fs::path>& runs) {
+    const SearchKind kind = search_kind_of(runs.front());
+    for (const fs::path& run : runs)
+        if (search_kind_of(run) != kind)
+            throw InputError(fmt::format("runs of different searches (GP, gait, MAP-Elites) do not share panels: {} "
+                                         "and {} differ (plot them apart, or compare studies with --by-evaluations)",
+                                         runs.front().string(), run.string()),
+                             run.string());
+    return kind;
+}
+
+// A panel: its title, y label, the plot command and lines to run before it
+// (e.g. restart markers) and after it.
+struct Panel {
+    std::string title, ylabel, plot, before, after;
+};
+
+std::string panels_script(const std::vector<Panel>& panels) {
+    std::string script;
+    for (const Panel& p : panels)
+        script += fmt::format("set title {}\nset ylabel {}\n{}{}{}", quote(p.title), quote(p.ylabel), p.before,
+                              p.plot, p.after);
+    return script;
+}
+
+// The figure's frame: terminal, output, layout for `panels` panels, axes.
+std::string figure_start(const fs::path& out_file, const PlotOptions& options, const fs::path& scratch,
+                         std::size_t panels, const std::string& title, const std::string& xlabel,
+                         const std::string& data_file) {
+    const int columns = panels == 1 ? 1 : 2;
+    const int rows = static_cast<int>((panels + 1) / 2);
+    const int width = options.width > 0 ? options.width : 600 * columns;
+    const int height = options.height > 0 ? options.height : 100 + 400 * rows;
+    std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch) + "\n";
+    script += fmt::format("set output {}\n", quote(out_file.string()));
+    script += fmt::format("set multiplot layout {},{}{}\n", rows, columns, title.empty() ? "" : " title " + quote(title));
+    // The key's box a line taller than gnuplot makes it: a tight one draws its
+    // bottom edge over the underscores of the last label in PNG output.
+    script += "set grid\nset key left top box opaque height 1\nset autoscale xfix\n";
+    // Room above and below the curves: a constant line would lie on the frame.
+    script += "set offsets 0, 0, graph 0.05, graph 0.05\n";
+    script += fmt::format("set xlabel {}\n", quote(xlabel));
+    script += generation_ticks(data_file);
+    return script;
+}
+
+// Vertical dashed lines at each restart, in the run's colour.
+std::string restart_markers(const std::vector<int>& generations, const std::string& colour) {
+    std::string s;
+    for (int g : generations)
+        s += fmt::format("set arrow from {},graph 0 to {},graph 1 nohead dt 3 lw 1.5 lc {}\n", g, g, colour);
+    return s;
+}
+
+} // namespace
+
 void plot_runs(const std::vector<fs::path>& run_dirs, const fs::path& out_file, const PlotOptions& options) {
     if (run_dirs.empty()) throw InputError("plot: give at least one run folder");
     check_output_folder(out_file);
+    const SearchKind kind = common_search(run_dirs);
     const auto groups = group_runs(run_dirs);
     ScratchDir scratch;
 
     std::vector<std::string> data_files;
+    bool best_falls = false;   // a generation's best below the best so far (GP without elitism)
     for (std::size_t g = 0; g < groups.size(); ++g) {
         std::vector<std::vector<StatsRow>> runs;
         for (const auto& dir : groups[g].runs) runs.push_back(read_stats_csv(dir / "stats.csv"));
-        std::string text = "# generation runs best best_sd mean mean_sd mean_depth max_depth mean_size max_size\n";
+        for (const auto& run : runs)
+            for (const StatsRow& r : run) best_falls = best_falls || r.best < r.best_so_far;
+        std::string text = "# generation runs best best_sd mean mean_sd mean_depth max_depth mean_size max_size "
+                           "best_so_far best_so_far_sd qd_score qd_score_sd coverage coverage_sd\n";
         for (const auto& s : summarise(runs))
-            text += fmt::format("{} {} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g}\n", s.generation,
-                                s.runs, s.best, s.best_sd, s.mean, s.mean_sd, s.mean_depth, s.max_depth, s.mean_size,
-                                s.max_size);
+            text += fmt::format("{} {} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} "
+                                "{:.10g} {:.10g} {:.10g} {:.10g}\n",
+                                s.generation, s.runs, s.best, s.best_sd, s.mean, s.mean_sd, s.mean_depth, s.max_depth,
+                                s.mean_size, s.max_size, s.best_so_far, s.best_so_far_sd, s.qd_score, s.qd_score_sd,
+                                s.coverage, s.coverage_sd);
         const fs::path data = scratch.path() / fmt::format("group{}.dat", g);
         write_file(data, text);
         data_files.push_back(quote(data.string()));
@@ -122,8 +213,10 @@ void plot_runs(const std::vector<fs::path>& run_dirs, const fs::path& out_file, 
         return n > 1 ? fmt::format("{} ({} runs)", groups[g].label, n) : groups[g].label;
     };
     auto colour = [](std::size_t g) { return fmt::format("rgb '{}'", kColours[g % kColours.size()]); };
-    // Mean curve of column `col` with a +-1 sd band (column sd_col) for groups of several runs.
-    auto fitness_panel = [&](const char* title, int col, int sd_col) {
+    // Mean curve of column `col` with a +-1 sd band (column sd_col) for groups of
+    // several runs; with dashed_col, a thin dashed companion curve (no band).
+    auto curves = [&](int col, int sd_col, const std::string& suffix = "", int dashed_col = 0,
+                      const std::string& dashed_suffix = "") {
         std::vector<std::string> items;
         for (std::size_t g = 0; g < groups.size(); ++g) {
             if (groups[g].runs.size() > 1)
@@ -131,12 +224,14 @@ void plot_runs(const std::vector<fs::path>& run_dirs, const fs::path& out_file, 
                                             "noborder lc {} notitle",
                                             data_files[g], col, sd_col, col, sd_col, colour(g)));
             items.push_back(fmt::format("{} using 1:{} with lines lw 2 lc {} title {}", data_files[g], col, colour(g),
-                                        quote(label(g))));
+                                        quote(label(g) + suffix)));
+            if (dashed_col > 0)
+                items.push_back(fmt::format("{} using 1:{} with lines lw 1 dt 2 lc {} title {}", data_files[g],
+                                            dashed_col, colour(g), quote(label(g) + dashed_suffix)));
         }
-        return fmt::format("set title {}\nset ylabel {}\nplot {}\n", quote(title), quote(fitness_label(run_dirs.front())),
-                           fmt::join(items, ", \\\n  "));
+        return fmt::format("plot {}\n", fmt::join(items, ", \\\n  "));
     };
-    auto mean_max_panel = [&](const char* title, const char* what, int mean_col, int max_col) {
+    auto mean_max = [&](const char* what, int mean_col, int max_col) {
         std::vector<std::string> items;
         for (std::size_t g = 0; g < groups.size(); ++g) {
             items.push_back(fmt::format("{} using 1:{} with lines lw 2 lc {} title {}", data_files[g], max_col,
@@ -144,22 +239,40 @@ void plot_runs(const std::vector<fs::path>& run_dirs, const fs::path& out_file, 
             items.push_back(fmt::format("{} using 1:{} with lines lw 2 dt 2 lc {} title {}", data_files[g], mean_col,
                                         colour(g), quote(label(g) + " mean " + what)));
         }
-        return fmt::format("set title {}\nset ylabel {}\nplot {}\n", quote(title), quote(what),
-                           fmt::join(items, ", \\\n  "));
+        return fmt::format("plot {}\n", fmt::join(items, ", \\\n  "));
     };
 
-    const int width = options.width > 0 ? options.width : 1200;
-    const int height = options.height > 0 ? options.height : 900;
-    std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
-    script += fmt::format("set output {}\n", quote(out_file.string()));
-    script += fmt::format("set multiplot layout 2,2{}\n",
-                          options.title.empty() ? "" : " title " + quote(options.title));
-    script += "set grid\nset key left top box opaque\nset xlabel 'generation'\nset autoscale xfix\n";
-    script += generation_ticks(data_files.front());
-    script += fitness_panel("best fitness", 3, 4);
-    script += fitness_panel("mean fitness", 5, 6);
-    script += mean_max_panel("depth (solid: max, dashed: mean)", "depth", 7, 8);
-    script += mean_max_panel("size (solid: max, dashed: mean)", "size", 9, 10);
+    const std::string fitness = fitness_label(run_dirs.front());
+    std::vector<Panel> panels;
+    switch (kind) {
+    case SearchKind::GP:
+        panels = {best_falls ? Panel{"best fitness (solid: each generation's, dashed: so far)", fitness,
+                                     curves(3, 4, "", 11, " so far"), "", ""}
+                             : Panel{"best fitness", fitness, curves(3, 4), "", ""},
+                  {"mean fitness", fitness, curves(5, 6), "", ""},
+                  {"depth (solid: max, dashed: mean)", "depth", mean_max("depth", 7, 8), "", ""},
+                  {"size (solid: max, dashed: mean)", "size", mean_max("size", 9, 10), "", ""}};
+        break;
+    case SearchKind::Gait: {
+        std::string markers;
+        for (std::size_t g = 0; g < groups.size(); ++g)
+            for (const auto& dir : groups[g].runs) markers += restart_markers(restart_generations(dir), colour(g));
+        panels = {{markers.empty() ? "best fitness (solid: so far, dashed: each generation's)"
+                                   : "best fitness (solid: so far, dashed: each generation's; dotted: IPOP restarts)",
+                   fitness, curves(11, 12, " so far", 3, " generation's best"), markers, "unset arrow\n"},
+                  {"mean fitness of each generation's candidates", fitness, curves(5, 6), "", ""}};
+        break;
+    }
+    case SearchKind::MapElites:
+        panels = {{"QD-score (sum of elites' fitness - MapElites.qdOffset)", "QD-score", curves(13, 14), "", ""},
+                  {"coverage (share of cells filled)", "coverage", curves(15, 16), "", ""},
+                  {"best elite (the best so far)", fitness, curves(11, 12), "", ""},
+                  {"mean fitness of the archive's elites", fitness, curves(5, 6), "", ""}};
+        break;
+    }
+    std::string script = figure_start(out_file, options, scratch.path(), panels.size(), options.title,
+                                      x_axis_name(kind), data_files.front());
+    script += panels_script(panels);
     script += "unset multiplot\nset output\n";
     render(options.gnuplot, scratch.path(), script, out_file);
 }
@@ -168,14 +281,17 @@ void plot_study(const fs::path& study, const fs::path& out_file, const StudyPlot
     check_output_folder(out_file);
     const StudyIndex index = read_study_index(study);
     std::vector<BandSeries> series;
+    std::vector<fs::path> shown_runs;
     ScratchDir scratch;
     for (const auto& group : group_study(index, options.include_unfinished)) {
         const auto runs = stats_of(index, group);
         if (runs.empty()) continue;
-        std::string text = "# generation runs then centre low high of: best mean mean_depth max_depth\n";
+        for (const StudyRun* r : group.runs) shown_runs.push_back(index.run_path(*r));
+        std::string text = "# generation runs then centre low high of: best mean mean_depth max_depth best_so_far "
+                           "qd_score coverage\n";
         for (const auto& g : summarise_bands(runs, options.median)) {
             text += fmt::format("{} {}", g.generation, g.runs);
-            for (const Band& b : {g.best, g.mean, g.mean_depth, g.max_depth})
+            for (const Band& b : {g.best, g.mean, g.mean_depth, g.max_depth, g.best_so_far, g.qd_score, g.coverage})
                 text += fmt::format(" {:.10g} {:.10g} {:.10g}", b.centre, b.low, b.high);
             text += '\n';
         }
@@ -185,26 +301,45 @@ void plot_study(const fs::path& study, const fs::path& out_file, const StudyPlot
     }
     if (series.empty())
         throw nothing_to_plot(index, options.include_unfinished);
+    const SearchKind kind = common_search(shown_runs);
 
     const std::string band_name = options.median ? "median, IQR band" : "mean, +-1 sd band";
-    auto panel = [&](const std::string& title, const char* ylabel, int col) {
-        return fmt::format("set title {}\nset ylabel {}\n{}", quote(title + " (" + band_name + ")"), quote(ylabel),
-                           band_plot_command(series, col));
+    auto panel = [&](const std::string& title, const std::string& ylabel, int col) {
+        return Panel{title + " (" + band_name + ")", ylabel, band_plot_command(series, col), "", ""};
     };
-
-    const int width = options.width > 0 ? options.width : 1200;
-    const int height = options.height > 0 ? options.height : 900;
-    const std::string title = options.title.empty() ? "study " + study_name(study) : options.title;
-    std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
-    script += fmt::format("set output {}\n", quote(out_file.string()));
-    script += fmt::format("set multiplot layout 2,2 title {}\n", quote(title));
-    script += "set grid\nset key left top box opaque\nset xlabel 'generation'\nset autoscale xfix\n";
     const std::string fitness = fitness_label(index.run_path(index.runs.front()));
-    script += generation_ticks(series.front().data);
-    script += panel("best fitness", fitness.c_str(), 3);
-    script += panel("mean fitness", fitness.c_str(), 6);
-    script += panel("max depth", "depth", 12);
-    script += panel("mean depth", "depth", 9);
+    std::vector<Panel> panels;
+    switch (kind) {
+    case SearchKind::GP:
+        panels = {panel("best fitness", fitness, 3), panel("mean fitness", fitness, 6),
+                  panel("max depth", "depth", 12), panel("mean depth", "depth", 9)};
+        break;
+    case SearchKind::Gait: {
+        // Every run's IPOP restarts, dotted in its configuration's colour.
+        std::string markers;
+        std::size_t k = 0;
+        for (const auto& group : group_study(index, options.include_unfinished)) {
+            if (stats_of(index, group).empty()) continue;
+            const std::string colour = fmt::format("rgb '{}'", kColours[k++ % kColours.size()]);
+            for (const StudyRun* r : group.runs) markers += restart_markers(restart_generations(index.run_path(*r)), colour);
+        }
+        panels = {panel(markers.empty() ? "best fitness so far" : "best fitness so far (dotted: IPOP restarts)", fitness,
+                        15),
+                  panel("each generation's best", fitness, 3),
+                  panel("mean fitness of each generation's candidates", fitness, 6)};
+        panels.front().before = markers;
+        panels.front().after = "unset arrow\n";
+        break;
+    }
+    case SearchKind::MapElites:
+        panels = {panel("QD-score", "QD-score", 18), panel("coverage", "coverage", 21),
+                  panel("best elite (the best so far)", fitness, 15), panel("mean fitness of the elites", fitness, 6)};
+        break;
+    }
+    const std::string title = options.title.empty() ? "study " + study_name(study) : options.title;
+    std::string script = figure_start(out_file, options, scratch.path(), panels.size(), title, x_axis_name(kind),
+                                      series.front().data);
+    script += panels_script(panels);
     script += "unset multiplot\nset output\n";
     render(options.gnuplot, scratch.path(), script, out_file);
 }
@@ -263,7 +398,7 @@ void plot_studies_by_evaluations(const std::vector<fs::path>& studies, const fs:
     std::string script = terminal_for(out_file, width, height, options.gnuplot, scratch.path()) + "\n";
     script += fmt::format("set output {}\n", quote(out_file.string()));
     script += fmt::format("set title {}\n", quote(title + " (" + band_name + ")"));
-    script += "set grid\nset key left top box opaque\nset xlabel 'evaluations'\nset autoscale xfix\n";
+    script += "set grid\nset key left top box opaque height 1\nset xlabel 'evaluations'\nset autoscale xfix\n";
     script += fmt::format("set ylabel {}\n", quote(by_evaluations_label.empty() ? "best fitness so far" : by_evaluations_label));
     script += band_plot_command(series, 3);
     script += "set output\n";

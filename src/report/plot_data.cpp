@@ -116,6 +116,13 @@ std::vector<StatsRow> read_stats_csv(const std::filesystem::path& path) {
                              file, 1);
         where[c] = static_cast<std::size_t>(it - header.begin());
     }
+    // Optional columns, read when present.
+    auto optional_column = [&](std::string_view name) {
+        const auto it = std::find(header.begin(), header.end(), name);
+        return it == header.end() ? header.size() : static_cast<std::size_t>(it - header.begin());
+    };
+    const std::array<std::size_t, 3> optional = {optional_column("best_so_far"), optional_column("qd_score"),
+                                                 optional_column("coverage")};
     std::vector<StatsRow> rows;
     int line_no = 1;
     while (std::getline(in, line)) {
@@ -137,9 +144,25 @@ std::vector<StatsRow> read_stats_csv(const std::filesystem::path& path) {
         if (v[0] != std::floor(v[0]) || v[0] < 0)
             throw InputError(fmt::format("column 'generation': '{}' is not a generation number", cells[where[0]]),
                              file, line_no);
-        rows.push_back({static_cast<int>(v[0]), v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11]});
+        StatsRow row{static_cast<int>(v[0]), v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11]};
+        std::array<double*, 3> extra = {&row.best_so_far, &row.qd_score, &row.coverage};
+        for (std::size_t c = 0; c < optional.size(); ++c) {
+            if (optional[c] == header.size()) continue;
+            const std::string& cell = cells[optional[c]];
+            double x = 0;
+            const auto res = std::from_chars(cell.data(), cell.data() + cell.size(), x);
+            if (cell.empty() || res.ec != std::errc() || res.ptr != cell.data() + cell.size() || !std::isfinite(x))
+                throw InputError(fmt::format("column '{}': '{}' is not a finite number", header[optional[c]], cell),
+                                 file, line_no);
+            *extra[c] = x;
+        }
+        rows.push_back(row);
     }
     if (rows.empty()) throw InputError("no data rows after the header", file, line_no);
+    if (optional[0] == header.size()) {   // an older file, or a GP run: the running maximum
+        double so_far = rows.front().best;
+        for (StatsRow& r : rows) r.best_so_far = so_far = std::max(so_far, r.best);
+    }
     return rows;
 }
 
@@ -341,6 +364,9 @@ std::vector<GenerationBands> summarise_bands(const std::vector<std::vector<Stats
         g.mean = band(&StatsRow::mean);
         g.mean_depth = band(&StatsRow::mean_depth);
         g.max_depth = band(&StatsRow::max_depth);
+        g.best_so_far = band(&StatsRow::best_so_far);
+        g.qd_score = band(&StatsRow::qd_score);
+        g.coverage = band(&StatsRow::coverage);
         out.push_back(g);
     }
     return out;
@@ -397,6 +423,12 @@ std::vector<GenerationSummary> summarise(const std::vector<std::vector<StatsRow>
         s.max_depth = mean_of(column(&StatsRow::max_depth));
         s.mean_size = mean_of(column(&StatsRow::mean_size));
         s.max_size = mean_of(column(&StatsRow::max_size));
+        s.best_so_far = mean_of(column(&StatsRow::best_so_far));
+        s.best_so_far_sd = sd_of(column(&StatsRow::best_so_far));
+        s.qd_score = mean_of(column(&StatsRow::qd_score));
+        s.qd_score_sd = sd_of(column(&StatsRow::qd_score));
+        s.coverage = mean_of(column(&StatsRow::coverage));
+        s.coverage_sd = sd_of(column(&StatsRow::coverage));
         out.push_back(s);
     }
     return out;

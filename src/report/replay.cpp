@@ -18,9 +18,11 @@
 #include "cic/sim/layout.hpp"
 #include "cic/io/archive_xml.hpp"
 #include "cic/io/gait_xml.hpp"
+#include "cic/report/plot.hpp"
 #include "cic/experiments/map_elites_grid.hpp"
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
+#include "cic/experiments/registry.hpp"
 
 namespace cic::app {
 namespace fs = std::filesystem;
@@ -56,15 +58,6 @@ Source locate(const std::string& what) {
     return s;
 }
 
-std::vector<std::string> joint_names_of(const sim::RobotSpec& robot) {
-    std::vector<std::string> names;
-    for (int m : robot.actuated()) {
-        const auto& mod = robot.modules[static_cast<std::size_t>(m)];
-        names.push_back(mod.name.empty() ? fmt::format("m{}", m) : mod.name);
-    }
-    return names;
-}
-
 int centre_body_of(const sim::RobotSpec& robot) {
     const sim::BodyLayout layout = sim::make_body_layout(robot);
     return layout.geoms[static_cast<std::size_t>(layout.chassis_geom[static_cast<std::size_t>(robot.centre)])].body;
@@ -85,9 +78,23 @@ std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& setti
     opt.record_ground = trace;
     sim::EvalResult r = sim::evaluate(setup.robot, *controller, setup.sim, opt);
     ReplayItem item;
-    item.label = fmt::format("generation {}, best {} gait", g.generation, g.optimizer);
+    // The champion was found in the first generation whose best so far reached it.
+    int found = -1;
+    try {
+        for (const StatsRow& row : read_stats_csv(src.settings.parent_path() / "stats.csv"))
+            if (row.generation <= g.generation && row.best_so_far >= g.champion.fitness) {
+                found = row.generation;
+                break;
+            }
+    } catch (const InputError&) {
+        // no statistics beside the checkpoint: say only what the checkpoint knows
+    }
+    item.label = found >= 0 ? fmt::format("best {} gait, found in generation {} (of 0 to {})", g.optimizer, found,
+                                          g.generation)
+                            : fmt::format("best {} gait of generations 0 to {}", g.optimizer, g.generation);
+    item.who = fmt::format("best {} gait", g.optimizer);
     item.stored_fitness = g.champion.fitness;
-    item.generation = g.generation;
+    item.generation = found >= 0 ? found : g.generation;
     if (r.recording) item.recording = *r.recording;
     item.trace = r.trace;
     if (trace)
@@ -95,7 +102,7 @@ std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& setti
     item.replayed_fitness = r.fitness;
     item.raw_fitness = r.fitness;   // no penalty in the gait experiment
     item.centre_body = centre_body_of(setup.robot);
-    item.joint_names = joint_names_of(setup.robot);
+    item.joint_names = sim::joint_names(setup.robot);
     fill_walk(item, setup.robot, r);
     return {std::move(item)};
 }
@@ -194,7 +201,7 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
             if (trace)
                 for (const auto& row : r.trace) item.raw_outputs.push_back(row.desired);
         } else {
-            const hypergp::Outcome o = hypergp::run(*model, e->genotype, opt, trace);
+            const hypergp::Outcome o = experiments::evaluate_as_type(*model, settings, e->genotype, opt, trace);
             r = o.result;
             item.replayed_fitness = o.fitness;
             item.raw_fitness = o.distance_fitness;
@@ -208,7 +215,7 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
         if (r.recording) item.recording = *r.recording;
         item.trace = r.trace;
         item.centre_body = centre_body_of(robot);
-        item.joint_names = joint_names_of(robot);
+        item.joint_names = sim::joint_names(robot);
         fill_walk(item, robot, r);
         items.push_back(std::move(item));
     }
@@ -224,12 +231,14 @@ std::pair<double, double> eq71_terms(const sim::RobotSpec& robot, const sim::Eva
 // Eq. 7.1's terms and, when the ground was recorded, each foot's duty factor.
 void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalResult& r) {
     std::tie(item.distance, item.elevation) = eq71_terms(robot, r);
+    item.preferred_axis = robot.preferred == sim::Axis::X ? 0 : 1;
+    for (std::size_t k = 0; k < 3; ++k) {
+        item.measured_from[k] = r.start[k];
+        item.measured_to[k] = r.end[k];
+    }
     if (r.module_ground_steps.empty()) return;
     item.duty_factors = sim::duty_factors(robot, r);
-    for (int m : sim::branch_ends(robot)) {
-        const std::string& name = robot.modules[static_cast<std::size_t>(m)].name;
-        item.foot_names.push_back(name.empty() ? "m" + std::to_string(m) : name);
-    }
+    item.foot_names = sim::foot_names(robot);
 }
 
 std::vector<ReplayItem> replay(const std::string& source, const std::string& individual, int count, double fps,
@@ -268,7 +277,7 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
 
     const hypergp::Model model = hypergp::Model::from_settings(settings);
     const int centre_body = centre_body_of(model.robot);
-    const std::vector<std::string> joint_names = joint_names_of(model.robot);
+    const std::vector<std::string> joint_names = sim::joint_names(model.robot);
 
     std::vector<ReplayItem> items;
     for (const auto& ind : chosen) {
@@ -276,7 +285,8 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
         opt.record_fps = fps;
         opt.record_trace = trace;
         opt.record_ground = trace;
-        const hypergp::Outcome o = hypergp::run(model, ind->genotype, opt, trace);
+        // Scored as the run's type scores it (a registered type's own fitness), eq. 7.1 beside it.
+        const hypergp::Outcome o = experiments::evaluate_as_type(model, settings, ind->genotype, opt, trace);
         ReplayItem item;
         item.label = fmt::format("generation {}, individual {}", pop.population.generation, ind->id);
         item.stored_fitness = ind->fitness;

@@ -166,6 +166,32 @@ double vargha_delaney_a12(std::span<const double> x, std::span<const double> y) 
            (static_cast<double>(x.size()) * static_cast<double>(y.size()));
 }
 
+Interval a12_interval(std::span<const double> x, std::span<const double> y, double z) {
+    check_sample(x, "a12_interval (first sample)");
+    check_sample(y, "a12_interval (second sample)");
+    if (!(z > 0)) throw std::invalid_argument("a12_interval: z must be > 0");
+    auto beats = [](double a, double b) { return a > b ? 1.0 : a == b ? 0.5 : 0.0; };
+    std::vector<double> v10(x.size(), 0.0), v01(y.size(), 0.0);
+    for (std::size_t i = 0; i < x.size(); ++i)
+        for (std::size_t j = 0; j < y.size(); ++j) {
+            const double s = beats(x[i], y[j]);
+            v10[i] += s / static_cast<double>(y.size());
+            v01[j] += s / static_cast<double>(x.size());
+        }
+    auto variance = [](const std::vector<double>& v) {
+        if (v.size() < 2) return 0.0;
+        double mean = 0;
+        for (double a : v) mean += a / static_cast<double>(v.size());
+        double ss = 0;
+        for (double a : v) ss += (a - mean) * (a - mean);
+        return ss / static_cast<double>(v.size() - 1);
+    };
+    const double a12 = vargha_delaney_a12(x, y);
+    const double half = z * std::sqrt(variance(v10) / static_cast<double>(x.size()) +
+                                      variance(v01) / static_cast<double>(y.size()));
+    return {std::max(0.0, a12 - half), std::min(1.0, a12 + half)};
+}
+
 EffectMagnitude a12_magnitude(double a12) {
     if (std::isnan(a12) || a12 < 0.0 || a12 > 1.0)
         throw std::invalid_argument("a12_magnitude: A12 must be within [0, 1]");

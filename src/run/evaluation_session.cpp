@@ -50,15 +50,6 @@ std::string job_kind_of(const io::Settings& s) {
     throw InputError("experiment type '" + kind.type.name + "' serves no single job kind to evaluate genotypes with");
 }
 
-std::vector<std::string> joint_names_of(const sim::RobotSpec& robot) {
-    std::vector<std::string> names;
-    for (int m : robot.actuated()) {
-        const auto& mod = robot.modules[static_cast<std::size_t>(m)];
-        names.push_back(mod.name.empty() ? fmt::format("m{}", m) : mod.name);
-    }
-    return names;
-}
-
 } // namespace
 
 struct EvaluationSession::Impl {
@@ -246,19 +237,16 @@ Walk EvaluationSession::simulate(const Genotype& g, bool trace) const {
         r = sim::evaluate(im.setup->robot, *controller, im.setup->sim, options);
         w.fitness = r.fitness;
     } else {
-        hypergp::Outcome o = hypergp::run(*im.model, im.forest_of(g, 0), options);
-        w.fitness = o.fitness;   // with the oscillation penalty, as the run scores it
+        hypergp::Outcome o = experiments::evaluate_as_type(*im.model, im.settings, im.forest_of(g, 0), options);
+        w.fitness = o.fitness;   // as the run scores it: the penalty, or a registered type's own score
         r = std::move(o.result);
     }
     const sim::RobotSpec& robot = im.robot();
     w.failed = r.failed;
     w.failure = r.failure;
     if (!r.failed) std::tie(w.distance, w.elevation) = sim::walk_terms(robot, r);
-    w.joint_names = joint_names_of(robot);
-    for (int m : sim::branch_ends(robot)) {
-        const std::string& name = robot.modules[static_cast<std::size_t>(m)].name;
-        w.foot_names.push_back(name.empty() ? fmt::format("m{}", m) : name);
-    }
+    w.joint_names = sim::joint_names(robot);
+    w.foot_names = sim::foot_names(robot);
     for (const sim::TraceRow& row : r.trace) {
         w.time.push_back(row.t);
         w.centre.insert(w.centre.end(), row.centre.begin(), row.centre.end());

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <fstream>
+
 #include "cic/run/progress.hpp"
 #include "cic/io/gait_xml.hpp"
 #include "cic/io/population_xml.hpp"
@@ -18,6 +20,9 @@
 
 namespace cic::app::detail {
 namespace {
+
+// After kStatsColumns: the best fitness of the run so far (`best` is each generation's).
+constexpr const char* kGaitStatsColumns = "best_so_far";
 
 // Statistics of the current candidates, in the columns GP runs write (the
 // tree columns stay 0).
@@ -92,6 +97,14 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
     auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
     std::optional<io::StatsWriter> stats;
     fs::create_directories(opt.run_dir / "populations");
+    // A run resumed in place from a file written before the column keeps its header.
+    bool with_best_so_far = true;
+    if (prepared.gait_resume && opt.continue_in_place) {
+        std::ifstream in(opt.run_dir / "stats.csv");
+        std::string header;
+        std::getline(in, header);
+        with_best_so_far = header.empty() || header.find(",best_so_far") != std::string::npos;
+    }
     int restarts_said = search.restarts();
     int last_stalled = 0;          // why the restart a step begins was decided
     bool last_collapsed = false;
@@ -106,7 +119,8 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
         const gp::GenerationRecord r = record_of(search, evaluator.failed() - failed_before, seconds_since(started),
                                                  generation_seconds);
         failed_before = evaluator.failed();
-        stats->write(r);
+        // `best` is this generation's; best_so_far the run's (the console's and the replay's).
+        stats->write(r, with_best_so_far ? fmt::format("{:.17g}", search.champion().fitness) : std::string());
         console.log(fmt::format("gen {} best {:.17g} mean {:.17g} median {:.17g} champion {:.17g} evaluations {} {:.2f}s",
                                 r.generation, r.best, r.mean, r.median, search.champion().fitness, r.evaluations,
                                 r.wall_seconds));
@@ -135,10 +149,11 @@ int run_gait(PreparedRun prepared, const RunOptions& opt) {
         say_checkpoint_notes(prepared, console);
         say(fmt::format("resuming from {} at generation {} ({} evaluations)", s.control.population_load_from,
                         g.generation, g.evaluations));
-        stats.emplace(opt.continue_in_place ? io::StatsWriter(opt.run_dir / "stats.csv", g.generation)
-                                            : io::StatsWriter(opt.run_dir / "stats.csv"));
+        stats.emplace(opt.continue_in_place
+                          ? io::StatsWriter(opt.run_dir / "stats.csv", g.generation, kGaitStatsColumns)
+                          : io::StatsWriter(opt.run_dir / "stats.csv", kGaitStatsColumns));
     } else {
-        stats.emplace(opt.run_dir / "stats.csv");
+        stats.emplace(opt.run_dir / "stats.csv", kGaitStatsColumns);
         const auto t0 = Clock::now();
         search.initialise(batch);
         after_generation(seconds_since(t0));

@@ -145,6 +145,25 @@ std::vector<int> branch_ends(const RobotSpec& robot) {
     return ends;
 }
 
+namespace {
+std::string module_name(const RobotSpec& robot, int m) {
+    const std::string& name = robot.modules[static_cast<std::size_t>(m)].name;
+    return name.empty() ? "m" + std::to_string(m) : name;
+}
+} // namespace
+
+std::vector<std::string> joint_names(const RobotSpec& robot) {
+    std::vector<std::string> names;
+    for (int m : robot.actuated()) names.push_back(module_name(robot, m));
+    return names;
+}
+
+std::vector<std::string> foot_names(const RobotSpec& robot) {
+    std::vector<std::string> names;
+    for (int m : branch_ends(robot)) names.push_back(module_name(robot, m));
+    return names;
+}
+
 std::vector<double> duty_factors(const RobotSpec& robot, const EvalResult& result) {
     std::vector<double> out;
     if (result.module_ground_steps.empty()) return out;

@@ -334,23 +334,72 @@ std::string pairs_csv(const std::vector<ConfigResult>& configs, const std::vecto
 
 } // namespace
 
-CompareTables compare_study(const std::filesystem::path& study, const CompareRequest& o) {
+namespace {
+
+// The index and the two result lists every form of the comparison starts from.
+struct Comparison {
+    StudyIndex index;
+    std::vector<ConfigResult> configs;
+    std::vector<PairResult> pairs;
+};
+
+Comparison compare(const std::filesystem::path& study, const CompareRequest& o) {
     if (!(o.alpha > 0 && o.alpha < 1)) throw InputError(fmt::format("--alpha {} must be between 0 and 1", o.alpha));
     if (o.has_threshold && std::isnan(o.threshold)) throw InputError("--threshold must be a number");
     if (std::find(kCompareMetrics.begin(), kCompareMetrics.end(), o.metric) == kCompareMetrics.end())
         throw InputError(fmt::format("--metric {}: not one of {}", o.metric, fmt::join(kCompareMetrics, ", ")));
     if (!fs::is_directory(study))
         throw InputError("not a folder (give a study folder from cic sweep)", study.string());
-    const StudyIndex index = read_study_index(study);
-    if (index.runs.empty()) throw InputError("the study index lists no runs", index.file.string());
-    const auto configs = summarise_configs(index, o);
+    Comparison c{read_study_index(study), {}, {}};
+    if (c.index.runs.empty()) throw InputError("the study index lists no runs", c.index.file.string());
+    c.configs = summarise_configs(c.index, o);
     std::size_t used = 0;
-    for (const auto& c : configs) used += c.runs;
+    for (const auto& config : c.configs) used += config.runs;
     if (used == 0)
         throw InputError("no run of the study has status done yet (--include-unfinished uses the others)",
-                         index.file.string());
-    const auto pairs = compare_pairs(configs, o.alpha);
-    return {markdown(index, configs, pairs, o), configs_csv(index, configs, o), pairs_csv(configs, pairs, o)};
+                         c.index.file.string());
+    c.pairs = compare_pairs(c.configs, o.alpha);
+    return c;
+}
+
+} // namespace
+
+CompareTables compare_study(const std::filesystem::path& study, const CompareRequest& o) {
+    const Comparison c = compare(study, o);
+    return {markdown(c.index, c.configs, c.pairs, o), configs_csv(c.index, c.configs, o),
+            pairs_csv(c.configs, c.pairs, o)};
+}
+
+CompareData compare_data(const std::filesystem::path& study, const CompareRequest& o) {
+    const Comparison c = compare(study, o);
+    CompareData d;
+    d.metric = o.metric;
+    d.alpha = o.alpha;
+    for (const ConfigResult& r : c.configs) {
+        CompareConfigRow row;
+        row.config = r.config;
+        if (r.desc) {
+            row.n = r.desc->n;
+            row.median = r.desc->median, row.q1 = r.desc->q1, row.q3 = r.desc->q3;
+            row.mean = r.desc->mean, row.sd = r.desc->sd;
+        }
+        d.configs.push_back(row);
+    }
+    for (const PairResult& r : c.pairs) {
+        ComparePairRow row;
+        row.a = c.configs[r.a].config;
+        row.b = c.configs[r.b].config;
+        row.tested = r.tested;
+        row.verdict = r.verdict;
+        if (r.tested) {
+            row.p = r.mwu.p, row.p_holm = r.p_holm, row.a12 = r.a12, row.significant = r.significant;
+            row.effect = std::string(stats::to_string(r.effect));
+            const auto ci = stats::a12_interval(c.configs[r.a].sample, c.configs[r.b].sample);
+            row.a12_low = ci.low, row.a12_high = ci.high;
+        }
+        d.pairs.push_back(row);
+    }
+    return d;
 }
 
 } // namespace cic::app

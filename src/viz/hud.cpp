@@ -37,12 +37,17 @@ Hud::Hud(int width, int height) {
     text_->setBackdropColor(osg::Vec4(1, 1, 1, 0.8f));
     text_->setAlignment(osgText::Text::LEFT_TOP);
     text_->setDataVariance(osg::Object::DYNAMIC);
+    // A pale box behind the lines: readable over the ground as over the sky.
+    text_->setDrawMode(osgText::Text::TEXT | osgText::Text::FILLEDBOUNDINGBOX);
+    text_->setBoundingBoxColor(osg::Vec4(1, 1, 1, 0.7f));
+    text_->setBoundingBoxMargin(3.0f);
 
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     geode->addDrawable(text_);
     auto* ss = geode->getOrCreateStateSet();
     ss->setMode(GL_LIGHTING, osg::StateAttribute::OFF);
     ss->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
+    ss->setMode(GL_BLEND, osg::StateAttribute::ON);
     camera_->addChild(geode);
     resize(width, height);
 }
@@ -66,14 +71,17 @@ void Hud::resize(int width, int height) {
 namespace cic::viz {
 
 std::string hud_text(const ViewInfo& info, double t, double duration, double speed, bool paused, int index,
-                     int count, bool keys) {
+                     int count, bool keys, const std::string& walked) {
     std::string who = info.generation >= 0
                           ? fmt::format("generation {}  |  individual {}", info.generation, info.individual)
                           : info.individual;
     std::string text = fmt::format("{}  |  fitness {:.4f}\n", who, info.fitness);
     text += fmt::format("t = {:.2f} / {:.2f} s   speed {:g}x{}", t, duration, speed, paused ? "   [paused]" : "");
     if (count > 1) text += fmt::format("   entry {}/{}", index + 1, count);
-    if (keys) text += "\nspace pause  |  r restart  |  + / - speed  |  n / p next / previous  |  Esc quit";
+    if (!walked.empty()) text += "\n" + walked;
+    if (keys)
+        text += "\nspace pause  |  r restart  |  + / - speed  |  n / p next / previous  |  t trail  |  c camera  |  "
+                "Esc quit";
     return text;
 }
 

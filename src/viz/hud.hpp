@@ -27,8 +27,9 @@ private:
 
 namespace cic::viz {
 
-// The overlay's lines: who is shown, the play state, the keys (when `keys`).
+// The overlay's lines: who is shown, the play state, `walked` (a line of its
+// own when not empty: the distance walked so far), the keys (when `keys`).
 std::string hud_text(const ViewInfo& info, double t, double duration, double speed, bool paused, int index,
-                     int count, bool keys);
+                     int count, bool keys, const std::string& walked = {});
 
 } // namespace cic::viz

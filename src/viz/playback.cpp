@@ -19,6 +19,8 @@ bool Playback::press(int key) {
     case '-': speed_ = std::max(speed_ / 2, kMinSpeed); return true;
     case 'n': entry_ = (entry_ + 1) % count_; t_ = 0.0; return true;
     case 'p': entry_ = (entry_ + count_ - 1) % count_; t_ = 0.0; return true;
+    case 't': trail_ = !trail_; return true;
+    case 'c': fixed_camera_ = !fixed_camera_; return true;
     default: return false;
     }
 }

@@ -12,7 +12,8 @@ public:
     Playback(int count, double speed);
 
     // Space pause/resume, r restart, + = speed x2, - speed /2, n / p next / previous
-    // entry (wrapping; the new entry starts at t = 0). Returns false for other keys.
+    // entry (wrapping; the new entry starts at t = 0), t trail on / off, c camera
+    // following / fixed. Returns false for other keys.
     bool press(int key);
     // Advances by `elapsed` wall seconds times the speed, unless paused; clamps to
     // [0, duration] (the last frame stays on screen).
@@ -23,6 +24,9 @@ public:
     bool paused() const { return paused_; }
     int entry() const { return entry_; }
     int count() const { return count_; }
+    bool trail() const { return trail_; }
+    bool fixed_camera() const { return fixed_camera_; }
+    void set_view(bool trail, bool fixed_camera) { trail_ = trail, fixed_camera_ = fixed_camera; }
 
 private:
     int count_;
@@ -30,6 +34,8 @@ private:
     double t_ = 0.0;
     bool paused_ = false;
     int entry_ = 0;
+    bool trail_ = true;
+    bool fixed_camera_ = false;
 };
 
 } // namespace cic::viz

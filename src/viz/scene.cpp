@@ -3,12 +3,15 @@
 #include <osg/Geode>
 #include <osg/Geometry>
 #include <osg/LightModel>
+#include <osg/LineWidth>
 #include <osg/Material>
 #include <osg/PolygonOffset>
 #include <osg/ShapeDrawable>
 #include <osg/Texture2D>
 #include <osgShadow/ShadowMap>
 #include <osgShadow/ShadowedScene>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -145,6 +148,63 @@ RobotScene::RobotScene(bool shadows) {
     robot_ = new osg::Group;
     robot_->setNodeMask(kReceivesShadow | kCastsShadow);
     root_->addChild(robot_);
+    trail_ = new osg::Group;
+    trail_->setNodeMask(kReceivesShadow);
+    root_->addChild(trail_);
+}
+
+void RobotScene::set_trail(bool on) {
+    trail_on_ = on;
+    trail_->setNodeMask(on ? kReceivesShadow : 0u);
+}
+
+// The centre's recorded positions as a line on the ground, drawn up to the
+// current time, and a flat ring where it starts.
+void RobotScene::build_trail() {
+    trail_->removeChildren(0, trail_->getNumChildren());
+    const float lift = static_cast<float>(0.004 * radius_);   // above the ground and its grid lines
+    osg::ref_ptr<osg::Vec3Array> points = new osg::Vec3Array;
+    for (const osg::Vec3d& p : path_) points->push_back(osg::Vec3(static_cast<float>(p.x()), static_cast<float>(p.y()), lift));
+    trail_line_ = new osg::Geometry;
+    trail_line_->setVertexArray(points);
+    osg::ref_ptr<osg::Vec4Array> colour = new osg::Vec4Array;
+    colour->push_back(rgba(kTrail));
+    trail_line_->setColorArray(colour, osg::Array::BIND_OVERALL);
+    trail_drawn_ = new osg::DrawArrays(GL_LINE_STRIP, 0, 1);
+    trail_line_->addPrimitiveSet(trail_drawn_);
+    trail_line_->setDataVariance(osg::Object::DYNAMIC);
+    trail_line_->setUseDisplayList(false);
+    auto* ts = trail_line_->getOrCreateStateSet();
+    ts->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+    ts->setAttributeAndModes(new osg::LineWidth(4.0f));
+    // Drawn last and over everything: a robot walks along its own body, which would hide the path.
+    ts->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+    ts->setRenderBinDetails(100, "RenderBin");
+    // Ring: a triangle strip between two circles around the start.
+    osg::ref_ptr<osg::Geometry> ring = new osg::Geometry;
+    osg::ref_ptr<osg::Vec3Array> rv = new osg::Vec3Array;
+    const osg::Vec3d start = path_.empty() ? osg::Vec3d() : path_.front();
+    const double outer = 0.5 * tile_, inner = 0.32 * tile_;
+    for (int k = 0; k <= 48; ++k) {
+        const double a = 2 * M_PI * k / 48;
+        for (double r : {outer, inner})
+            rv->push_back(osg::Vec3(static_cast<float>(start.x() + r * std::cos(a)),
+                                    static_cast<float>(start.y() + r * std::sin(a)), lift));
+    }
+    ring->setVertexArray(rv);
+    osg::ref_ptr<osg::Vec4Array> rc = new osg::Vec4Array;
+    rc->push_back(rgba(kTrailStart));
+    ring->setColorArray(rc, osg::Array::BIND_OVERALL);
+    ring->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLE_STRIP, 0, static_cast<GLsizei>(rv->size())));
+    auto* rs = ring->getOrCreateStateSet();
+    rs->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+    rs->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(trail_line_);
+    geode->addDrawable(ring);
+    // Drawn over the ground (which has a polygon offset) without fighting it.
+    geode->getOrCreateStateSet()->setAttributeAndModes(new osg::PolygonOffset(-1.0f, -1.0f));
+    trail_->addChild(geode);
 }
 
 void RobotScene::show(const ViewEntry& entry) {
@@ -159,6 +219,12 @@ void RobotScene::show(const ViewEntry& entry) {
 
     ground_->removeChildren(0, ground_->getNumChildren());
     ground_->addChild(make_ground(tile_));
+
+    path_.clear();
+    const auto centre = static_cast<std::size_t>(entry.centre_body);
+    for (const auto& frame : entry.recording.frames)
+        path_.emplace_back(frame[centre].pos[0], frame[centre].pos[1], frame[centre].pos[2]);
+    build_trail();
 
     robot_->removeChildren(0, robot_->getNumChildren());
     bodies_.clear();
@@ -192,6 +258,21 @@ void RobotScene::set_time(double t) {
     for (std::size_t b = 0; b < bodies_.size(); ++b) bodies_[b]->setMatrix(pose_matrix(poses[b]));
     const auto& c = poses[static_cast<std::size_t>(entry_->centre_body)].pos;
     centre_.set(c[0], c[1], c[2]);
+    // The trail up to now: the recorded frames so far, then the centre itself.
+    const double now = sim::recording_start(entry_->recording) + std::clamp(t, 0.0, duration());
+    const auto& times = entry_->recording.times;
+    const auto shown = static_cast<std::size_t>(std::upper_bound(times.begin(), times.end(), now) - times.begin());
+    if (trail_line_ && !path_.empty()) {
+        auto* points = static_cast<osg::Vec3Array*>(trail_line_->getVertexArray());
+        const std::size_t n = std::clamp<std::size_t>(shown, 1, path_.size());
+        // The point after the frames shown follows the centre between frames.
+        if (n < path_.size()) (*points)[n].set(static_cast<float>(c[0]), static_cast<float>(c[1]), (*points)[0].z());
+        for (std::size_t k = n + 1; k < path_.size(); ++k)
+            (*points)[k].set(static_cast<float>(path_[k].x()), static_cast<float>(path_[k].y()), (*points)[0].z());
+        trail_drawn_->setCount(static_cast<GLsizei>(std::min(n + 1, path_.size())));
+        points->dirty();
+        trail_line_->dirtyBound();
+    }
     // Keep the finite ground under the robot, moved by whole checker periods so it looks still.
     const double period = 2 * tile_;
     ground_->setMatrix(osg::Matrixd::translate(std::round(c[0] / period) * period,
@@ -199,6 +280,41 @@ void RobotScene::set_time(double t) {
 }
 
 osg::Vec3d RobotScene::focus() const { return {centre_.x(), centre_.y(), 0.35 * radius_}; }
+
+osg::Vec3d RobotScene::path_focus() const {
+    if (path_.empty()) return focus();
+    osg::BoundingBoxd box;
+    for (const osg::Vec3d& p : path_) box.expandBy(p);
+    return {box.center().x(), box.center().y(), 0.35 * radius_};
+}
+
+osg::Vec3d RobotScene::path_eye(double fov_degrees, double aspect) const {
+    osg::BoundingBoxd box;
+    for (const osg::Vec3d& p : path_) box.expandBy(osg::Vec3d(p.x(), p.y(), 0));
+    // Half the path's extent plus the robot, as seen across a narrower field of view when the frame is tall.
+    const double half = 0.5 * std::max(box.xMax() - box.xMin(), box.yMax() - box.yMin()) + radius_;
+    const double half_angle = 0.5 * osg::DegreesToRadians(fov_degrees) * std::min(1.0, aspect);
+    // From higher than the following camera: the trail on the ground shows beside the robot.
+    const osg::Vec3d from(1.2, -1.9, 2.0);
+    const double distance = std::max(1.15 * half / std::tan(half_angle), from.length() * radius_);
+    osg::Vec3d direction = from;
+    direction.normalize();
+    return path_focus() + direction * distance;
+}
+
+double RobotScene::walked() const {
+    if (!entry_ || path_.empty()) return 0.0;
+    const osg::Vec3d d = centre_ - path_.front();
+    if (entry_->preferred_axis == 0) return std::fabs(d.x());
+    if (entry_->preferred_axis == 1) return std::fabs(d.y());
+    return std::hypot(d.x(), d.y());
+}
+
+std::string RobotScene::walked_text() const {
+    if (!entry_) return {};
+    const char* along = entry_->preferred_axis == 0 ? " along x" : entry_->preferred_axis == 1 ? " along y" : "";
+    return fmt::format("walked {:.2f} m{} from the start", walked(), along);
+}
 
 osg::Vec3d RobotScene::default_eye() const {
     // The same view direction as the POV-Ray camera (src/io/povray.cpp), in z-up coordinates.

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 #include "cic/sim/recording_sampler.hpp"
@@ -57,19 +58,27 @@ osg::ref_ptr<osg::GraphicsContext> offscreen_context(int width, int height) {
 
 } // namespace
 
-void screenshot(const ViewEntry& entry, double at_seconds, int width, int height, const std::filesystem::path& png_path,
-                bool shadows) {
+namespace {
+
+void check_size(int width, int height) {
     if (width <= 0 || height <= 0 || width > 8192 || height > 8192)
         throw std::invalid_argument("screenshot: width and height must be in [1, 8192]");
-    if (!std::isfinite(at_seconds) || at_seconds < 0) throw std::invalid_argument("screenshot: --at must be >= 0");
-    if (png_path.extension() != ".png") throw std::invalid_argument("screenshot: the file must end in .png");
+}
 
-    RobotScene scene(shadows);
+void check_time(double at_seconds) {
+    if (!std::isfinite(at_seconds) || at_seconds < 0) throw std::invalid_argument("screenshot: --at must be >= 0");
+}
+
+// One instant rendered offscreen, with the overlay.
+osg::ref_ptr<osg::Image> render_image(const ViewEntry& entry, double at_seconds, int width, int height,
+                                      const SceneOptions& options) {
+    RobotScene scene(options.shadows);
     scene.show(entry);
+    scene.set_trail(options.trail);
     scene.set_time(at_seconds);
     Hud hud(width, height);
     hud.set_text(hud_text(entry.info, std::min(at_seconds, scene.duration()), scene.duration(), 1.0, false, 0, 1,
-                          false));
+                          false, scene.walked_text()));
     osg::ref_ptr<osg::Group> root = new osg::Group;
     root->addChild(scene.root());
     root->addChild(hud.camera());
@@ -85,16 +94,54 @@ void screenshot(const ViewEntry& entry, double at_seconds, int width, int height
     camera->setDrawBuffer(buffer);
     camera->setReadBuffer(buffer);
     camera->setClearColor(osg::Vec4(kSky[0], kSky[1], kSky[2], 1));
-    camera->setProjectionMatrixAsPerspective(40.0, static_cast<double>(width) / height, 0.05, 2000.0);
-    camera->setViewMatrixAsLookAt(scene.default_eye(), scene.focus(), osg::Vec3d(0, 0, 1));
+    constexpr double kFov = 40.0;
+    const double aspect = static_cast<double>(width) / height;
+    camera->setProjectionMatrixAsPerspective(kFov, aspect, 0.05, 2000.0);
+    if (options.camera == CameraMode::Fixed)
+        camera->setViewMatrixAsLookAt(scene.path_eye(kFov, aspect), scene.path_focus(), osg::Vec3d(0, 0, 1));
+    else
+        camera->setViewMatrixAsLookAt(scene.default_eye(), scene.focus(), osg::Vec3d(0, 0, 1));
     osg::ref_ptr<osg::Image> image = new osg::Image;
     camera->setFinalDrawCallback(new Capture(image.get()));
     viewer.setSceneData(root);
     viewer.realize();
     viewer.frame();
     if (!image->data()) throw std::runtime_error("screenshot: nothing was read back from the OpenGL context");
-    if (!osgDB::writeImageFile(*image, png_path.string()))
+    return image;
+}
+
+void write_png(const osg::Image& image, const std::filesystem::path& png_path) {
+    if (!osgDB::writeImageFile(image, png_path.string()))
         throw std::runtime_error("screenshot: cannot write " + png_path.string() + " (OSG png plugin missing?)");
+}
+
+} // namespace
+
+void screenshot(const ViewEntry& entry, double at_seconds, int width, int height, const std::filesystem::path& png_path,
+                const SceneOptions& options) {
+    check_size(width, height);
+    check_time(at_seconds);
+    if (png_path.extension() != ".png") throw std::invalid_argument("screenshot: the file must end in .png");
+    write_png(*render_image(entry, at_seconds, width, height, options), png_path);
+}
+
+void screenshot_strip(const ViewEntry& entry, const std::vector<double>& times, int width, int height,
+                      const std::filesystem::path& png_path, const SceneOptions& options) {
+    check_size(width, height);
+    if (times.empty() || times.size() > 64) throw std::invalid_argument("screenshot: a strip takes 1 to 64 times");
+    if (static_cast<long>(width) * static_cast<long>(times.size()) > 16384)
+        throw std::invalid_argument("screenshot: the strip would be wider than 16384 pixels");
+    for (double t : times) check_time(t);
+    if (png_path.extension() != ".png") throw std::invalid_argument("screenshot: the file must end in .png");
+    osg::ref_ptr<osg::Image> strip = new osg::Image;
+    const int total = width * static_cast<int>(times.size());
+    strip->allocateImage(total, height, 1, GL_RGB, GL_UNSIGNED_BYTE);
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        const osg::ref_ptr<osg::Image> frame = render_image(entry, times[k], width, height, options);
+        for (int y = 0; y < height; ++y)
+            std::memcpy(strip->data(static_cast<int>(k) * width, y), frame->data(0, y), static_cast<std::size_t>(width) * 3);
+    }
+    write_png(*strip, png_path);
 }
 
 } // namespace cic::viz

@@ -75,26 +75,36 @@ int Viewer::run() {
     if (auto* window = dynamic_cast<osgViewer::GraphicsWindow*>(viewer.getCamera()->getGraphicsContext()))
         window->setWindowName(options_.window_title);
 
+    playback.set_view(options_.trail, options_.camera == CameraMode::Fixed);
     int shown = -1;
+    bool fixed = !playback.fixed_camera();   // differs: the first frame sets the home view
     osg::Timer_t last = osg::Timer::instance()->tick();
     while (!viewer.done()) {
         const osg::Timer_t now = osg::Timer::instance()->tick();
         const double elapsed = osg::Timer::instance()->delta_s(last, now);
         last = now;
-        if (playback.entry() != shown) {
+        if (playback.entry() != shown || playback.fixed_camera() != fixed) {
             shown = playback.entry();
+            fixed = playback.fixed_camera();
             scene.show(entries_[static_cast<std::size_t>(shown)]);
-            orbit->setHomePosition(scene.default_eye(), scene.focus(), osg::Vec3d(0, 0, 1));
+            scene.set_time(playback.time());
+            const double aspect = static_cast<double>(options_.width) / options_.height;
+            if (fixed)
+                orbit->setHomePosition(scene.path_eye(40.0, aspect), scene.path_focus(), osg::Vec3d(0, 0, 1));
+            else
+                orbit->setHomePosition(scene.default_eye(), scene.focus(), osg::Vec3d(0, 0, 1));
             viewer.home();
         }
+        scene.set_trail(playback.trail());
         playback.advance(elapsed, scene.duration());
         const osg::Vec3d before = scene.focus();
         scene.set_time(playback.time());
-        orbit->setCenter(orbit->getCenter() + (scene.focus() - before));   // follow, keep the user's orbit
+        if (!fixed) orbit->setCenter(orbit->getCenter() + (scene.focus() - before));   // follow, keep the user's orbit
         const auto* vp = viewer.getCamera()->getViewport();
         if (vp) hud.resize(static_cast<int>(vp->width()), static_cast<int>(vp->height()));
         hud.set_text(hud_text(entries_[static_cast<std::size_t>(shown)].info, playback.time(), scene.duration(),
-                              playback.speed(), playback.paused(), shown, playback.count(), true));
+                              playback.speed(), playback.paused(), shown, playback.count(), true,
+                              scene.walked_text()));
         viewer.frame();
     }
     return 0;

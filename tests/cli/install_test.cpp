@@ -4,6 +4,8 @@
 // without warnings and the completion script is valid bash. Also find_settings_file.
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -261,6 +263,39 @@ TEST(Install, PluginTypeBuildsAndRunsThroughCicsCommandLine) {
     as_gait.neural.substrate = "gait";
     const auto g = cic::hypergp::run(cic::hypergp::Model::from_settings(as_gait), square_pop.population.best().genotype);
     EXPECT_NE(g.fitness, square_pop.population.best().fitness) << "the square wave was not used";
+
+    // Its `circle` type scores the whole walk (the centre's path, asked for
+    // through WalkNeeds): 1 and 2 workers give the same bytes, and the run's best
+    // replays (`assess`) to its stored fitness, which eq. 7.1 is not.
+    std::string circle_bytes[2];
+    fs::path circle_run;
+    for (int w : {1, 2}) {
+        const fs::path out = scratch.path / ("circle-" + std::to_string(w));
+        const Shell c = sh(cic + " --quiet --settings " + q(example / "circle_r1.xml") +
+                           " --set Control.maximumIterations=2 --set GP.generatedPopulationSize=6" +
+                           " --set Simulator.sample_to=4 --set Experiment.workers=" + std::to_string(w) +
+                           " --output " + q(out));
+        ASSERT_EQ(c.rc, 0) << c.out;
+        circle_run = out / "circle_r1-001";
+        circle_bytes[w - 1] = read_text(circle_run / "population.xml");
+    }
+    EXPECT_EQ(circle_bytes[0], circle_bytes[1]);
+    const cic::io::PopulationFile circle_pop = cic::io::load_population(circle_run / "population.xml");
+    EXPECT_EQ(circle_pop.experiment, "circle");
+    const Shell judged = sh(cic + " --quiet assess " + q(circle_run) + " --out " + q(scratch.path / "circle.csv"));
+    ASSERT_EQ(judged.rc, 0) << judged.out;
+    std::istringstream csv(read_text(scratch.path / "circle.csv"));
+    std::string header, line;
+    std::getline(csv, header);
+    std::getline(csv, line);
+    std::vector<std::string> cells;
+    std::istringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    ASSERT_GE(cells.size(), 10u) << header << "\n" << line;
+    const double circle_best = circle_pop.population.best().fitness;
+    EXPECT_EQ(std::stod(cells[1]), circle_best) << "replayed with eq. 7.1, not the type's own score: " << line;
+    EXPECT_NE(std::stod(cells[8]), circle_best) << "raw_fitness (eq. 7.1) should differ from the circle score: " << line;
+    EXPECT_GT(circle_best, 0.0);
 }
 
 // The Python package (docs/python.md) from an installed prefix: found with

@@ -9,6 +9,8 @@
 #include "cic/experiments/hypergp/gait_substrate.hpp"
 #include "cic/experiments/map_elites_emitters.hpp"
 #include "cic/experiments/registry.hpp"
+#include "cic/experiments/hypergp/model.hpp"
+#include "cic/sim/job_text.hpp"
 #include "cic/io/emitter_names.hpp"
 #include "cic/sim/robot.hpp"
 #include "cic/tree/tree.hpp"
@@ -99,6 +101,49 @@ TEST(Registry, BadRegistrationsThrow) {
     EXPECT_THROW(io::extra_choice_key("RegistryTest", "m", {"a", "b"}, "c", "x"), std::invalid_argument);
     EXPECT_THROW(experiments::experiment_kind("nothing"), std::logic_error);
     EXPECT_THROW((void)io::extra_number(io::Settings{}, "RegistryTest", "rounds"), std::invalid_argument);   // not a number key
+}
+
+// A type that only scores differently: its score (reading the centre's path,
+// asked for with WalkNeeds) is all it registers; the registry gives it HyperGP's
+// experiment and a job kind named after it, and replays score with it too.
+double path_steps(const hypergp::Model&, const io::Settings&, const hypergp::Outcome& o) {
+    return static_cast<double>(o.result.trace.size());
+}
+
+const experiments::Registrar score_registrar{[] {
+    ExperimentKind k;
+    k.type = {"registry-path", io::ExperimentFamily::HyperGP, "", "scored by its path's length in control steps"};
+    k.check_inputs = &hypergp::check_inputs;
+    k.score = &path_steps;
+    k.needs.trace = true;
+    return k;
+}()};
+
+TEST(Registry, AScoreOfItsOwnIsAllATypeNeeds) {
+    const ExperimentKind& k = experiments::experiment_kind("registry-path");
+    EXPECT_TRUE(k.make);
+    ASSERT_EQ(k.job_kinds.count("registry-path"), 1u);
+    io::Settings s = io::read_settings_string(R"(<settings><Experiment><type>registry-path</type></Experiment>
+      <Simulator><sample_to>1</sample_to><delayed_start>0</delayed_start></Simulator></settings>)");
+    const hypergp::Model model = hypergp::Model::from_settings(s);
+    const tree::Forest genotype{tree::Tree::parse("(mul x0 x1)")};
+    // The replay's score: the path it asked for (80 control steps of 0.0125 s), eq. 7.1 beside it.
+    const hypergp::Outcome o = experiments::evaluate_as_type(model, s, genotype);
+    EXPECT_EQ(o.fitness, 80.0);
+    EXPECT_EQ(o.distance_fitness, hypergp::run(model, genotype).fitness);
+    // Its worker job scores the same.
+    const JobHandler job = k.job_kinds.at("registry-path")(WorkerContext{.settings_file = {}, .settings_text =
+                                                                             io::write_settings(s)});
+    EXPECT_EQ(sim::parse_eval_reply(job(hypergp::job_body(genotype))).fitness, 80.0);
+    // The built-in type records no path: a score pays only for what it asks.
+    io::Settings plain = s;
+    plain.experiment.type = "hypergp";
+    EXPECT_TRUE(experiments::evaluate_as_type(model, plain, genotype).result.trace.empty());
+    // Only HyperGP-family types score the walk.
+    ExperimentKind gait;
+    gait.type = {"registry-gait-score", io::ExperimentFamily::Gait, "", "x"};
+    gait.score = &path_steps;
+    EXPECT_THROW(experiments::register_experiment(gait), std::invalid_argument);
 }
 
 TEST(Registry, ItsSectionSelectsTheTypeAndItsKeysReadTyped) {

@@ -90,4 +90,30 @@ TEST(Povray, RejectsBadArguments) {
     fs::remove_all(dir);
 }
 
+// The trail: a ring at the start and, from the second frame on, a line through
+// the centre's positions so far (x 1.0 to 1.0 + 0.1 t, y 2.0 in ODE's frame,
+// so POV z 2.0); a fixed camera looks at the middle of the whole path.
+TEST(Povray, DrawsTheTrailSoFarAndCanFixTheCamera) {
+    const fs::path dir = fresh_dir("trail");
+    io::PovrayOptions o;
+    o.fixed_camera = true;
+    ASSERT_EQ(io::write_povray(two_bodies(), dir, 10.0, o), 11);
+    const std::string first = read_text(dir / "frame_00000.pov"), last = read_text(dir / "frame_00010.pov");
+    EXPECT_NE(first.find("torus {"), std::string::npos);
+    EXPECT_EQ(first.find("sphere_sweep"), std::string::npos) << "one point is no line yet";
+    EXPECT_NE(last.find("sphere_sweep { linear_spline 11"), std::string::npos) << last;
+    EXPECT_NE(last.find("<2.000000, "), std::string::npos) << "the last point: x = 2.0";
+    EXPECT_NE(read_text(dir / "camera.inc").find("#declare CicFocus = <1.500000, "), std::string::npos)
+        << read_text(dir / "camera.inc");
+    // Without the trail, no ring and no line; the following camera as before.
+    const fs::path plain = fresh_dir("plain");
+    io::PovrayOptions off;
+    off.trail = false;
+    io::write_povray(two_bodies(), plain, 10.0, off);
+    EXPECT_EQ(read_text(plain / "frame_00010.pov").find("torus"), std::string::npos);
+    EXPECT_NE(read_text(plain / "camera.inc").find("following the robot"), std::string::npos);
+    fs::remove_all(dir);
+    fs::remove_all(plain);
+}
+
 } // namespace

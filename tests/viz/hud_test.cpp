@@ -25,5 +25,15 @@ TEST(Hud, TheOverlayStaysInsideSmallAndLargeWindows) {
     }
 }
 
+TEST(Hud, TheDistanceWalkedHasALineOfItsOwn) {
+    ViewInfo info;
+    info.generation = 3;
+    info.individual = "best cmaes gait";
+    const std::string text = hud_text(info, 1.0, 2.0, 1.0, false, 0, 1, false, "walked 0.42 m along y from the start");
+    EXPECT_NE(text.find("generation 3  |  individual best cmaes gait"), std::string::npos);
+    EXPECT_NE(text.find("\nwalked 0.42 m along y from the start"), std::string::npos);
+    EXPECT_EQ(hud_text(info, 1.0, 2.0, 1.0, false, 0, 1, false).find("walked"), std::string::npos);
+}
+
 } // namespace
 } // namespace cic::viz

@@ -77,4 +77,17 @@ TEST(Playback, OtherKeysAreLeftToTheWindow) {
     EXPECT_FALSE(p.paused());
 }
 
+TEST(Playback, TTogglesTheTrailAndCSwitchesTheCamera) {
+    Playback p(1, 1.0);
+    EXPECT_TRUE(p.trail());
+    EXPECT_FALSE(p.fixed_camera());
+    EXPECT_TRUE(p.press('t'));
+    EXPECT_FALSE(p.trail());
+    EXPECT_TRUE(p.press('c'));
+    EXPECT_TRUE(p.fixed_camera());
+    p.set_view(true, false);
+    EXPECT_TRUE(p.trail());
+    EXPECT_FALSE(p.fixed_camera());
+}
+
 } // namespace

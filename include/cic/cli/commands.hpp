@@ -26,6 +26,7 @@ void add_assess_command(Command& app, CommandContext& ctx);     // cmd_assess.cp
 void add_resume_command(Command& app, CommandContext& ctx);     // cmd_resume.cpp
 void add_export_command(Command& app, CommandContext& ctx);     // cmd_export.cpp
 void add_eval_command(Command& app, CommandContext& ctx);       // cmd_eval.cpp
+void add_report_command(Command& app, CommandContext& ctx);     // cmd_report.cpp
 #ifdef CIC_HAVE_VIEWER
 void add_view_command(Command& app, CommandContext& ctx);       // cmd_view.cpp
 #endif

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cic/experiments/experiment.hpp"
+#include "cic/experiments/hypergp/model.hpp"
 #include "cic/io/experiment_types.hpp"
 #include "cic/io/settings_table.hpp"
 
@@ -49,6 +50,13 @@ struct ExperimentKind {
     std::function<std::unique_ptr<Experiment>(const Context&)> make;
     // Job kinds its worker processes serve, by the first line of a job.
     std::map<std::string, JobHandlerFactory> job_kinds;
+    // A HyperGP-family type's own fitness instead of eq. 7.1, and what it reads
+    // of the walk (the centre's path, joint angles, feet's contacts: recorded
+    // only when asked). A type that gives `score` and no `make` or job kinds
+    // gets both: HyperGP's experiment, with a job kind named after the type that
+    // scores with it. Replays (view, assess, trace, Python's simulate) score with it too.
+    hypergp::Score score = {};
+    hypergp::WalkNeeds needs = {};
 };
 
 // Registers a kind. Throws std::invalid_argument for a name registered twice, a
@@ -67,6 +75,13 @@ const ExperimentKind& experiment_kind(std::string_view name);
 struct Registrar {
     explicit Registrar(ExperimentKind kind) { register_experiment(std::move(kind)); }
 };
+
+// One evaluation of a HyperGP-family genotype scored as the settings' type
+// scores it in its worker jobs (its `score`, else eq. 7.1 with the penalty),
+// recording what `options` ask plus what the type's score reads. For replays.
+hypergp::Outcome evaluate_as_type(const hypergp::Model& model, const io::Settings& settings,
+                                  const tree::Forest& genotype, sim::EvalOptions options = {},
+                                  bool record_control = false);
 
 // The job kinds of every registered type, plus sim's self-contained `sine`
 // jobs (`cic simulate`), built for one worker process.

@@ -13,6 +13,8 @@ struct PovrayOptions {
     int centre_body = 0;        // body the camera follows (the robot's centre module)
     double tile = 0.0;          // ground checker tile edge in m; 0 = twice the largest part edge
     std::string title;          // written as a comment into every scene
+    bool trail = true;          // the centre's path so far on the ground, a green ring at its start
+    bool fixed_camera = false;  // a camera fixed on the world framing the whole path, not following
 };
 
 // Writes out_dir/frame_00000.pov ... (the recording resampled at `fps`, first

@@ -22,10 +22,17 @@ struct StatsRow {
     double best = 0, mean = 0, median = 0;
     double mean_depth = 0, max_depth = 0, mean_size = 0, max_size = 0;
     double limit = 0, illegal = 0, evaluations = 0, wall_seconds = 0;
+    // Optional columns: the best of every generation up to this one (the
+    // column, or the running maximum of `best` where a file has none), and a
+    // MAP-Elites run's QD-score and coverage (NaN where a file has none).
+    double best_so_far = std::numeric_limits<double>::quiet_NaN();
+    double qd_score = std::numeric_limits<double>::quiet_NaN();
+    double coverage = std::numeric_limits<double>::quiet_NaN();
 };
 
-// Reads a stats.csv. Columns are found by name in the header (extra columns are
-// ignored). Throws cic::InputError naming the file and line: missing file, a
+// Reads a stats.csv. Columns are found by name in the header (kStatsColumns
+// must be there; best_so_far, qd_score and coverage are read when present;
+// other columns are ignored). Throws cic::InputError naming the file and line: missing file, a
 // missing column, a non-numeric cell, a wrong number of cells, no data rows.
 std::vector<StatsRow> read_stats_csv(const std::filesystem::path& path);
 
@@ -48,6 +55,7 @@ struct GenerationSummary {
     int runs = 0;
     double best = 0, best_sd = 0, mean = 0, mean_sd = 0;
     double mean_depth = 0, max_depth = 0, mean_size = 0, max_size = 0;
+    double best_so_far = 0, best_so_far_sd = 0, qd_score = 0, qd_score_sd = 0, coverage = 0, coverage_sd = 0;
 };
 std::vector<GenerationSummary> summarise(const std::vector<std::vector<StatsRow>>& runs);
 
@@ -116,6 +124,7 @@ struct GenerationBands {
     int generation = 0;
     int runs = 0;
     Band best, mean, mean_depth, max_depth;
+    Band best_so_far, qd_score, coverage;   // NaN where the runs' files have no such column
 };
 std::vector<GenerationBands> summarise_bands(const std::vector<std::vector<StatsRow>>& runs, bool median);
 
@@ -141,17 +150,31 @@ struct PlotOptions {
     int width = 0, height = 0;         // pixels; 0 = a size that suits the plot
 };
 
-// Four panels: best fitness, mean fitness (each mean over runs with a +-1 sd
-// band when a group has several runs), mean and max depth, mean and max size;
-// one curve per configuration with a legend. Throws cic::InputError for bad
+// What a run searched with, which decides the panels that mean something for
+// it (from its settings.xml; GP when that cannot be read).
+enum class SearchKind { GP, Gait, MapElites };
+SearchKind search_kind_of(const std::filesystem::path& run_dir);
+// The x axis's name for a search: "generation", or "batch" for MAP-Elites.
+std::string x_axis_name(SearchKind kind);
+// A gait run's IPOP restarts: the generation each restart's first batch was
+// (from its population.xml); empty without restarts or a readable checkpoint.
+std::vector<int> restart_generations(const std::filesystem::path& run_dir);
+
+// Panels that fit the runs' search (the first run's; every run must have the
+// same), one curve per configuration with a legend, each a mean over runs with
+// a +-1 sd band when a group has several runs. GP: best fitness, mean fitness,
+// mean and max depth, mean and max size. Gait (CMA-ES and the others): best
+// so far with each generation's best, IPOP restarts marked, and the
+// generation's mean. MAP-Elites: QD-score, coverage, the best elite and the
+// elites' mean fitness, per batch. Throws cic::InputError for bad
 // input (names the stats.csv and line), std::runtime_error when gnuplot fails
 // (its message is included).
 void plot_runs(const std::vector<std::filesystem::path>& run_dirs, const std::filesystem::path& out_file,
                const PlotOptions& options = {});
 
-// A study: one colour per configuration, four panels (best fitness, mean
-// fitness, max depth, mean depth), each a centre line with a band (see
-// summarise_bands). Runs are those group_study(index, include_unfinished) keeps
+// A study: one colour per configuration, panels as plot_runs's for the
+// study's search (GP: best fitness, mean fitness, max depth, mean depth),
+// each a centre line with a band (see summarise_bands). Runs are those group_study(index, include_unfinished) keeps
 // that have a stats.csv with rows; a configuration without any is left out.
 // Throws cic::InputError when the study has no run to plot.
 struct StudyPlotOptions : PlotOptions {

@@ -2,6 +2,7 @@
 // Replaying individuals for the viewer, POV-Ray export and traces. The
 // simulation is re-run with the same simulator and settings the evaluation
 // used, so the motion shown is the one that earned the fitness.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -15,9 +16,10 @@ namespace cic::app {
 struct ReplayItem {
     std::string label;                               // e.g. "generation 12, individual 345"
     double stored_fitness = 0.0;                     // from the population file
-    int generation = 0;
+    int generation = 0;                              // a gait run's: the one its best was found in
     std::uint64_t id = 0;                            // the individual's id; a MAP-Elites elite's cell number
     bool elite = false;                              // an archive's elite: the label names its cell
+    std::string who;                                 // what an overlay names; empty = the individual's id
     sim::Recording recording;                        // frames at the requested fps
     std::vector<sim::TraceRow> trace;                // when trace was requested
     std::vector<std::vector<double>> raw_outputs;    // per trace row: raw network outputs
@@ -27,6 +29,10 @@ struct ReplayItem {
     std::vector<std::string> joint_names;            // actuated joints in controller order; empty = "j0", "j1", ...
     // Eq. 7.1's two terms, m: the walk along the preferred axis and the elevation gained.
     double distance = 0.0, elevation = 0.0;
+    // Eq. 7.1's measure: the preferred axis (0 = x, 1 = y) and the centre at
+    // the delayed start and at the end, m.
+    int preferred_axis = 1;
+    std::array<double, 3> measured_from{}, measured_to{};
     // With trace: each branch end (sim::branch_ends: the feet) and the fraction
     // of the time from the delayed start on that it touched the ground.
     std::vector<std::string> foot_names;

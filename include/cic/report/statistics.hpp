@@ -57,6 +57,18 @@ double mann_whitney_exact_sf(int u, int m, int n);
 // from y, ties counting half: (#(x > y) + #(x == y) / 2) / (n1 n2) = u / (n1 n2).
 double vargha_delaney_a12(std::span<const double> x, std::span<const double> y);
 
+// A confidence interval of A12, which is the area under the ROC curve of x
+// against y: A12 +- z sqrt(S10 / m + S01 / n) (DeLong et al. 1988), clamped
+// to [0, 1], where S10 is the sample variance (n-1) over the m values of x of
+// the share of y each beats (ties half), S01 the same over y, and a sample of
+// one value contributes no variance. z = 1.96 gives 95%. Samples that do not
+// overlap give an interval of width 0: read it with n. Throws
+// std::invalid_argument for z <= 0.
+struct Interval {
+    double low = 0, high = 0;
+};
+Interval a12_interval(std::span<const double> x, std::span<const double> y, double z = 1.959963984540054);
+
 // The conventional magnitude of A12 (Vargha and Delaney 2000), symmetric around
 // 0.5: with m = max(a, 1 - a), negligible when m < 0.56, small when m < 0.64,
 // medium when m < 0.71, large otherwise. A tolerance of 1e-9 keeps e.g. 0.44

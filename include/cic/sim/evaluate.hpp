@@ -53,6 +53,11 @@ std::pair<double, double> walk_terms(const RobotSpec& robot, const EvalResult& r
 // two ends. The duty factor of each is what its ground steps are counted for.
 std::vector<int> branch_ends(const RobotSpec& robot);
 
+// Names for people: each actuated joint's module (controller order) and each
+// branch end's (branch_ends order); a module without a name is "m<index>".
+std::vector<std::string> joint_names(const RobotSpec& robot);
+std::vector<std::string> foot_names(const RobotSpec& robot);
+
 // The duty factor of each branch end (branch_ends order): the share of the
 // physics steps from the delayed start on in which it touched the ground, in
 // [0, 1]. The behaviour descriptor of Cully et al. 2015, shown by `cic assess`

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace cic::app {
 
@@ -26,6 +27,30 @@ struct CompareTables {
     std::string configs_csv;   // PREFIX-configs.csv
     std::string pairs_csv;     // PREFIX-pairs.csv
 };
+
+// The same comparison as numbers, for pages that lay it out themselves (cic
+// report): per configuration the metric's summary, per pair the tests with
+// A12's 95% interval (stats::a12_interval). Configurations without values
+// have n = 0; untested pairs have tested = false.
+struct CompareConfigRow {
+    std::string config;
+    std::size_t n = 0;
+    double median = 0, q1 = 0, q3 = 0, mean = 0, sd = 0;
+};
+struct ComparePairRow {
+    std::string a, b;
+    bool tested = false;
+    double p = 1, p_holm = 1, a12 = 0.5, a12_low = 0.5, a12_high = 0.5;
+    std::string effect, verdict;
+    bool significant = false;
+};
+struct CompareData {
+    std::string metric;
+    double alpha = 0.05;
+    std::vector<CompareConfigRow> configs;
+    std::vector<ComparePairRow> pairs;
+};
+CompareData compare_data(const std::filesystem::path& study, const CompareRequest& request);
 
 // Reads STUDY/index.csv and the runs' stats.csv. Throws cic::InputError for a
 // bad request, a folder without an index, or no usable run.

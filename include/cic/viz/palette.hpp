@@ -12,5 +12,7 @@ inline constexpr Rgb kGroundLight = {0.82f, 0.82f, 0.80f};
 inline constexpr Rgb kGroundDark = {0.62f, 0.64f, 0.67f};
 inline constexpr Rgb kGridLine = {0.35f, 0.37f, 0.40f};
 inline constexpr Rgb kSky = {0.62f, 0.74f, 0.92f};
+inline constexpr Rgb kTrail = {0.85f, 0.05f, 0.55f};          // magenta: the centre's path on the ground
+inline constexpr Rgb kTrailStart = {0.10f, 0.55f, 0.20f};     // green: the ring where the path starts
 
 } // namespace cic::viz

@@ -68,11 +68,27 @@ sim::EvalReply to_reply(const Model& m, const Outcome& o, std::vector<double> de
 // the run's model and settings; a non-finite value scores the evaluation as failed.
 using Score = std::function<double(const Model&, const io::Settings&, const Outcome&)>;
 
+// What a Score reads of the walk beyond the centre's position at the delayed
+// start and at the end (Outcome::result.start/end, always there). The
+// simulator records only what is asked, so a score pays only for what it reads.
+struct WalkNeeds {
+    bool trace = false;    // result.trace: per control step the time, the centre's path, joint angles and targets
+    bool contacts = false; // with trace, each row's feet_on_ground; and result.module_ground_steps (duty factors)
+};
+
+// The simulation options that record what `needs` (and the descriptor) ask.
+sim::EvalOptions options_for(const WalkNeeds& needs, sim::Descriptor descriptor = sim::Descriptor::None);
+
+// Applies a type's score to an outcome that did not fail (a non-finite score
+// fails it with the failure fitness); leaves eq. 7.1 when `score` is empty.
+// The worker jobs and every replay (view, assess, trace, Python's simulate) call it.
+void apply_score(Outcome& o, const Score& score, const Model& m, const io::Settings& s);
+
 // The "hypergp" job kind of a worker (and a registered type's, with its own
 // `score`): `settings` is called once, on the first job (a worker reads the
 // run's settings.xml; an MPI rank parses rank 0's text), then each job's
 // genotype is evaluated.
 std::function<std::string(const std::string&)> make_job_handler(std::function<io::Settings()> settings,
-                                                                 Score score = {});
+                                                                 Score score = {}, WalkNeeds needs = {});
 
 } // namespace cic::hypergp
