@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cic/core/error.hpp"
+#include "cic/io/settings_io.hpp"
 #include "cic/sim/evaluate.hpp"
 
 namespace cic::experiments {
@@ -18,9 +19,8 @@ gp::GridSpec map_elites_grid(const io::Settings& s, const sim::RobotSpec& robot)
         lo = 0.0;
         hi = 1.0;
         if (dims == 0)
-            throw InputError("<MapElites> descriptor = duty-factor: robot '" + robot.name +
-                                 "' has no branch end (foot) to measure; use descriptor omni",
-                             s.source_file);
+            throw io::key_error(s, {"MapElites.descriptor"},
+                                "robot '" + robot.name + "' has no branch end (foot) to measure; use descriptor omni");
     }
     double cells = 1;
     for (std::size_t d = 0; d < dims; ++d) {
@@ -30,11 +30,11 @@ gp::GridSpec map_elites_grid(const io::Settings& s, const sim::RobotSpec& robot)
         cells *= me.bins;
     }
     if (cells > static_cast<double>(gp::GridSpec::kMaxCells))
-        throw InputError("<MapElites> bins = " + std::to_string(me.bins) + " over " + std::to_string(dims) +
-                             " dimensions (" + sim::to_string(me.descriptor) + " of robot '" + robot.name +
-                             "') makes " + std::to_string(static_cast<long long>(cells)) +
-                             " cells, past the limit of " + std::to_string(gp::GridSpec::kMaxCells),
-                         s.source_file);
+        throw io::key_error(s, {"MapElites.bins", "MapElites.descriptor"},
+                            std::to_string(me.bins) + " bins over " + std::to_string(dims) + " dimensions (" +
+                                sim::to_string(me.descriptor) + " of robot '" + robot.name + "') make " +
+                                std::to_string(static_cast<long long>(cells)) + " cells, past the limit of " +
+                                std::to_string(gp::GridSpec::kMaxCells));
     g.validate();
     return g;
 }

@@ -16,6 +16,7 @@
 #include <string_view>
 
 #include "cic/io/archive_xml.hpp"
+#include "cic/io/gait_xml.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/robot_xml.hpp"
 #include "cic/io/settings_io.hpp"
@@ -91,6 +92,24 @@ inline Outcome check_archive(std::string_view input) {
         if (first != second) return bug("archive: to_xml -> parse -> to_xml changed the text:\n" + first + "\n---\n" + second);
     } catch (const std::exception& e) {
         return bug(std::string("archive: the written archive does not parse back: ") + e.what());
+    }
+    return {Verdict::Accepted, {}};
+}
+
+// Gait checkpoint: parse_gait; then to_xml must parse back and give the same text again.
+inline Outcome check_gait(std::string_view input) {
+    io::GaitFile g;
+    try {
+        g = io::parse_gait(input, "<fuzz>");
+    } catch (const std::exception&) {
+        return {};
+    }
+    try {
+        const std::string first = io::to_xml(g);
+        const std::string second = io::to_xml(io::parse_gait(first, "<fuzz-roundtrip>"));
+        if (first != second) return bug("gait: to_xml -> parse -> to_xml changed the text:\n" + first + "\n---\n" + second);
+    } catch (const std::exception& e) {
+        return bug(std::string("gait: the written checkpoint does not parse back: ") + e.what());
     }
     return {Verdict::Accepted, {}};
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # scripts/fuzz.sh TARGET SECONDS [BUILD_DIR]
 # Coverage-guided fuzzing of the parsers with libFuzzer (docs/fuzzing.md).
-#   TARGET     settings | population | sexpr | robot | sweep | index | archive | all (each in turn, SECONDS each)
+#   TARGET     settings | population | sexpr | robot | sweep | index | archive | gait | all (each in turn, SECONDS each)
 #   SECONDS    how long to fuzz one target
 #   BUILD_DIR  default build-fuzz; configured once with clang, CIC_FUZZ=ON
 #              (ASan + UBSan + coverage), no tests, benchmarks, viewer or MPI.
@@ -13,7 +13,7 @@
 # CIC_FUZZ_ARGS adds libFuzzer options (e.g. "-jobs=2 -workers=2" or "-max_len=20000").
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-ALL_TARGETS=(settings population sexpr robot sweep index archive)
+ALL_TARGETS=(settings population sexpr robot sweep index archive gait)
 
 usage() {
   echo "usage: scripts/fuzz.sh TARGET SECONDS [BUILD_DIR]   (TARGET: ${ALL_TARGETS[*]} | all)" >&2

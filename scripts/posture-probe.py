@@ -140,7 +140,10 @@ def variants(run, work):
         y = list(x)
         for j, o in enumerate(offsets[name]):
             y[3 + 3 * j] = (max(-1.0, min(1.0, o / (math.pi / 2))) + 1) / 2
-        (d / "population.xml").write_text(text[:m.start(2)] + " ".join(repr(t) for t in y) + text[m.end(2):])
+        edited = text[:m.start(2)] + " ".join(repr(t) for t in y) + text[m.end(2):]
+        # The champion is edited on purpose: the copy drops the checkpoint's
+        # content hash, which cic would refuse as a hand edit otherwise.
+        (d / "population.xml").write_text(re.sub(r' contentHash="[0-9a-f]*"', "", edited, count=1))
         dirs.append(d)
     return dirs
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "cic/core/error.hpp"
+#include "cic/io/settings_io.hpp"
 #include "cic/sim/job_text.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 
@@ -38,8 +39,9 @@ Setup Setup::from_settings(const io::Settings& s) {
         : default_population(out.dimension(), out.optimizer == Optimizer::Sade ? 7 : 5);
     out.sigma0 = s.gait.sigma0;
     if (out.population > s.gait.evaluations)
-        throw InputError(fmt::format("<Gait> evaluations: a budget of {} does not cover one generation of {} candidates",
-                                     s.gait.evaluations, out.population));
+        throw io::key_error(s, {"Gait.evaluations"},
+                            fmt::format("a budget of {} does not cover one generation of {} candidates",
+                                        s.gait.evaluations, out.population));
     return out;
 }
 

@@ -17,6 +17,8 @@
 #include "cic/io/robot_xml.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/experiments/hypergp/gait_substrate.hpp"
+#include "cic/sim/controller.hpp"
+#include "cic/sim/evaluate.hpp"
 #include "cic/experiments/hypergp/oscillation.hpp"
 #include "cic/experiments/hypergp/substrate_geometry.hpp"
 
@@ -30,6 +32,21 @@ Model Model::from_settings(const io::Settings& s) {
     m.sim = s.sim;
     m.neural = s.neural;
     return m;
+}
+
+void check_first_step(const sim::RobotSpec& robot, const sim::SimConfig& config, const std::string& where) {
+    // One control step of a still controller: a robot or simulator whose
+    // physics cannot even start (coordinates far out, a blow-up at t = 0)
+    // would fail every evaluation, and the run would end with the failure
+    // fitness as its best. Cheap: one world and one step.
+    sim::SimConfig probe = config;
+    probe.sample_to = probe.sample_from + probe.sample_step;
+    probe.delayed_start = probe.sample_from;
+    sim::ConstantController still(0.0);
+    const sim::EvalResult r = sim::evaluate(robot, still, probe);
+    if (r.failed)
+        throw InputError("robot '" + robot.name + "' cannot be simulated: its physics fails at the first step (a "
+                         "test evaluation with every joint held at 0): " + r.failure, where);
 }
 
 void check_inputs(const io::Settings& s) {
@@ -47,6 +64,7 @@ void check_inputs(const io::Settings& s) {
     if (m.robot.actuated().empty())
         throw InputError("robot '" + m.robot.name + "' has no joint (every module is fixed): HyperGP needs at "
                          "least one module with axis x, y or z", where);
+    check_first_step(m.robot, m.sim, where);
     if (s.map_elites.enabled) (void)experiments::map_elites_grid(s, m.robot);
     if (m.neural.substrate != "network") return;   // the limits below are the network's
     const nn::NeuronLayout layout = nn::make_neuron_layout(substrate_geometry(m.robot), m.neural);

@@ -77,6 +77,10 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
+        if (const std::string hint = settings_file_hint(app, argc, argv); !hint.empty()) {
+            std::cerr << "cic: error: " << hint << '\n';   // cic's hint alone, before CLI11 could say less
+            return 2;
+        }
         std::cerr << "cic: error: " << e.what() << near_misses(app, argc, argv) << "\nRun `cic --help` for the options.\n";
         return 2;
     } catch (const InputError& e) {   // thrown by a subcommand outside its guard

@@ -9,6 +9,7 @@
 #include "cic/cli/command_guard.hpp"
 #include "cic/cli/commands.hpp"
 #include "cic/report/gait_assessment.hpp"
+#include "cic/report/plot.hpp"
 #include "cic/io/xml.hpp"
 
 namespace cic::app {
@@ -25,7 +26,7 @@ void add_assess_command(Command& app, CommandContext& ctx) {
         "assess", "Replay the best individual of each run folder (or population file) and say whether it walks: "
                   "dominant command frequency, centre height, flipped, shaking (thesis 7.3.2.1), and the raw eq. 7.1 "
                   "fitness without any penalty. CSV, one row per input");
-    cmd.option("inputs", opts->inputs, "run folders or population XML files").required();
+    cmd.option("inputs", opts->inputs, "run folders, population XML files, or study folders (their done runs)").required();
     cmd.option("--cell", opts->cell,
                "in MAP-Elites runs, assess this cell's elite instead of the best: I,J,... or the cell's number");
     cmd.option("--out", opts->out, "write the CSV here (atomically) instead of stdout");
@@ -38,7 +39,18 @@ void add_assess_command(Command& app, CommandContext& ctx) {
             std::ostringstream csv;
             csv << "input,fitness,dominant_hz,mean_height,min_height,final_up,flipped,shaking,raw_fitness,distance,"
                    "elevation,verdict,duty_factors\n";
+            // A study folder (index.csv) stands for its finished runs, as in plot, export and compare.
+            std::vector<std::string> inputs;
             for (const std::string& input : opts->inputs) {
+                if (!is_study_folder(input)) {
+                    inputs.push_back(input);
+                    continue;
+                }
+                const StudyIndex index = read_study_index(input);
+                for (const StudyRun& run : index.runs)
+                    if (run.status == "done") inputs.push_back(index.run_path(run).string());
+            }
+            for (const std::string& input : inputs) {
                 const auto items = replay(input, opts->cell.empty() ? "best" : "cell:" + opts->cell, 1, 10.0, true);
                 const GaitAssessment a = assess_gait(items.at(0), opts->shaking_above);
                 std::string duty;   // "foot:fraction" per foot, space-separated
@@ -52,7 +64,7 @@ void add_assess_command(Command& app, CommandContext& ctx) {
                 std::cout << csv.str();
             } else {
                 io::xml::write_file_atomically(opts->out, csv.str());
-                if (!ctx.quiet) std::cerr << fmt::format("assessed {} gaits; wrote {}\n", opts->inputs.size(), opts->out);
+                if (!ctx.quiet) std::cerr << fmt::format("assessed {} gaits; wrote {}\n", inputs.size(), opts->out);
             }
             return 0;
         });

@@ -9,6 +9,7 @@
 #include "cic/cli/commands.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/report/export.hpp"
+#include "cic/report/plot.hpp"
 
 namespace cic::app {
 
@@ -30,6 +31,11 @@ void add_export_command(Command& app, CommandContext& ctx) {
             ExportRequest r;
             for (const auto& i : opts->inputs) r.inputs.emplace_back(i);
             r.terms = opts->terms;
+            if (!ctx.quiet)   // runs an edited sweep file dropped are still on disk: say that they are left out
+                for (const auto& i : opts->inputs)
+                    if (is_study_folder(i))
+                        if (const std::string note = runs_missing_note(read_study_index(i)); !note.empty())
+                            std::cerr << "cic export: " << note << '\n';
             const std::string csv = export_individuals(r);
             if (opts->out.empty()) {
                 std::cout << csv;

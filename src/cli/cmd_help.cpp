@@ -73,4 +73,18 @@ std::string near_misses(const CLI::App& app, int argc, char** argv) {
     return text;
 }
 
+std::string settings_file_hint(const CLI::App& app, int argc, char** argv) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg.empty() || arg[0] == '-') return {};   // options first: CLI11's own message
+        for (const CLI::App* sub : app.get_subcommands({}))
+            if (sub->get_name() == arg) return {};
+        if (arg.size() > 4 && arg.compare(arg.size() - 4, 4, ".xml") == 0)
+            return "'" + arg + "' is not a command; to run a settings file: cic --settings " + arg +
+                   " (to check it: cic settings " + arg + ")";
+        return {};
+    }
+    return {};
+}
+
 } // namespace cic::app

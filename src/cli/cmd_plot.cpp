@@ -183,6 +183,8 @@ void add_plot_command(Command& app, CommandContext& ctx) {
                 plot_study(opts->runs[0], out, plot);
                 if (!ctx.quiet) {
                     const StudyIndex index = read_study_index(opts->runs[0]);
+                    if (const std::string note = runs_missing_note(index); !note.empty())
+                        std::cerr << "cic plot: " << note << '\n';
                     for (const auto& g : group_study(index, opts->include_unfinished))
                         std::cerr << fmt::format("{}: {} run(s)\n", g.config, g.runs.size());
                     std::cerr << "wrote " << out << '\n';

@@ -6,6 +6,7 @@
 #include "cic/cli/command_guard.hpp"
 #include "cic/cli/commands.hpp"
 #include "cic/run/run.hpp"
+#include "cic/run/settings_lookup.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/io/settings_table.hpp"
 #include "cic/io/xml.hpp"
@@ -57,10 +58,12 @@ void add_settings_command(Command& app, CommandContext& ctx) {
             } else if (opts->keys) {
                 std::cout << key_table();
             } else {
-                // The same checks as a run: robot, dataset, population to resume from.
-                auto settings = prepare_run(io::load_settings(opts->file, opts->sets)).settings;
+                // Found as --settings finds it (the installed settings too), then
+                // the same checks as a run: robot, dataset, population to resume from.
+                const std::string file = find_settings_file(opts->file).string();
+                auto settings = prepare_run(io::load_settings(file, opts->sets)).settings;
                 if (!opts->validate_xsd.empty()) {
-                    auto problems = io::xml::Document::load_file(opts->file).validate(opts->validate_xsd);
+                    auto problems = io::xml::Document::load_file(file).validate(opts->validate_xsd);
                     if (!problems.empty()) throw InputError("schema: " + problems.front());
                 }
                 std::cout << io::write_settings(settings);

@@ -1,6 +1,7 @@
 // `cic sweep FILE`: runs every (configuration, seed) of a sweep file as its own
 // run folder under one study folder, N at a time; or writes a Slurm job array
 // that runs the same resumable command per task (docs/cluster.md).
+#include <iostream>
 #include <memory>
 
 #include <fmt/format.h>
@@ -83,6 +84,17 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
                 throw InputError("--slurm-partition, --slurm-time, --slurm-mem, --slurm-account and --sbatch go with "
                                  "--slurm");
             check_slurm_options(o->cluster);
+            if (const auto outside = runs_outside_the_plan(plan); !outside.empty()) {
+                // Still on disk, but no task of the sweep file now: index.csv and export leave them out.
+                std::string list;
+                for (std::size_t i = 0; i < outside.size() && i < 5; ++i) list += (i ? ", " : "") + outside[i].string();
+                if (outside.size() > 5) list += fmt::format(" and {} more", outside.size() - 5);
+                std::cerr << fmt::format("cic sweep: note: {} run folder{} of the study belong{} to no task of {} (a "
+                                         "configuration or seed left the sweep file?); index.csv, plot and export "
+                                         "leave {} out: {}\n",
+                                         outside.size(), outside.size() == 1 ? "" : "s", outside.size() == 1 ? "s" : "",
+                                         plan.file.string(), outside.size() == 1 ? "it" : "them", list);
+            }
             if (o->status) return print_status(plan, tasks, o->jobs);
             check_every_configuration(plan);
             if (o->dry_run) return dry_run(plan, tasks, workers);

@@ -16,4 +16,8 @@ void add_help_command(CLI::App& app, CommandContext& ctx);
 // "; did you mean --seed?" lines to append to the error; "" when none is near.
 std::string near_misses(const CLI::App& app, int argc, char** argv);
 
+// For a command line whose first word is a settings file (`cic settings/r1.xml`,
+// --settings left out): the one line that says how to run or check it; else "".
+std::string settings_file_hint(const CLI::App& app, int argc, char** argv);
+
 } // namespace cic::app

@@ -1,9 +1,13 @@
 // MAP-Elites archives as XML (see archive_xml.hpp).
 #include "cic/io/archive_xml.hpp"
 
+#include <algorithm>
 #include <optional>
 
+#include <fmt/format.h>
+
 #include "cic/core/error.hpp"
+#include "cic/core/hash.hpp"
 #include "cic/io/emitter_names.hpp"
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
@@ -23,6 +27,7 @@ using detail::parse_numbers;
 
 ArchiveElite read_elite(const xml::Node& e, const gp::GridSpec& grid, bool& gait, bool& hypergp) {
     ArchiveElite a;
+    a.line = e.line();
     a.cell = attribute<std::size_t>(e, "cell");
     a.fitness = attribute<double>(e, "fitness");
     a.descriptor = parse_numbers(e, "descriptor", e.attribute("descriptor").value_or(""));
@@ -32,6 +37,11 @@ ArchiveElite read_elite(const xml::Node& e, const gp::GridSpec& grid, bool& gait
     if (a.descriptor.size() != grid.dimensions())
         throw e.error("<elite> has a descriptor of " + std::to_string(a.descriptor.size()) + " values for a grid of " +
                       std::to_string(grid.dimensions()) + " dimensions");
+    // A descriptor past the grid would be clamped into an edge cell: not one the run measured.
+    for (std::size_t d = 0; d < a.descriptor.size(); ++d)
+        if (a.descriptor[d] < grid.lo[d] || a.descriptor[d] > grid.hi[d])
+            throw e.error(fmt::format("<elite cell=\"{}\"> descriptor value {} of dimension {} is outside the grid's [{}, {}]",
+                                      a.cell, exact(a.descriptor[d]), d, exact(grid.lo[d]), exact(grid.hi[d])));
     if (grid.cell_of(a.descriptor) != a.cell)
         throw e.error("<elite cell=\"" + std::to_string(a.cell) + "\"> has a descriptor of cell " +
                       std::to_string(grid.cell_of(a.descriptor)) + " (edited?)");
@@ -51,6 +61,13 @@ ArchiveElite read_elite(const xml::Node& e, const gp::GridSpec& grid, bool& gait
         }
     }
     if (a.x.empty() == a.genotype.empty()) throw e.error("<elite> needs either <x> or <tree> elements");
+    for (double v : a.x)
+        if (v < 0.0 || v > 1.0)
+            throw e.error(fmt::format("<elite cell=\"{}\"> has parameter {} outside the unit box [0, 1]", a.cell, exact(v)));
+    if (const auto h = e.attribute("hash"); h && *h != elite_hash(a))
+        throw e.error(fmt::format("<elite cell=\"{}\" hash=\"{}\"> does not match its fitness, descriptor and solution ({}; "
+                                  "edited by hand?): an archive's elites cannot be re-evaluated in place",
+                                  a.cell, *h, elite_hash(a)));
     return a;
 }
 
@@ -63,6 +80,7 @@ ArchiveFile read_archive(const xml::Document& doc) {
         throw root.error("archive version " + *root.attribute("version") + " is not supported (this cic reads " +
                          std::to_string(kVersion) + ")");
     ArchiveFile a;
+    a.line = root.line();
     a.experiment = root.attribute("experiment").value_or("");
     a.settings_digest = root.attribute("settingsDigest").value_or("");
     a.seed = attribute<std::uint64_t>(root, "seed");
@@ -70,7 +88,9 @@ ArchiveFile read_archive(const xml::Document& doc) {
     a.evaluations = attribute<long>(root, "evaluations");
     a.failed = attribute<long>(root, "failed");
     if (a.batches < 1 || a.evaluations < a.batches || a.failed < 0 || a.failed > a.evaluations)
-        throw root.error("batches must be >= 1, evaluations >= batches and failed in [0, evaluations]");
+        throw root.error("<archive batches=\"" + std::to_string(a.batches) + "\" evaluations=\"" + std::to_string(a.evaluations) +
+                         "\" failed=\"" + std::to_string(a.failed) +
+                         "\">: batches must be >= 1, evaluations >= batches and failed in [0, evaluations]");
     try {
         a.rng = Rng::parse_state(std::string(root.attribute("rng").value_or("")));
     } catch (const std::invalid_argument& e) {
@@ -79,7 +99,9 @@ ArchiveFile read_archive(const xml::Document& doc) {
     std::optional<gp::GridSpec> grid;
     bool gait = false, hypergp = false;
     for (const auto& c : root.children()) {
-        if (c.name() == "grid") {
+        if (c.name() == "origin") {
+            a.origin = read_origin(c);
+        } else if (c.name() == "grid") {
             a.descriptor = c.attribute("descriptor").value_or("");
             try {
                 (void)sim::descriptor_from(a.descriptor);
@@ -115,14 +137,22 @@ ArchiveFile read_archive(const xml::Document& doc) {
                 throw c.error("<emitter> needs a name and its state (truncated or edited?)");
         }
     }
-    if (!grid) throw root.error("an archive needs a <grid> (truncated?)");
-    if (gait && hypergp) throw root.error("an archive holds either parameter vectors or trees, not both");
+    if (!grid) throw root.error("<archive> needs a <grid> (truncated?)");
+    if (gait && hypergp) throw root.error("<archive> holds either parameter vectors or trees, not both");
     if (static_cast<long>(a.elites.size()) > a.evaluations - a.failed)
-        throw root.error("more elites than successful evaluations");
+        throw root.error(fmt::format("<archive> holds {} elites but only {} successful evaluations (evaluations - failed)",
+                                     a.elites.size(), a.evaluations - a.failed));
     return a;
 }
 
 } // namespace
+
+std::string elite_hash(const ArchiveElite& e) {
+    std::string text = std::to_string(e.cell) + " " + exact(e.fitness) + " " + exact_list(e.descriptor) + "\n" +
+                       exact_list(e.x) + "\n";
+    for (const auto& t : e.genotype) text += t.to_string() + "\n";
+    return hex16(fnv1a_64(text));
+}
 
 const ArchiveElite* ArchiveFile::best() const {
     const ArchiveElite* out = nullptr;
@@ -151,6 +181,7 @@ std::string to_xml(const ArchiveFile& a) {
     Rng rng;
     rng.set_state(a.rng);
     root.set_attribute("rng", rng.state_text());
+    if (a.origin) write_origin(root, *a.origin);
     auto grid = root.add_element("grid");
     grid.set_attribute("descriptor", a.descriptor);
     for (std::size_t d = 0; d < a.grid.dimensions(); ++d) {
@@ -166,6 +197,7 @@ std::string to_xml(const ArchiveFile& a) {
         el.set_attribute("cell", std::to_string(e.cell));
         el.set_attribute("fitness", exact(e.fitness));
         el.set_attribute("descriptor", exact_list(e.descriptor));
+        el.set_attribute("hash", elite_hash(e));
         if (!e.x.empty()) el.add_child("x", exact_list(e.x));
         for (const auto& t : e.genotype) el.add_child("tree", t.to_string());
     }
@@ -184,7 +216,39 @@ ArchiveFile load_archive(const std::filesystem::path& path) {
     return parse_archive(xml::read_file(path), path.string());
 }
 
-void check_compatible(const ArchiveFile& a, const Settings& s, const gp::GridSpec& grid, const std::string& file) {
+namespace {
+
+// The elites' solutions against the settings' genotype (read_elite has checked the file's own rules).
+void check_elites(const ArchiveFile& a, const Settings& s, std::size_t gait_dimension, const std::string& file) {
+    const int variables = s.gp.primitives.variable_count;
+    const auto& functions = s.gp.primitives.functions;
+    for (const ArchiveElite& e : a.elites) {
+        auto refuse = [&](const std::string& why) {
+            throw InputError(fmt::format("<elite cell=\"{}\"> {}", e.cell, why), file, e.line);
+        };
+        if (gait_dimension > 0) {
+            if (e.x.size() != gait_dimension)
+                refuse(fmt::format("has {} parameters, these settings make {}", e.x.size(), gait_dimension));
+            continue;
+        }
+        if (!e.x.empty()) refuse("holds a parameter vector; these settings evolve trees");
+        if (static_cast<int>(e.genotype.size()) != s.gp.trees_per_genotype)
+            refuse(fmt::format("has {} trees, GP.numberOfTreesInForestGenotype is {}", e.genotype.size(),
+                               s.gp.trees_per_genotype));
+        for (const auto& t : e.genotype)
+            for (const auto& node : t.nodes()) {
+                if (node.op == tree::Op::Var && node.var >= variables)
+                    refuse(fmt::format("uses variable x{}, but GP.terminalVariableCount is {}", node.var, variables));
+                if (tree::arity(node.op) > 0 && std::find(functions.begin(), functions.end(), node.op) == functions.end())
+                    refuse(fmt::format("uses function {}, which is not in GP.functions", tree::name(node.op)));
+            }
+    }
+}
+
+} // namespace
+
+void check_compatible(const ArchiveFile& a, const Settings& s, const gp::GridSpec& grid, std::size_t gait_dimension,
+                      const std::string& file) {
     if (!s.map_elites.enabled)
         throw InputError("this is a MAP-Elites archive; the settings do not enable MapElites", file);
     if (a.experiment != s.experiment.type)
@@ -203,6 +267,13 @@ void check_compatible(const ArchiveFile& a, const Settings& s, const gp::GridSpe
         throw InputError("the archive's grid differs from the one these settings make (MapElites.bins, omniRange, "
                          "or another robot?)",
                          file);
+    // Every batch is whole (the loop stops before a batch the budget cannot hold).
+    if (a.evaluations != static_cast<long>(a.batches) * s.map_elites.batch)
+        throw InputError(fmt::format("<archive evaluations=\"{}\"> is not its {} batches of MapElites.batch {} ({})",
+                                     a.evaluations, a.batches, s.map_elites.batch,
+                                     static_cast<long>(a.batches) * s.map_elites.batch),
+                         file, a.line);
+    check_elites(a, s, gait_dimension, file);
 }
 
 } // namespace cic::io

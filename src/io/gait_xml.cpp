@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cic/core/error.hpp"
+#include "cic/core/hash.hpp"
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
 #include "xml_numbers.hpp"
@@ -40,6 +41,23 @@ GaitPoint read_point(const xml::Node& n, std::size_t dimension) {
 
 } // namespace
 
+std::string content_hash(const GaitFile& g) {
+    std::string text = g.optimizer + " " + std::to_string(g.seed) + " " + std::to_string(g.generation) + " " +
+                       std::to_string(g.evaluations) + " " + std::to_string(g.dimension) + "\n";
+    auto point = [&](const GaitPoint& p) { text += exact(p.fitness) + ":" + exact_list(p.x) + "\n"; };
+    point(g.champion);
+    for (const GaitPoint& p : g.population) point(p);
+    text += exact_list(g.history) + "\n";
+    if (g.restarts) {
+        text += std::to_string(g.restarts->count) + " " + std::to_string(g.restarts->population_size);
+        for (int v : g.restarts->generations) text += " " + std::to_string(v);
+    }
+    if (g.handover)   // Switch-HybrID's start point: an edit would change the gait phase's run
+        text += "\nhandover " + std::to_string(g.handover->generation) + " " + std::to_string(g.handover->evaluations) +
+                " " + exact_list(g.handover->x);
+    return hex16(fnv1a_64(text));
+}
+
 std::string to_xml(const GaitFile& g) {
     auto doc = xml::Document::create("gaitRun");
     auto root = doc.root();
@@ -51,6 +69,8 @@ std::string to_xml(const GaitFile& g) {
     root.set_attribute("generation", std::to_string(g.generation));
     root.set_attribute("evaluations", std::to_string(g.evaluations));
     root.set_attribute("dimension", std::to_string(g.dimension));
+    root.set_attribute("contentHash", content_hash(g));
+    if (g.origin) write_origin(root, *g.origin);
     write_point(root, "champion", g.champion);
     auto list = root.add_element("candidates");
     list.set_attribute("count", std::to_string(g.population.size()));
@@ -91,11 +111,15 @@ GaitFile read_gait(const xml::Document& doc) {
     g.evaluations = attribute<long>(root, "evaluations");
     g.dimension = attribute<std::size_t>(root, "dimension");
     if (g.generation < 0 || g.evaluations < 0 || g.dimension == 0 || g.dimension > 1000000)
-        throw root.error("generation and evaluations must be >= 0 and dimension in [1, 1000000]");
+        throw root.error("<gaitRun generation=\"" + *root.attribute("generation") + "\" evaluations=\"" +
+                         *root.attribute("evaluations") + "\" dimension=\"" + *root.attribute("dimension") +
+                         "\">: generation and evaluations must be >= 0 and dimension in [1, 1000000]");
     bool champion = false, candidates = false, state = false;
     for (const auto& c : root.children()) {
         const auto n = c.name();
-        if (n == "champion") {
+        if (n == "origin") {
+            g.origin = read_origin(c);
+        } else if (n == "champion") {
             g.champion = read_point(c, g.dimension);
             champion = true;
         } else if (n == "candidates") {
@@ -152,14 +176,18 @@ GaitFile read_gait(const xml::Document& doc) {
             g.handover = std::move(h);
         } else {
             throw c.error("unknown element <" + std::string(n) +
-                          "> in <gaitRun>; allowed: champion, candidates, history, restarts, handover");
+                          "> in <gaitRun>; allowed: origin, champion, candidates, history, restarts, handover");
         }
     }
     if (!champion || !candidates || !state)
-        throw root.error("a gait checkpoint needs <champion>, <candidates> and <history> (truncated?)");
+        throw root.error("<gaitRun> needs <champion>, <candidates> and <history> (truncated?)");
     if (g.restarts && static_cast<std::size_t>(g.restarts->population_size) != g.population.size())
         throw root.error("<restarts populationSize=\"" + std::to_string(g.restarts->population_size) + "\"> but " +
                          std::to_string(g.population.size()) + " candidates");
+    // An edited point or history value would be believed on resume: refuse it.
+    if (const auto h = root.attribute("contentHash"); h && *h != content_hash(g))
+        throw root.error("<gaitRun contentHash=\"" + *h + "\"> does not match the champion, candidates and history (" +
+                         content_hash(g) + "; edited by hand?): a gait checkpoint cannot be re-evaluated in part");
     return g;
 }
 

@@ -159,6 +159,7 @@ PopulationFile describe(const Settings& s) {
     p.functions = function_names(s);
     p.trees = s.gp.trees_per_genotype;
     p.state.seed = s.experiment.seed;
+    p.origin = origin_of(s);
     return p;
 }
 
@@ -170,6 +171,7 @@ std::string to_xml(const PopulationFile& p) {
     root.set_attribute("experiment", p.experiment);
     root.set_attribute("settingsDigest", p.settings_digest);
     root.set_attribute("generation", std::to_string(p.population.generation));
+    if (p.origin) write_origin(root, *p.origin);
     auto shape = root.add_element("genotype");
     shape.set_attribute("variables", std::to_string(p.variables));
     shape.set_attribute("functions", join(p.functions));
@@ -248,7 +250,9 @@ PopulationFile read_population(const xml::Document& doc) {
     xml::Node list_node;
     for (const auto& c : root.children()) {
         const auto nm = c.name();
-        if (nm == "genotype") {
+        if (nm == "origin") {
+            p.origin = read_origin(c);
+        } else if (nm == "genotype") {
             have_shape = true;
             p.variables = required<int>(c, "variables");
             p.trees = required<int>(c, "trees");
@@ -308,12 +312,13 @@ PopulationFile read_population(const xml::Document& doc) {
                 if (p.population.size() >= declared)
                     throw n.error("more individuals than <individuals count=\"" + std::to_string(declared) + "\">");
                 p.population.individuals.push_back(read_individual(n, p.trees, p.offsets, p.offset_limit));
+                p.lines[p.population.individuals.back()->id] = n.line();
                 if (!ids.insert(p.population.individuals.back()->id).second)
                     throw n.error("individual id " + std::to_string(p.population.individuals.back()->id) +
                                   " appears twice");
             }
         } else {
-            throw c.error("unknown element <" + std::string(nm) + "> in <population>; allowed: genotype, rng, counters, bloat, switch, individuals");
+            throw c.error("unknown element <" + std::string(nm) + "> in <population>; allowed: origin, genotype, rng, counters, bloat, switch, individuals");
         }
     }
     if (!have_shape) throw root.error("missing <genotype> element");
@@ -352,19 +357,22 @@ void check_compatible(const PopulationFile& loaded, const Settings& s, const std
     if (loaded.trees != want.trees)
         refuse("numberOfTreesInForestGenotype", std::to_string(loaded.trees), std::to_string(want.trees));
     if (loaded.functions != want.functions) refuse("functions", "'" + join(loaded.functions) + "'", "'" + join(want.functions) + "'");
-    for (const auto& ind : loaded.population)
+    for (const auto& ind : loaded.population) {
+        const auto at = loaded.lines.find(ind->id);
+        const int line = at == loaded.lines.end() ? 0 : at->second;
         for (const auto& t : ind->genotype)
             for (const auto& node : t.nodes()) {
                 if (node.op == tree::Op::Var && node.var >= want.variables)
                     throw InputError("individual " + std::to_string(ind->id) + " uses variable x" + std::to_string(node.var) +
-                                     " but terminalVariableCount is " + std::to_string(want.variables), file);
+                                     " but terminalVariableCount is " + std::to_string(want.variables), file, line);
                 if (tree::arity(node.op) > 0 && std::find(s.gp.primitives.functions.begin(),
                                                           s.gp.primitives.functions.end(),
                                                           node.op) == s.gp.primitives.functions.end())
                     throw InputError("individual " + std::to_string(ind->id) + " uses function " +
                                      std::string(tree::name(node.op)) + ", which is not in the settings' functions '" +
-                                     join(want.functions) + "'", file);
+                                     join(want.functions) + "'", file, line);
             }
+    }
 }
 
 } // namespace cic::io

@@ -245,7 +245,25 @@ Settings load_settings_text(std::string_view text, const fs::path& file, const s
     const fs::path cwd = fs::current_path();
     apply_layer(s, gather_overrides(overrides), locs, &cwd);
     detail::validate(s, locs);
+    for (const auto& [key, where] : locs) s.key_locations[key] = {where.file, where.line};
     return s;
+}
+
+InputError key_error(const Settings& s, const std::vector<std::string>& keys, const std::string& message) {
+    std::pair<std::string, int> where{s.source_file, 0};
+    for (const auto& k : keys)
+        if (const auto it = s.key_locations.find(k); it != s.key_locations.end()) {
+            where = it->second;
+            break;
+        }
+    std::string named;
+    for (const auto& k : keys) {
+        const auto dot = k.find('.');
+        const SettingKey* row = find_setting(k.substr(0, dot), k.substr(dot + 1));
+        named += (named.empty() ? "" : ", ") + ("<" + k.substr(0, dot) + "> " + k.substr(dot + 1) + " = \"" +
+                                               (row ? row->get(s) : std::string("?")) + "\"");
+    }
+    return InputError(named + ": " + message, where.first, where.second);
 }
 
 Settings read_settings(const fs::path& file) { return load_settings(file, {}); }
@@ -260,6 +278,7 @@ Settings read_settings_string(std::string_view text, const std::string& name) {
     });
     s.source_file = name;
     detail::validate(s, locs);
+    for (const auto& [key, where] : locs) s.key_locations[key] = {where.file, where.line};
     return s;
 }
 

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 namespace cic::io::detail {
@@ -98,7 +99,14 @@ double parse_number(const SettingKey& k, std::string_view text) {
         if (t.empty() || !(std::isdigit(static_cast<unsigned char>(t.back())) || t.back() == '.'))
             throw ValueError("not a number");
         auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-        if (ec == std::errc::result_out_of_range) throw ValueError("out of range");
+        if (ec == std::errc::result_out_of_range && end == t.data() + t.size()) {
+            // Too large or too close to 0 for a double: say which (1e-400 underflows).
+            const double near = std::strtod(std::string(t).c_str(), nullptr);
+            if (std::fabs(near) < 1.0)
+                throw ValueError("underflows: it is closer to 0 than a double can hold "
+                                 "(about 2.2e-308); write 0 or a larger number");
+            throw ValueError("overflows: it is larger than a double can hold (about 1.8e308)");
+        }
         if (ec != std::errc() || end != t.data() + t.size()) throw ValueError("not a number");
     }
     bool finite_ok = std::isfinite(v) || k.allow_inf;

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -33,6 +34,13 @@ template <class T>
 T parse_number(const xml::Node& n, std::string_view what, std::string_view text) {
     T v{};
     const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+    if constexpr (std::is_floating_point_v<T>) {
+        if (r.ec == std::errc::result_out_of_range && r.ptr == text.data() + text.size())
+            throw n.error("<" + std::string(n.name()) + "> " + std::string(what) + " \"" + std::string(text) + "\" " +
+                          (std::fabs(std::strtod(std::string(text).c_str(), nullptr)) < 1.0
+                               ? "underflows: it is closer to 0 than a double can hold"
+                               : "overflows: it is larger than a double can hold"));
+    }
     if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size())
         throw n.error("<" + std::string(n.name()) + "> " + std::string(what) + " \"" + std::string(text) +
                       "\" is not a valid number");

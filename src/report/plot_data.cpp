@@ -2,12 +2,14 @@
 // and per-generation summaries.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <map>
 #include <regex>
+#include <set>
 #include <stdexcept>
 
 #include "cic/report/plot.hpp"
@@ -193,6 +195,34 @@ std::vector<RunGroup> group_runs(const std::vector<std::filesystem::path>& run_d
 bool is_study_folder(const std::filesystem::path& path) {
     std::error_code ec;
     return std::filesystem::is_directory(path, ec) && std::filesystem::is_regular_file(path / "index.csv", ec);
+}
+
+std::vector<std::filesystem::path> runs_missing_from_index(const StudyIndex& index) {
+    namespace fs = std::filesystem;
+    std::set<fs::path> listed;
+    for (const StudyRun& run : index.runs) listed.insert(fs::path(run.run_dir).lexically_normal());
+    std::vector<fs::path> out;
+    std::error_code ec;
+    for (const auto& config : fs::directory_iterator(index.folder / "runs", ec)) {
+        if (!config.is_directory(ec)) continue;
+        for (const auto& run : fs::directory_iterator(config.path(), ec)) {
+            const fs::path rel = fs::path("runs") / config.path().filename() / run.path().filename();
+            if (!listed.count(rel) && fs::exists(run.path() / "settings.xml", ec)) out.push_back(index.folder / rel);
+        }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::string runs_missing_note(const StudyIndex& index) {
+    const auto missing = runs_missing_from_index(index);
+    if (missing.empty()) return {};
+    std::string list;
+    for (std::size_t i = 0; i < missing.size() && i < 5; ++i) list += (i ? ", " : "") + missing[i].string();
+    if (missing.size() > 5) list += " and " + std::to_string(missing.size() - 5) + " more";
+    return "note: " + std::to_string(missing.size()) + " run folder" + (missing.size() == 1 ? " of " : "s of ") +
+           index.folder.string() + (missing.size() == 1 ? " is" : " are") +
+           " not in its index.csv (a configuration or seed left the sweep file?) and left out: " + list;
 }
 
 StudyIndex read_study_index(const std::filesystem::path& study) {

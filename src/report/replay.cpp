@@ -157,7 +157,8 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
     else
         model.emplace(hypergp::Model::from_settings(settings));
     const sim::RobotSpec& robot = gait ? setup->robot : model->robot;
-    io::check_compatible(a, settings, experiments::map_elites_grid(settings, robot), src.population.string());
+    io::check_compatible(a, settings, experiments::map_elites_grid(settings, robot), gait ? setup->dimension() : 0,
+                         src.population.string());
     std::vector<const io::ArchiveElite*> chosen;
     if (individual == "best") {
         for (const auto& e : a.elites) chosen.push_back(&e);

@@ -50,17 +50,35 @@ void check_direct_offsets(const io::PopulationFile& loaded, const io::Settings& 
                                      loaded.offset_limit, want.limit), file);
 }
 
+// The note on a checkpoint whose origin matched but whose search settings
+// differ: its fitness values hold; the search goes on with these settings.
+std::string search_note(const std::string& file_digest, const io::Settings& s, const std::string& from) {
+    const std::string now = io::settings_digest(s);
+    if (file_digest == now) return {};
+    return fmt::format("note: {} was made with other settings (digest {}, now {}); its origin (robot, simulator, "
+                       "controller) is these settings', so its fitness values hold; the budget and the search's own "
+                       "settings are now these",
+                       from, file_digest, now);
+}
+
 } // namespace
 
 PreparedRun prepare_run(io::Settings s) {
     experiments::check_inputs(s);
     PreparedRun p;
+    std::string file_digest;
     if (!s.control.population_load_from.empty() && s.map_elites.enabled) {
         const std::string from = s.control.population_load_from;
         try {
             io::ArchiveFile loaded = io::load_archive(from);
-            const sim::RobotSpec robot = hypergp::Model::from_settings(s).robot;
-            io::check_compatible(loaded, s, experiments::map_elites_grid(s, robot), from);
+            p.origin_note = io::check_origin(loaded.origin, s, from);
+            file_digest = loaded.settings_digest;
+            const bool gait = io::family_of(s) == io::ExperimentFamily::Gait;
+            std::optional<gait::Setup> setup;
+            if (gait) setup = gait::Setup::from_settings(s);
+            const sim::RobotSpec robot = setup ? setup->robot : hypergp::Model::from_settings(s).robot;
+            io::check_compatible(loaded, s, experiments::map_elites_grid(s, robot), setup ? setup->dimension() : 0,
+                                 from);
             detail::check_archive_emitter(s, loaded, from);
             p.archive_resume = std::move(loaded);
         } catch (const InputError& e) {
@@ -73,6 +91,8 @@ PreparedRun prepare_run(io::Settings s) {
         const std::string from = s.control.population_load_from;
         try {
             io::GaitFile loaded = io::load_gait(from);
+            p.origin_note = io::check_origin(loaded.origin, s, from);
+            file_digest = loaded.settings_digest;
             const gait::Setup setup = gait::Setup::from_settings(s);
             io::check_compatible(loaded, s, setup.dimension(), from);
             (void)gait::resume_search(setup, gait::restart_rule_of(s), loaded, from);   // replays: a checkpoint that does not is refused now
@@ -84,6 +104,8 @@ PreparedRun prepare_run(io::Settings s) {
         const std::string from = s.control.population_load_from;   // absolute: resolved when read
         try {
             io::PopulationFile loaded = io::load_population(from);
+            p.origin_note = io::check_origin(loaded.origin, s, from);
+            file_digest = loaded.settings_digest;
             io::check_compatible(loaded, s, from);
             check_direct_offsets(loaded, s, from);
             p.resume = std::move(loaded);
@@ -91,6 +113,8 @@ PreparedRun prepare_run(io::Settings s) {
             throw InputError("<Control> populationXmlLoadFrom: " + e.message(), e.file(), e.line());
         }
     }
+    if (!s.control.population_load_from.empty())
+        p.search_note = search_note(file_digest, s, s.control.population_load_from);
     p.settings = std::move(s);
     return p;
 }
@@ -104,7 +128,7 @@ struct Start {
     std::optional<gp::Population> population;
 };
 
-Start start_of(PreparedRun& prepared, const io::PopulationFile& header, RunConsole& console) {
+Start start_of(PreparedRun& prepared, RunConsole& console) {
     const io::Settings& s = prepared.settings;
     Start out;
     out.state.seed = s.experiment.seed;
@@ -112,9 +136,6 @@ Start start_of(PreparedRun& prepared, const io::PopulationFile& header, RunConso
     if (!prepared.resume) return out;
     io::PopulationFile& loaded = *prepared.resume;
     const std::string& from = s.control.population_load_from;
-    if (loaded.settings_digest != header.settings_digest)
-        console.say(fmt::format("note: {} was made with other settings (digest {} vs {}); continuing with these settings",
-                                from, loaded.settings_digest, header.settings_digest));
     out.state = loaded.state;
     out.population = std::move(loaded.population);
     console.say(fmt::format("resuming from {} at generation {} (seed {})", from, out.population->generation,
@@ -216,7 +237,8 @@ std::string summary_of(const gp::EvolutionResult& result, const experiments::Exp
 GpPhaseResult run_gp_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& console, const GpPhase& phase) {
     const io::Settings& s = prepared.settings;
     io::PopulationFile header = io::describe(s);
-    Start start = start_of(prepared, header, console);
+    detail::say_checkpoint_notes(prepared, console);
+    Start start = start_of(prepared, console);
     const int workers = resolved_workers(s);
     console.say(fmt::format("cic {}: {} experiment, seed {}, {} worker{}, output {}", CIC_VERSION, header.experiment,
                             start.state.seed, workers, workers == 1 ? "" : "s", opt.run_dir.string()));
@@ -228,6 +250,13 @@ GpPhaseResult run_gp_phase(PreparedRun& prepared, const RunOptions& opt, RunCons
     gp.direct = experiment->direct_genes();   // Offset-HybrID's offsets, else none
     header.offsets = gp.direct.count;
     header.offset_limit = gp.direct.count > 0 ? gp.direct.limit : 0.0;
+    // What the evaluations column counts, where it is first seen.
+    console.log(fmt::format("evaluations count every individual evaluated: a generation evaluates its new individuals "
+                            "only (elites and reproduced copies keep their fitness){}",
+                            s.bloat.enabled ? ", and under Dynamic Limits also each child bred past the depth limit, "
+                                              "which is then replaced by its parent unless it beats the best: so a "
+                                              "generation may evaluate fewer or more than its population"
+                                            : ""));
 
     GenerationObserver observer(s, opt, console, header, start);
     observer.annotate = phase.annotate;

@@ -51,9 +51,10 @@ gp::GenerationRecord record_of(const gait::Search& search, const Origin& at, lon
     return r;
 }
 
-io::GaitFile checkpoint_of(const gait::Search& search, const io::Settings& s,
+io::GaitFile checkpoint_of(const gait::Search& search, const io::Settings& s, const io::CheckpointOrigin& origin,
                            const std::optional<io::GaitHandover>& handover) {
     io::GaitFile g;
+    g.origin = origin;
     g.settings_digest = io::settings_digest(s);
     g.optimizer = gait::to_string(search.optimizer());
     g.seed = search.seed();
@@ -87,6 +88,7 @@ int run_gait_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& con
     const gait::Setup setup = gait::Setup::from_settings(s);
     const gait::RestartRule restart_rule = gait::restart_rule_of(s);
     const bool ipop = restart_rule.mode == gait::Restarts::Ipop;
+    const io::CheckpointOrigin origin = io::origin_of(s, setup.robot);
     gait::Search search = prepared.gait_resume
         ? gait::resume_search(setup, restart_rule, *prepared.gait_resume, s.control.population_load_from)
         : gait::make_search(setup, restart_rule, s.experiment.seed);
@@ -95,6 +97,11 @@ int run_gait_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& con
                     "evaluations), seed {}, {} worker{}, output {}",
                     CIC_VERSION, gait::to_string(setup.optimizer), setup.dimension(), setup.population,
                     s.gait.evaluations, s.experiment.seed, workers, workers == 1 ? "" : "s", opt.run_dir.string()));
+    if (!ipop && s.gait.evaluations % setup.population != 0)   // whole generations only: said, not done silently
+        say(fmt::format("note: Gait.evaluations {} is not a whole number of generations of {} candidates; the run "
+                        "stops after {} generations, at {} evaluations",
+                        s.gait.evaluations, setup.population, s.gait.evaluations / setup.population,
+                        s.gait.evaluations / setup.population * setup.population));
     if (ipop)
         say(fmt::format("ipop restarts: a start stagnates when its best rises by <= {:g} over {} generations{}; "
                         "each restart doubles the population",
@@ -142,7 +149,7 @@ int run_gait_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& con
                                 r.wall_seconds));
         const int interval = std::max(1, s.experiment.checkpoint_interval);
         if ((r.generation + 1) % interval == 0 || s.gait.evaluations - r.evaluations < search.next_batch_size())
-            write_checkpoint(opt.run_dir, r.generation, io::to_xml(checkpoint_of(search, s, handover)));
+            write_checkpoint(opt.run_dir, r.generation, io::to_xml(checkpoint_of(search, s, origin, handover)));
         const long per_generation = search.population_size();
         // The generations the budget allows at the next batch's size (without
         // restarts: floor(budget / lambda)).
@@ -161,9 +168,7 @@ int run_gait_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& con
 
     if (prepared.gait_resume) {
         io::GaitFile& g = *prepared.gait_resume;
-        if (g.settings_digest != io::settings_digest(s))
-            say(fmt::format("note: {} was made with other settings; continuing with these settings",
-                            s.control.population_load_from));
+        say_checkpoint_notes(prepared, console);
         say(fmt::format("resuming from {} at generation {} ({} evaluations)", s.control.population_load_from,
                         g.generation, g.evaluations));
         const std::string extra = with_best_so_far ? kGaitStatsColumns : "";
@@ -211,7 +216,7 @@ int run_gait_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& con
     // goes into this folder too (as the GP loop saves a resumed last generation again).
     if (prepared.gait_resume && search.generation() == first_generation && reason != "interrupted")
         write_checkpoint(opt.run_dir, at.generation + search.generation(),
-                         io::to_xml(checkpoint_of(search, s, handover)));
+                         io::to_xml(checkpoint_of(search, s, origin, handover)));
 
     const gait::Candidate& best = search.champion();
     const std::string summary =
@@ -233,7 +238,7 @@ int run_gait_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& con
     if (reason == "interrupted") {
         // The checkpoint of the last finished generation is on disk unless the interval skipped it.
         write_checkpoint(opt.run_dir, at.generation + search.generation(),
-                         io::to_xml(checkpoint_of(search, s, handover)));
+                         io::to_xml(checkpoint_of(search, s, origin, handover)));
         return console.interrupted();
     }
     finish_run(s, opt, console);

@@ -34,6 +34,7 @@ using Clock = std::chrono::steady_clock;
 template <class Solution>
 struct Family {
     const sim::RobotSpec* robot = nullptr;   // the run's, already loaded
+    io::CheckpointOrigin origin;             // written in every checkpoint
     typename gp::MapElites<Solution>::Batch evaluate;
     std::function<void(io::ArchiveElite&, const Solution&)> store;
     std::function<Solution(const io::ArchiveElite&)> load;
@@ -46,6 +47,7 @@ template <class Solution>
 io::ArchiveFile checkpoint_of(const gp::MapElites<Solution>& me, const Family<Solution>& family,
                               const io::Settings& s) {
     io::ArchiveFile a;
+    a.origin = family.origin;
     a.experiment = s.experiment.type;
     a.settings_digest = io::settings_digest(s);
     a.seed = s.experiment.seed;
@@ -104,9 +106,7 @@ int loop(gp::MapElites<Solution>& me, const Family<Solution>& family, const Prep
     std::optional<io::StatsWriter> stats;
     if (prepared.archive_resume) {
         const io::ArchiveFile& a = *prepared.archive_resume;
-        if (a.settings_digest != io::settings_digest(s))
-            console.say(fmt::format("note: {} was made with other settings; continuing with these settings",
-                                    s.control.population_load_from));
+        say_checkpoint_notes(prepared, console);
         restore(me, family, a);
         console.say(fmt::format("resuming from {} after batch {} ({} evaluations, {} elites)",
                                 s.control.population_load_from, a.batches - 1, a.evaluations, a.elites.size()));
@@ -227,15 +227,10 @@ int run_gait_family(PreparedRun prepared, const RunOptions& opt, RunConsole& con
                                           experiments::make_vector_emitter(s, vc), s.experiment.seed);
     Family<std::vector<double>> family;
     family.robot = &setup.robot;
+    family.origin = io::origin_of(s, setup.robot);
     family.evaluate = [&](const std::vector<std::vector<double>>& xs) { return evaluator.described(xs, descriptor); };
     family.store = [](io::ArchiveElite& e, const std::vector<double>& x) { e.x = x; };
-    family.load = [&](const io::ArchiveElite& e) {
-        if (e.x.size() != setup.dimension())
-            throw InputError(fmt::format("an elite of cell {} has {} parameters, these settings make {}", e.cell,
-                                         e.x.size(), setup.dimension()),
-                             s.control.population_load_from);
-        return e.x;
-    };
+    family.load = [](const io::ArchiveElite& e) { return e.x; };   // its length checked by prepare_run
     family.replay = [&](const std::vector<double>& x) {
         const auto controller = setup.controller(x);
         return sim::evaluate(setup.robot, *controller, setup.sim);
@@ -259,6 +254,7 @@ int run_hypergp_family(PreparedRun prepared, const RunOptions& opt, RunConsole& 
                                    s.experiment.seed);
     Family<tree::Forest> family;
     family.robot = &model.robot;
+    family.origin = io::origin_of(s, model.robot);
     family.evaluate = [&](const std::vector<tree::Forest>& forests) {
         std::vector<gp::IndividualPtr> todo;
         for (std::size_t i = 0; i < forests.size(); ++i) {
@@ -273,13 +269,7 @@ int run_hypergp_family(PreparedRun prepared, const RunOptions& opt, RunConsole& 
         return out;
     };
     family.store = [](io::ArchiveElite& e, const tree::Forest& f) { e.genotype = f; };
-    family.load = [&](const io::ArchiveElite& e) {
-        if (static_cast<int>(e.genotype.size()) != s.gp.trees_per_genotype)
-            throw InputError(fmt::format("an elite of cell {} has {} trees, these settings make {}", e.cell,
-                                         e.genotype.size(), s.gp.trees_per_genotype),
-                             s.control.population_load_from);
-        return e.genotype;
-    };
+    family.load = [](const io::ArchiveElite& e) { return e.genotype; };   // its shape checked by prepare_run
     family.replay = [&](const tree::Forest& f) { return hypergp::run(model, f).result; };
     family.describe = [&](const tree::Forest& f) {
         std::string trees;

@@ -194,6 +194,11 @@ void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& consol
 }
 
 
+void say_checkpoint_notes(const PreparedRun& prepared, RunConsole& console) {
+    if (!prepared.origin_note.empty()) console.say(prepared.origin_note);
+    if (!prepared.search_note.empty()) console.say(prepared.search_note);
+}
+
 void fill_fitness_stats(gp::GenerationRecord& r, std::vector<double> f) {
     if (f.empty()) return;
     std::sort(f.begin(), f.end());

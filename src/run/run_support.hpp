@@ -117,6 +117,8 @@ GpPhaseResult run_gp_phase(PreparedRun& prepared, const RunOptions& opt, RunCons
 // "stopped: ... best: ... best trees: ..." of summary.txt.
 std::string summary_of(const gp::EvolutionResult& result, const experiments::Experiment& experiment,
                        const io::Settings& s);
+// The prepared run's notes on its checkpoint (origin_note, search_note), if any.
+void say_checkpoint_notes(const PreparedRun& prepared, RunConsole& console);
 
 // The gait experiment's loop (run_gait.cpp); run_experiment hands over to it.
 int run_gait(PreparedRun prepared, const RunOptions& opt);

@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <iostream>
+#include <iterator>
 #include <system_error>
 
 #include "cic/core/error.hpp"
+#include "cic/io/did_you_mean.hpp"
 
 namespace cic::app {
 
@@ -37,9 +39,13 @@ fs::path find_settings_file(const std::string& given, const fs::path& cic_binary
     if (fs::exists(p, ec)) throw InputError("--settings " + given + ": not a regular file");
 
     std::string looked = (p.is_absolute() ? p : fs::absolute(p, ec)).string();
+    std::vector<std::string> shipped;   // the names in the folders searched, for "did you mean"
     if (p.is_relative()) {
+        // "settings/NAME.xml" (the source tree's spelling) is NAME.xml in a settings folder, not settings/settings/.
+        const fs::path inside = *p.begin() == "settings" && std::distance(p.begin(), p.end()) > 1
+            ? p.lexically_relative("settings") : p;
         for (const auto& dir : settings_search_folders(cic_binary)) {
-            const fs::path candidate = dir / p;
+            const fs::path candidate = (dir / inside).lexically_normal();
             if (fs::is_regular_file(candidate, ec)) {
                 fs::path full = fs::weakly_canonical(candidate, ec);
                 if (ec) full = candidate;
@@ -47,9 +53,13 @@ fs::path find_settings_file(const std::string& given, const fs::path& cic_binary
                 return full;
             }
             looked += ", " + candidate.string();
+            for (const auto& e : fs::directory_iterator(dir, ec))
+                if (e.path().extension() == ".xml") shipped.push_back(e.path().filename().string());
         }
     }
-    throw InputError("settings file " + given + " not found; looked in: " + looked);
+    const std::string near = io::nearest_name(p.filename().string(), shipped);
+    throw InputError("settings file " + given + " not found; looked in: " + looked +
+                     (near.empty() ? "" : "; did you mean " + near + "?"));
 }
 
 } // namespace cic::app

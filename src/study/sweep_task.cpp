@@ -5,10 +5,12 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include <tuple>
@@ -201,6 +203,23 @@ void refuse_mismatched_runs(const SweepPlan& plan) {
                      plan.file.string());
 }
 
+std::vector<fs::path> runs_outside_the_plan(const SweepPlan& plan) {
+    std::set<fs::path> planned;
+    for (const SweepTask& t : plan.tasks()) planned.insert(t.run_dir);
+    std::vector<fs::path> out;
+    std::error_code ec;
+    const fs::path runs = plan.study / "runs";
+    for (const auto& config : fs::directory_iterator(runs, ec)) {
+        if (!config.is_directory(ec)) continue;
+        for (const auto& run : fs::directory_iterator(config.path(), ec)) {
+            const fs::path rel = fs::path("runs") / config.path().filename() / run.path().filename();
+            if (!planned.count(rel) && fs::exists(run.path() / "settings.xml", ec)) out.push_back(plan.study / rel);
+        }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 void write_index(const SweepPlan& plan) {
     fs::create_directories(plan.study);
     const FileLock lock(plan.study / ".index.lock", true);
@@ -345,6 +364,7 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
     if (resume) extra.push_back("Control.populationXmlLoadFrom=" + (dir / "population.xml").string());
 
     PreparedRun prepared = prepare_run(plan.settings(task, extra));
+    if (resume) prepared.search_note.clear();   // a task goes on with its own settings, or a raised budget only
     fs::remove(dir / "failed.txt");
     if (!resume)   // a fresh start: clear what a run killed before its first checkpoint left
         for (const auto& e : fs::directory_iterator(dir))

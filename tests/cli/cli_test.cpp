@@ -154,6 +154,29 @@ TEST_F(Cli, MissingSettingsFileWritesNothing) {
     EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// Issue 39, class 7: `cic settings NAME.xml` finds the shipped settings as
+// --settings does; a missing one is looked for once per folder (never
+// settings/settings/), with a "did you mean" for a near name; a settings file
+// given without --settings gets cic's hint alone.
+TEST_F(Cli, SettingsFilesAreFoundAsByTheMainJob) {
+    Result r;
+    const std::string in_dir = "cd '" + dir.string() + "' && '" + binary() + "' ";
+    FILE* p = ::popen((in_dir + "settings r1_settings.xml 2>&1").c_str(), "r");
+    ASSERT_NE(p, nullptr);
+    char buf[4096];
+    while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) r.out.append(buf, n);
+    EXPECT_EQ(WEXITSTATUS(::pclose(p)), 0) << r.out;
+    EXPECT_HAS(r.out, "settings r1_settings.xml: using ");
+    r = run("settings settings/r1_setings.xml");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.out.find("settings/settings/"), std::string::npos) << r.out;
+    EXPECT_HAS(r.out, "did you mean r1_settings.xml?");
+    r = run("settings/r1_settings.xml");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.out, "cic: error: 'settings/r1_settings.xml' is not a command; to run a settings file: cic --settings "
+                     "settings/r1_settings.xml (to check it: cic settings settings/r1_settings.xml)\n");
+}
+
 TEST_F(Cli, BadSettingsGiveOneLineWithFileAndLineAndWriteNothing) {
     auto f = write("bad.xml", "<settings>\n<GP>\n<tournament_size>many</tournament_size>\n</GP>\n</settings>\n");
     auto r = run("--settings '" + f.string() + "'" + out_arg());
@@ -238,7 +261,8 @@ TEST_F(Cli, SettingsSubcommand) {
     EXPECT_EQ(cic::io::read_settings_string(e.out).gp.elitism, 2);
     auto bad = run("settings '" + (dir / "missing.xml").string() + "'");
     EXPECT_EQ(bad.code, 2);
-    EXPECT_HAS(bad.out, "missing.xml: cannot read");
+    // Looked for as --settings looks (issue 39), with the same message.
+    EXPECT_HAS(bad.out, "settings file " + (dir / "missing.xml").string() + " not found; looked in: ");
 }
 
 #include "cic/run/run_folder.hpp"

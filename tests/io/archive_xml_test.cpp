@@ -114,17 +114,88 @@ TEST(ArchiveXml, ASettingsMismatchIsRefused) {
     s.experiment.type = "gait";
     s.map_elites.enabled = true;
     const ArchiveFile a = sample(false);
+    s.map_elites.batch = 10;   // the sample's 30 evaluations are 3 batches of 10
     const gp::GridSpec grid{{5, 5}, {0, 0}, {1, 1}};
-    EXPECT_NO_THROW(check_compatible(a, s, grid, "a.xml"));
-    EXPECT_THROW(check_compatible(a, s, gp::GridSpec{{4, 5}, {0, 0}, {1, 1}}, "a.xml"), InputError);   // bins
+    EXPECT_NO_THROW(check_compatible(a, s, grid, 2, "a.xml"));
+    EXPECT_THROW(check_compatible(a, s, gp::GridSpec{{4, 5}, {0, 0}, {1, 1}}, 2, "a.xml"), InputError);   // bins
     s.map_elites.descriptor = sim::Descriptor::Omni;
-    EXPECT_THROW(check_compatible(a, s, grid, "a.xml"), InputError);
+    EXPECT_THROW(check_compatible(a, s, grid, 2, "a.xml"), InputError);
     s.map_elites.descriptor = sim::Descriptor::DutyFactor;
     s.experiment.type = "hypergp";
-    EXPECT_THROW(check_compatible(a, s, grid, "a.xml"), InputError);
+    EXPECT_THROW(check_compatible(a, s, grid, 2, "a.xml"), InputError);
     s.experiment.type = "gait";
     s.map_elites.enabled = false;
-    EXPECT_THROW(check_compatible(a, s, grid, "a.xml"), InputError);
+    EXPECT_THROW(check_compatible(a, s, grid, 2, "a.xml"), InputError);
+}
+
+std::string compatibility_error(const ArchiveFile& a, const Settings& s, std::size_t dimension) {
+    try {
+        check_compatible(a, s, gp::GridSpec{{5, 5}, {0, 0}, {1, 1}}, dimension, "a.xml");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+// Issue 39, class 2: an archive is checked as strictly as a population.
+TEST(ArchiveXml, AnEditedEliteIsRefusedByItsHash) {
+    const std::string text = to_xml(sample(false));
+    ASSERT_NE(text.find(" hash=\""), std::string::npos);
+    // An elite's fitness edited to 99 would end a run as "minimum fitness reached".
+    const std::string e = error_of(replaced(text, "fitness=\"-0.25\"", "fitness=\"99\""));
+    EXPECT_NE(e.find("a.xml:"), std::string::npos) << e;
+    EXPECT_NE(e.find("<elite cell=\"24\" hash="), std::string::npos) << e;
+    EXPECT_NE(e.find("edited by hand"), std::string::npos) << e;
+    EXPECT_NE(error_of(replaced(to_xml(sample(true)), "(gauss x1)", "(gauss x0)")).find("edited by hand"),
+              std::string::npos);
+}
+
+TEST(ArchiveXml, DescriptorsOutsideTheGridAndGenesOutsideTheBoxAreRefused) {
+    const std::string text = to_xml(sample(false));
+    const std::string d = error_of(replaced(text, "descriptor=\"0.10000000000000001 0.20000000000000001\"",
+                                            "descriptor=\"-0.5 0.20000000000000001\""));
+    EXPECT_NE(d.find("a.xml:"), std::string::npos) << d;
+    EXPECT_NE(d.find("outside the grid's [0, 1]"), std::string::npos) << d;
+    EXPECT_NE(error_of(replaced(text, "descriptor=\"1 0.99999999999999989\"", "descriptor=\"1.5 0.99999999999999989\""))
+                  .find("outside the grid"),
+              std::string::npos);
+    const std::string x = error_of(replaced(text, "<x>0 1</x>", "<x>0 1.25</x>"));
+    EXPECT_NE(x.find("outside the unit box"), std::string::npos) << x;
+}
+
+TEST(ArchiveXml, ElitesTheSettingsCannotTakeAreRefusedWithTheirLine) {
+    Settings s;
+    s.experiment.type = "gait";
+    s.map_elites.enabled = true;
+    s.map_elites.batch = 10;
+    const ArchiveFile gait = sample(false);
+    EXPECT_EQ(compatibility_error(gait, s, 2), "(no error)");
+    // An elite of the wrong length, with its line.
+    const ArchiveFile read = parse_archive(to_xml(gait), "a.xml");
+    const std::string length = compatibility_error(read, s, 3);
+    EXPECT_NE(length.find("a.xml:" + std::to_string(read.elites[0].line) + ": <elite cell=\"1\"> has 2 parameters, "
+                          "these settings make 3"),
+              std::string::npos)
+        << length;
+    // Evaluations that are not a whole number of batches.
+    s.map_elites.batch = 7;
+    EXPECT_NE(compatibility_error(gait, s, 2).find("is not its 3 batches of MapElites.batch 7 (21)"), std::string::npos)
+        << compatibility_error(gait, s, 2);
+    // A tree using x9 when there are 4 variables (the population reader refuses it too).
+    s.experiment.type = "hypergp";
+    s.map_elites.batch = 10;
+    s.gp.trees_per_genotype = 2;
+    ArchiveFile trees = sample(true);
+    trees.experiment = "hypergp";
+    EXPECT_EQ(compatibility_error(trees, s, 0), "(no error)");
+    trees.elites[1].genotype[0] = tree::Tree::parse("(gauss x9)");
+    EXPECT_NE(compatibility_error(trees, s, 0).find("<elite cell=\"24\"> uses variable x9, but "
+                                                   "GP.terminalVariableCount is 4"),
+              std::string::npos)
+        << compatibility_error(trees, s, 0);
+    trees = sample(true);
+    s.gp.trees_per_genotype = 1;
+    EXPECT_NE(compatibility_error(trees, s, 0).find("has 2 trees"), std::string::npos);
 }
 
 } // namespace

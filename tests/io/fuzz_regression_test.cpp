@@ -36,6 +36,7 @@ const std::map<std::string, Check>& checks() {
         {"settings", fuzz::check_settings},
         {"population", fuzz::check_population},
         {"archive", fuzz::check_archive},
+        {"gait", fuzz::check_gait},
         {"sexpr", fuzz::check_sexpr},
         {"robot", fuzz::check_robot},
     };
@@ -107,6 +108,20 @@ TEST(FuzzRegressions, Issue24InputsAreRefused) {
             EXPECT_EQ(check(read_bytes(f)).verdict, fuzz::Verdict::Rejected) << f;
         }
     EXPECT_GE(seen, 8u);
+}
+
+// Issue 39: checkpoints whose content was edited (an archive elite's fitness, a
+// gait's champion, an origin), an archive with a descriptor outside its grid or
+// a gene outside the unit box, a number that underflows: each was believed (or
+// misnamed) before the fix; each must now be refused.
+TEST(FuzzRegressions, Issue39InputsAreRefused) {
+    std::size_t seen = 0;
+    for (const auto& [target, check] : checks())
+        for (const auto& f : cic::testing::issue_inputs(target, "issue39-")) {
+            ++seen;
+            EXPECT_EQ(check(read_bytes(f)).verdict, fuzz::Verdict::Rejected) << f;
+        }
+    EXPECT_GE(seen, 6u);
 }
 
 // robot_to_xml wrote centre="0" for an unnamed centre module 0, but the reader

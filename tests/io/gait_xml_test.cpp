@@ -63,6 +63,9 @@ TEST(GaitXml, BrokenFilesAreRefusedWithTheirLine) {
     EXPECT_NE(error_of(bad).find("g.xml:"), std::string::npos) << error_of(bad);
     EXPECT_NE(error_of(bad).find("is not a valid number"), std::string::npos) << error_of(bad);
     bad = text;
+    bad.replace(bad.find("0.5"), 3, "1e-400");   // issue 39: said as an underflow, not an invalid number
+    EXPECT_NE(error_of(bad).find("\"1e-400\" underflows"), std::string::npos) << error_of(bad);
+    bad = text;
     bad.replace(bad.find(" 0.5"), 4, "");   // a point with one parameter too few
     EXPECT_NE(error_of(bad).find("parameters"), std::string::npos) << error_of(bad);
 }
@@ -133,6 +136,41 @@ TEST(GaitXml, HandoverRoundTripsAndIsChecked) {
     EXPECT_THROW(check_compatible(sample(), s, 3, "g.xml"), InputError);   // a gait run's checkpoint
     s.neural.switch_patience = 0;
     EXPECT_THROW(check_compatible(g, s, 3, "g.xml"), InputError);          // settings that never switch
+}
+
+// Issue 39: an edited fitness (champion, candidate or history) would be
+// believed on resume; the content hash notices it. A file written before the
+// hash (no contentHash) loads as before.
+TEST(GaitXml, AnEditedStateIsRefusedByItsContentHash) {
+    const std::string text = to_xml(sample());
+    ASSERT_NE(text.find("contentHash=\""), std::string::npos);
+    std::string edited = text;
+    edited.replace(edited.find("fitness=\"2.25\""), 14, "fitness=\"99\"");   // the champion
+    const std::string e = error_of(edited);
+    EXPECT_NE(e.find("g.xml:2:"), std::string::npos) << e;
+    EXPECT_NE(e.find("contentHash"), std::string::npos) << e;
+    EXPECT_NE(e.find("edited by hand"), std::string::npos) << e;
+    std::string legacy = text;
+    const auto at = legacy.find(" contentHash=\"");
+    legacy.erase(at, legacy.find('"', at + 14) + 1 - at);
+    EXPECT_EQ(error_of(legacy), "(no error)");
+    edited = legacy;
+    edited.replace(edited.find("fitness=\"2.25\""), 14, "fitness=\"99\"");
+    EXPECT_EQ(error_of(edited), "(no error)");   // nothing to check against: believed, as before
+}
+
+TEST(GaitXml, TheOriginRoundTripsAndAnEditedOneIsRefused) {
+    GaitFile g = sample();
+    g.origin = CheckpointOrigin{{{"experiment", "gait"}, {"robot", "R1 (3 modules, 2 joints; geometry 00)"}}, 0};
+    const std::string text = to_xml(g);
+    const GaitFile back = parse_gait(text, "g.xml");
+    ASSERT_TRUE(back.origin.has_value());
+    EXPECT_EQ(back.origin->parts, g.origin->parts);
+    EXPECT_EQ(to_xml(back), text);
+    std::string edited = text;
+    edited.replace(edited.find("R1 (3"), 5, "R2 (3");
+    EXPECT_NE(error_of(edited).find("does not match its parts"), std::string::npos) << error_of(edited);
+    EXPECT_FALSE(parse_gait(to_xml(sample()), "g.xml").origin.has_value());
 }
 
 TEST(GaitXml, ACheckpointOfOtherSettingsIsRefused) {

@@ -87,6 +87,15 @@ TEST(SettingsErrors, OutOfRange) {
     EXPECT_HAS(m, "out of range");
 }
 
+// Issue 39: 1e-400 is not "out of range" for a range that holds it: it underflows.
+TEST(SettingsErrors, UnderflowAndOverflowAreCalledSo) {
+    auto m = error_of("<settings><Simulator>\n<erp>1e-400</erp></Simulator></settings>");
+    EXPECT_HAS(m, "bad.xml:2: <Simulator> erp = \"1e-400\": underflows: it is closer to 0 than a double can hold");
+    EXPECT_EQ(m.find("out of range"), std::string::npos) << m;
+    m = error_of("<settings><Simulator>\n<erp>1e400</erp></Simulator></settings>");
+    EXPECT_HAS(m, "overflows");
+}
+
 TEST(SettingsErrors, EmptyValues) {
     auto m = error_of(gp("<tournament_size>  </tournament_size>"));
     EXPECT_HAS(m, "bad.xml:3: <GP> tournament_size = \"\": empty value");

@@ -105,6 +105,26 @@ TEST_F(RunInputs, BadRobotsAreRefusedBeforeAFolderExists) {
     }
 }
 
+// Issue 39, class 4: a robot whose physics fails at the first step (here, far
+// out at 2e9) would fail every evaluation and end the run with the failure
+// fitness as its best; it is refused with the reason, for HyperGP and gait.
+TEST_F(RunInputs, ARobotWhosePhysicsCannotStartIsRefused) {
+    write_text(dir / "far.xml", R"(<robot name="far" centre="a" preferred="x">
+  <module name="a" x="2000000000" y="0" z="0" axis="fixed" attach="none"/>
+  <module name="b" x="2000000001" y="0" z="0" axis="z" attach="-x"/>
+</robot>
+)");
+    const std::string file = (dir / "far.xml").string();
+    EXPECT_EQ(run_with("--set Simulator.robotFile=" + file), 2) << log;
+    EXPECT_NE(log.find("physics fails at the first step"), std::string::npos) << log;
+    EXPECT_NE(log.find("blow-up"), std::string::npos) << log;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+    EXPECT_EQ(run_with("--set Simulator.robotFile=" + file, true), 2) << log;
+    EXPECT_EQ(run_with("--set Experiment.type=gait --set Simulator.robotFile=" + file), 2) << log;
+    EXPECT_NE(log.find("physics fails at the first step"), std::string::npos) << log;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 TEST_F(RunInputs, SettingsThatCannotRunAreRefusedBeforeAFolderExists) {
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"--set Control.maximumIterations=0", "maximumIterations = \"0\": out of range"},

@@ -267,6 +267,20 @@ TEST(Sweep, DryRunListsEveryRunAndWritesNothing) {
     fs::remove_all(dir);
 }
 
+// Issue 39, class 7: a configuration dropped from an edited sweep file leaves
+// its runs on disk, which index.csv and export leave out: the sweep says so.
+TEST(Sweep, RunsOfADroppedConfigurationAreNamed) {
+    const auto dir = temp_dir("sweep-dropped");
+    write_text(dir / "s.xml", sweep_text(dir / "study"));
+    fs::create_directories(dir / "study/runs/gone/s1");
+    write_text(dir / "study/runs/gone/s1/settings.xml", "<settings/>\n");
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --dry-run", dir / "log"), 0) << read_text(dir / "log");
+    const std::string out = read_text(dir / "log");
+    EXPECT_NE(out.find("1 run folder of the study belongs to no task of"), std::string::npos) << out;
+    EXPECT_NE(out.find("runs/gone/s1"), std::string::npos) << out;
+    fs::remove_all(dir);
+}
+
 TEST(Sweep, RunsEveryTaskInItsFolderAndMatchesAPlainRun) {
     const auto dir = temp_dir("sweep-run");
     write_text(dir / "s.xml", sweep_text(dir / "study"));
@@ -313,6 +327,24 @@ TEST(Sweep, RunsEveryTaskInItsFolderAndMatchesAPlainRun) {
     ASSERT_EQ(run_command(plain, dir / "plain.log"), 0) << read_text(dir / "plain.log");
     EXPECT_EQ(read_text(dir / "study/runs/elitism=1+sampleAverageCount=2/s6/population.xml"),
               read_text(only_run(dir / "plain") / "population.xml"));
+    // Issue 39, class 7: `cic assess STUDY` expands the study, as plot, export and compare do.
+    ASSERT_EQ(run_command("--quiet assess " + (dir / "study").string() + " --out " + (dir / "assess.csv").string(),
+                          dir / "assess.log"),
+              0)
+        << read_text(dir / "assess.log");
+    EXPECT_EQ(lines(read_text(dir / "assess.csv")), 13) << read_text(dir / "assess.csv");
+    // Class 7: a run folder that index.csv does not list (a dropped configuration) is named by export.
+    fs::create_directories(dir / "study/runs/gone/s1");
+    write_text(dir / "study/runs/gone/s1/settings.xml", "<settings/>\n");
+    ASSERT_EQ(run_command("export " + (dir / "study").string() + " --out " + (dir / "export.csv").string(),
+                          dir / "export.log"),
+              0)
+        << read_text(dir / "export.log");
+    EXPECT_NE(read_text(dir / "export.log").find("1 run folder of " + (dir / "study").string() +
+                                                  " is not in its index.csv"),
+              std::string::npos)
+        << read_text(dir / "export.log");
+    fs::remove_all(dir / "study/runs/gone");
     // Run again: nothing left to do.
     ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "again.log"), 0);
     EXPECT_NE(read_text(dir / "again.log").find("0 of 12 runs to do"), std::string::npos) << read_text(dir / "again.log");

@@ -34,13 +34,19 @@ inline std::vector<std::filesystem::path> fuzz_files(const std::string& kind, co
     return out;
 }
 
+// The reproducers of an issue (fuzz/regressions/<target>/<prefix>*, e.g.
+// "issue39-"), each of which a reader believed, or refused badly, before its fix.
+inline std::vector<std::filesystem::path> issue_inputs(const std::string& target, const std::string& prefix) {
+    std::vector<std::filesystem::path> out;
+    for (const auto& f : fuzz_files("regressions", target))
+        if (f.filename().string().rfind(prefix, 0) == 0) out.push_back(f);
+    return out;
+}
+
 // The reproducers of issue 24 (fuzz/regressions/<target>/issue24-*), each of
 // which a reader accepted, or refused without a line, before the fix.
 inline std::vector<std::filesystem::path> issue24_inputs(const std::string& target) {
-    std::vector<std::filesystem::path> out;
-    for (const auto& f : fuzz_files("regressions", target))
-        if (f.filename().string().rfind("issue24-", 0) == 0) out.push_back(f);
-    return out;
+    return issue_inputs(target, "issue24-");
 }
 
 } // namespace cic::testing

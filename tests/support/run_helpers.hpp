@@ -155,9 +155,9 @@ inline std::string golden_symreg_settings(int threads) {
 
 // The hashes of golden_hypergp_settings' and golden_symreg_settings' final
 // population.xml (tests/experiments/golden_test.cpp, tests/run/mpi_test.cpp).
-inline const std::string kGoldenHypergp = "ab3a3e7d29aa37ad";
-inline const std::string kGoldenSymreg = "1267ae7aacf5fb20";
-inline const std::string kGoldenCpg = "45c972bee328b1dc";   // golden_cpg_settings
+inline const std::string kGoldenHypergp = "09db9dd1955dcc96";
+inline const std::string kGoldenSymreg = "736b635d6cde4c4c";
+inline const std::string kGoldenCpg = "c9474be13ed77341";   // golden_cpg_settings
 
 // The golden MAP-Elites runs (docs/quality-diversity.md): HyperGP-gait genotypes
 // varied by crossover and subtree mutation, and gait vectors varied by
@@ -175,8 +175,8 @@ inline std::string golden_map_elites_settings(const std::string& type, int worke
 }
 inline std::string golden_me_hypergp_settings(int workers) { return golden_map_elites_settings("hypergp", workers); }
 inline std::string golden_me_gait_settings(int workers) { return golden_map_elites_settings("gait", workers); }
-inline const std::string kGoldenMapElitesHypergp = "1a517220027ccb38";   // golden_me_hypergp_settings' final population.xml
-inline const std::string kGoldenMapElitesGait = "b42a2ab56a421959";      // golden_me_gait_settings' final population.xml
+inline const std::string kGoldenMapElitesHypergp = "826a6b8e1feaa542";   // golden_me_hypergp_settings' final population.xml
+inline const std::string kGoldenMapElitesGait = "f531a82e59ea5987";      // golden_me_gait_settings' final population.xml
 
 
 // A sweep file of small HyperGP runs on R0 (2.5 s or `seconds` simulations,

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cic/io/checkpoint_origin.hpp"
 #include "cic/io/settings.hpp"
 
 namespace cic::io {
@@ -52,7 +53,14 @@ struct GaitFile {
     // or made before the key) load as before.
     std::optional<GaitRestartRecord> restarts;
     std::optional<GaitHandover> handover;   // a Switch-HybrID run's gait phase only
+    // Where it came from (checkpoint_origin.hpp); none in files written before origins.
+    std::optional<CheckpointOrigin> origin;
 };
+
+// A digest of the state a resume believes (seed, counters, points, history,
+// restarts), written as <gaitRun contentHash>: a hand edit is refused, since a
+// gait checkpoint cannot be re-evaluated in part.
+std::string content_hash(const GaitFile& g);
 
 std::string to_xml(const GaitFile& g);
 // Throws InputError "FILE:LINE: ..." for anything malformed, truncated or inconsistent.

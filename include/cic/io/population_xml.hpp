@@ -7,7 +7,11 @@
 #include <string>
 #include <vector>
 
+#include <map>
+#include <optional>
+
 #include "cic/gp/evolution.hpp"
+#include "cic/io/checkpoint_origin.hpp"
 #include "cic/io/settings.hpp"
 
 namespace cic::io {
@@ -32,9 +36,12 @@ struct PopulationFile {
         int best_generation = 0;
     };
     std::optional<SwitchClock> switch_clock;
+    // Where it came from (checkpoint_origin.hpp); none in files written before origins.
+    std::optional<CheckpointOrigin> origin;
+    std::map<std::uint64_t, int> lines;   // individual id -> line of its <individual> (files read)
 };
 
-// The shape fields and digest of the given settings, with an empty population.
+// The shape fields, digest and origin of the given settings, with an empty population.
 PopulationFile describe(const Settings& s);
 
 std::string to_xml(const PopulationFile& p);

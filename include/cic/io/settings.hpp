@@ -4,6 +4,7 @@
 // documented from one table (settings_table.hpp).
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <string>
 
 #include "cic/gp/config.hpp"
@@ -110,6 +111,10 @@ struct Settings {
     // (settings_extension.hpp): "Section.key" -> canonical text, absent = default.
     std::map<std::string, std::string> extra;
     std::string source_file;             // where they were read from (empty = defaults)
+    // Where each key given in a file or --set was written ("Section.key" ->
+    // file, line; absent = its default), so that a check made later (a
+    // budget, a grid) can point at the line (io::key_error).
+    std::map<std::string, std::pair<std::string, int>> key_locations;
 };
 
 } // namespace cic::io

@@ -38,6 +38,11 @@ Settings load_settings(const std::filesystem::path& file, const std::vector<std:
 Settings load_settings_text(std::string_view text, const std::filesystem::path& file,
                             const std::vector<std::string>& overrides);
 
+// An InputError "<Section> key = "value": MESSAGE" at the file and line where
+// the first of `keys` the user wrote was set (else at the settings file), for
+// a check of the settings made after they were read (a budget, a grid).
+InputError key_error(const Settings& s, const std::vector<std::string>& keys, const std::string& message);
+
 // Cross-field checks (min depth <= max depth, rates sum <= 1, ...). Throws InputError.
 void validate_settings(const Settings& s);
 

@@ -92,6 +92,12 @@ bool is_study_folder(const std::filesystem::path& path);
 StudyIndex read_study_index(const std::filesystem::path& study);
 // The same on the text of an index.csv (`study` names the folder; messages name study/index.csv).
 StudyIndex parse_study_index(std::string_view text, const std::filesystem::path& study);
+// Run folders STUDY/runs/CONFIG/RUN holding a run (settings.xml) that index.csv
+// does not list: runs of a configuration or seed an edited sweep file dropped.
+// Readers of the study leave them out; plot and export say so (runs_missing_note).
+std::vector<std::filesystem::path> runs_missing_from_index(const StudyIndex& index);
+// "note: N run folder(s) of STUDY are not in its index.csv ...: A, B", or "" when none.
+std::string runs_missing_note(const StudyIndex& index);
 
 // Configurations of a study in order of first appearance, with their runs
 // (status done only unless include_unfinished).

@@ -23,9 +23,14 @@ struct ResumeRequest {
 };
 
 // Returns the run's exit code (0, 1, 130, 143). Throws cic::InputError (exit 2)
-// before anything is written when the folder holds no resumable run, when a
-// key other than the budget or one that changes no result would change, or
-// when the budget would not go past what the run already did.
+// before anything is written (settings.xml and run.log included) when the
+// folder holds no resumable run, when a key other than the budget or one that
+// changes no result would change, when the checkpoint fails any check of
+// prepare_run (its origin above all), or when the budget adds no generation or
+// batch (as the same budget is refused at the start). A budget change is said
+// ("continuing with a budget of N evaluations (was M)"). A folder killed before
+// its first checkpoint (settings.xml, no population.xml, no summary.txt)
+// starts again in place: the bytes of an unbroken run.
 int resume_run(const ResumeRequest& request);
 
 } // namespace cic::app

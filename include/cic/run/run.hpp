@@ -30,12 +30,21 @@ struct PreparedRun {
     std::optional<io::PopulationFile> resume;   // populationXmlLoadFrom, parsed and checked
     std::optional<io::GaitFile> gait_resume;    // the same, for the gait experiment
     std::optional<io::ArchiveFile> archive_resume;   // the same, for MAP-Elites (MapElites.enabled)
+    // What the run says about the checkpoint it goes on from: a file without an
+    // <origin> (believed), and a file made with other search settings (its
+    // origin matched, so its fitness values hold). Empty when nothing to say;
+    // a resume in place, which allows only a budget change, clears the second
+    // and says the budget instead.
+    std::string origin_note;
+    std::string search_note;
 };
 
 // Checks every input of a run: the experiment's own (robot file and its
 // joints, dataset; experiments::check_inputs) and the population to resume
-// from (parsed completely, its values checked, and checked against the
-// settings). Throws cic::InputError with file and line; writes nothing.
+// from (parsed completely, its values checked, its origin — robot geometry,
+// simulator, controller, genotype, descriptor — the settings' own, and its
+// contents checked against the settings). Throws cic::InputError with file and
+// line; writes nothing.
 // `cic settings FILE` runs the same checks.
 PreparedRun prepare_run(io::Settings settings);
 

@@ -92,6 +92,11 @@ struct TaskState {
 void refuse_mismatched_runs(const SweepPlan& plan);
 TaskState task_state(const SweepPlan& plan, const SweepTask& task);
 
+// Run folders under STUDY/runs/CONFIG/sSEED that hold a run (settings.xml) but
+// are no task of the plan (a configuration or seed dropped from an edited
+// sweep file): index.csv and `cic export` leave them out, so the sweep says so.
+std::vector<std::filesystem::path> runs_outside_the_plan(const SweepPlan& plan);
+
 // Rewrites STUDY/index.csv (atomically, under a lock shared by every task):
 // run_dir,config,<varied keys>,seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit
 // (commit: the cic build of the run's last session, from its run.log; provenance.hpp)

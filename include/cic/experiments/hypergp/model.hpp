@@ -39,9 +39,14 @@ struct Outcome {
 };
 
 // Every input a HyperGP run reads, checked before the run starts: the robot
-// (file or preset) with at least one joint, and a substrate within the limits
-// (core/limits.hpp). Throws cic::InputError naming the file or key.
+// (file or preset) with at least one joint whose physics runs its first step
+// (check_first_step), and a substrate within the limits (core/limits.hpp).
+// Throws cic::InputError naming the file or key.
 void check_inputs(const io::Settings& s);
+
+// Throws cic::InputError (naming `where`) with the reason when one control step
+// of a controller holding every joint at 0 fails: physics that cannot start.
+void check_first_step(const sim::RobotSpec& robot, const sim::SimConfig& config, const std::string& where);
 
 Outcome run(const Model& m, const tree::Forest& genotype, const sim::EvalOptions& options = {},
             bool record_control = false);
