@@ -124,7 +124,8 @@ CheckpointOrigin origin_of(const Settings& s, const sim::RobotSpec& robot) {
         if (family == ExperimentFamily::HyperGP) {
             const auto substrate = find_setting("Neural", "substrate");
             o.parts.push_back({"controller", join_tokens({"substrate=" + substrate->get(s),
-                                                          section_text(s, "Neural", {"substrate", "useMiddleLegs"})})});
+                                                          section_text(s, "Neural", {"substrate", "useMiddleLegs", "offsetSigma", "offsetRate",
+                                                                                "switchPatience", "switchShare"})})});
         }
         std::string functions;
         for (auto op : s.gp.primitives.functions) functions += (functions.empty() ? "" : ",") + std::string(tree::name(op));

@@ -183,7 +183,7 @@ def test_a_worker_that_dies_is_replaced_and_its_job_retried():
 
 
 def test_the_gil_is_released_while_a_batch_runs():
-    xs = np.random.default_rng(5).random((8, 37))
+    xs = np.random.default_rng(5).random((60, 37))   # long enough for the counter to tick many times
     with cic.Evaluator(R1_GAIT, workers=1, set=QUICK) as ev:
         ticks = []
         done = threading.Event()
