@@ -58,7 +58,7 @@ def quartiles(v):
 
 def summary(results):
     rows = [r for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv"))) if r["status"] == "done"]
-    out = ["# Tuning the direct side (issue 38)", "",
+    out = ["# Tuning the direct side and the hybrids (issue 38)", "",
            "Written by `scripts/scaling.sh` from `scaling-runs.csv` (the ledger); best_ever in metres",
            "(eq. 7.1 of the run's best gait), over the finished runs of tuning seeds 101..105.", ""]
     for study in sorted({r["study"] for r in rows}):
@@ -74,10 +74,16 @@ def summary(results):
             medians[config] = statistics.median(best)
             out.append(f"| {config} | {len(rs)} | {medians[config]:.2f} | [{lo:.2f}, {hi:.2f}] | {wall:.0f} | "
                        f"{1000 * wall / evals:.1f} |")
-        winner = max(medians, key=lambda c: medians[c])
         complete = all(sum(1 for r in rows if r["study"] == study and r["config"] == c) == 5 for c in medians)
-        out += ["", f"Winner so far: **{winner}** (median {medians[winner]:.2f})"
-                + ("" if complete else "; not every configuration has its 5 runs yet") + ".", ""]
+        # A hybrid study tunes two methods (offset-*, switch-*): a winner for each.
+        methods = sorted({c.split("-")[0] for c in medians}) if study.startswith("tune-hybrid") else [None]
+        out.append("")
+        for m in methods:
+            pool = [c for c in medians if m is None or c.split("-")[0] == m]
+            winner = max(pool, key=lambda c: medians[c])
+            out.append(f"Winner so far{'' if m is None else ' (' + m + ')'}: **{winner}** (median {medians[winner]:.2f})"
+                       + ("" if complete else "; not every configuration has its 5 runs yet") + ".")
+        out.append("")
     with open(os.path.join(results, "tune-direct.md"), "w") as f:
         f.write("\n".join(out))
 

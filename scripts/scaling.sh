@@ -8,6 +8,10 @@
 #                seeds 101..105: R1 at 15,000 evaluations (tune-direct-r1.xml)
 #                and the 48-hinge centipede at 2,500 (tune-direct-c8.xml);
 #                results/tune-direct.md names each robot's direct baseline
+#   tune-hybrid  Offset-HybrID (offsetSigma 0.1 or 0.3) and Switch-HybrID (share
+#                0.3 or 0.5), tuning seeds 101..105, on the same two robots and
+#                budgets (tune-hybrid-c8.xml, tune-hybrid-r1.xml); the summary
+#                names each hybrid's configuration per robot
 #   ledger       run nothing: merge the studies' index.csv into
 #                results/scaling-runs.csv and write results/tune-direct.md
 #   estimate     run nothing but timing: CPU seconds per evaluation of every
@@ -33,23 +37,25 @@ while [ $# -gt 0 ]; do
     --commit) commit=1; shift ;;
     --summary-only) summary_only=1; shift ;;
     -h|--help) sed -n '2,/^set /p' "$0" | grep '^#' | sed 's/^# \{0,1\}//'; exit 0 ;;
-    tune-direct|ledger|estimate) stages+=("$1"); shift ;;
+    tune-direct|tune-hybrid|ledger|estimate) stages+=("$1"); shift ;;
     *) echo "scaling.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-[ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, ledger, estimate (see --help)" >&2; exit 2; }
+[ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, tune-hybrid, ledger, estimate (see --help)" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scaling.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
 [ -x "$CIC" ] || { echo "scaling.sh: no cic binary at $CIC (build first, or set CIC)" >&2; exit 2; }
 mkdir -p "$HERE/results"
 
 tune_studies=(tune-direct-c8 tune-direct-r1)   # the centipede first: the new question
+hybrid_studies=(tune-hybrid-c8 tune-hybrid-r1)
+all_studies=("${tune_studies[@]}" "${hybrid_studies[@]}")
 
 ledger() {   # merge every study's index.csv, then the summary
   local s
-  for s in "${tune_studies[@]}"; do
-    [ -d "$output/$s" ] && "$CIC" --quiet sweep "$HERE/$s.xml" --output "$output/$s" --index-only
+  for s in "${all_studies[@]}"; do
+    if [ -d "$output/$s" ]; then "$CIC" --quiet sweep "$HERE/$s.xml" --output "$output/$s" --index-only; fi
   done
-  "$PY" "$ROOT/scripts/scaling-report.py" ledger --studies "$output" --results "$HERE/results" "${tune_studies[@]}" >/dev/null
+  "$PY" "$ROOT/scripts/scaling-report.py" ledger --studies "$output" --results "$HERE/results" "${all_studies[@]}" >/dev/null
   "$PY" "$ROOT/scripts/scaling-report.py" summary --results "$HERE/results"
 }
 
@@ -106,6 +112,12 @@ main() {
         fi
         ledger
         commit_results "Ledger (issue 38): tune-direct summary" ;;
+      tune-hybrid)
+        if [ "$summary_only" = 0 ]; then
+          for s in "${hybrid_studies[@]}"; do run_study "$s"; done
+        fi
+        ledger
+        commit_results "Ledger (issue 38): tune-hybrid summary" ;;
       ledger)
         ledger ;;
       estimate)

@@ -55,6 +55,19 @@ check("| b | 2 | 5.25 |" in md, "b's median of 4.5 and 6.0\n" + md)
 check("Winner so far: **b** (median 5.25)" in md, "b wins on the median\n" + md)
 check("| a | 2 | 4.00 | [3.50, 4.50] | 100 | 40.0 |" in md, "a's row: median, IQR, s per run, ms per evaluation\n" + md)
 
+# A hybrid study tunes two methods: a winner for each, not one over both.
+(work / "studies" / "tune-hybrid-c8").mkdir()
+(work / "studies" / "tune-hybrid-c8" / "index.csv").write_text(HEADER + "".join(
+    f"runs/{c}/s{s},{c},x,{s},done,{b},10,2500,50,{b},abc\n"
+    for c, s, b in [("offset-s0.1", 101, 7.0), ("offset-s0.3", 101, 8.0), ("switch-0.3", 101, 20.0),
+                    ("switch-0.5", 101, 25.0)]))
+sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8", "tune-hybrid-c8"])
+sr.summary(str(work / "results"))
+md = (work / "results" / "tune-direct.md").read_text()
+check("Winner so far (offset): **offset-s0.3** (median 8.00)" in md, "the offset hybrid's winner\n" + md)
+check("Winner so far (switch): **switch-0.5** (median 25.00)" in md, "the switch hybrid's winner\n" + md)
+check("Winner so far: **b** (median 5.25)" in md, "the direct study still has one winner\n" + md)
+
 # The estimate: every robot at 1 s per evaluation gives the plan's evaluations in hours.
 robots = ["R1", "R2"] + sr.CENTIPEDES
 sys.stdin = io.StringIO("".join(f"{r} 1.0\n" for r in robots))
