@@ -85,7 +85,7 @@ private:
 // A line's genotype: {"genotype": G, "id": ANY} or G alone, where G is an array
 // of numbers (a gait or CPG vector), an S-expression string, or an array of them
 // (a forest). Throws InputError for anything else.
-Genotype genotype_of(const json& line, GenotypeForm form) {
+Genotype genotype_of(const json& line) {
     const json& g = line.is_object() ? line.at("genotype") : line;
     Genotype out;
     if (g.is_string()) {
@@ -103,8 +103,7 @@ Genotype genotype_of(const json& line, GenotypeForm form) {
     } else {
         throw InputError(std::string("a genotype is an array of numbers or S-expression strings, got ") + g.type_name());
     }
-    (void)form;   // the session checks the form against the settings
-    return out;
+    return out;   // the session checks the form against the settings
 }
 
 json info_of(const EvaluationSession& session) {
@@ -150,7 +149,7 @@ int run_eval(const EvalOptions& o) {
             try {
                 const json line = json::parse(lines[i]);
                 if (line.is_object() && line.contains("id")) reply["id"] = line["id"];
-                Genotype g = genotype_of(line, session.form());
+                Genotype g = genotype_of(line);
                 session.check(g);
                 batch.push_back(std::move(g));
                 slot.push_back(i);
