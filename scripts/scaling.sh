@@ -23,19 +23,23 @@
 #   --commit        after every run: ledger and summary, then `git commit` of
 #                   experiments/scaling/results/ only (runs go in batches of N)
 #   --summary-only  run nothing; ledger and summary of what is there
+#   --only ROBOT    run only the studies of one robot: c8 or r1 (the ledger
+#                   still covers every study)
 # Environment: CIC (default build/cic), PYTHON (default python3).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 HERE="$ROOT/experiments/scaling"
 CIC=${CIC:-$ROOT/build/cic}
 PY=${PYTHON:-python3}
-jobs=1 output=runs/scaling commit=0 summary_only=0 stages=()
+jobs=1 output=runs/scaling commit=0 summary_only=0 only='' stages=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --jobs) jobs="$2"; shift 2 ;;
     --output) output="$2"; shift 2 ;;
     --commit) commit=1; shift ;;
     --summary-only) summary_only=1; shift ;;
+    --only) only="$2"; shift 2
+            [[ "$only" =~ ^(c8|r1)$ ]] || { echo "scaling.sh: --only takes c8 or r1, got '$only'" >&2; exit 2; } ;;
     -h|--help) sed -n '2,/^set /p' "$0" | grep '^#' | sed 's/^# \{0,1\}//'; exit 0 ;;
     tune-direct|tune-hybrid|ledger|estimate) stages+=("$1"); shift ;;
     *) echo "scaling.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
@@ -79,6 +83,7 @@ commit_results() {   # MESSAGE
 # batches of --jobs (`cic sweep --task`, each resumable), the ledger committed after each batch.
 run_study() {   # STUDY
   local file="$HERE/$1.xml" dir="$output/$1"
+  if [ -n "$only" ] && [[ "$1" != *-"$only" ]]; then return 0; fi
   echo "== $1" >&2
   if [ "$commit" = 0 ]; then
     "$CIC" sweep "$file" --output "$dir" --jobs "$jobs" --workers 1 >&2
