@@ -110,7 +110,7 @@ install(FILES ${_cic_gen}/cic.bash-completion
 # and the application's, so that a project outside cic can register an
 # experiment type and run it through cic's own command line (examples/plugin).
 include(CMakePackageConfigHelpers)
-set(CIC_PACKAGE_LAYERS core tree gp nn sim io experiments report run study cli)
+set(CIC_PACKAGE_LAYERS core tree gp nn sim io experiments report search run study cli)
 if(CIC_WITH_VIEWER)
   list(APPEND CIC_PACKAGE_LAYERS viz)
 endif()

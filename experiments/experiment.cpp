@@ -10,7 +10,7 @@ namespace cic::experiments {
 
 std::unique_ptr<Experiment> make_experiment(const Context& ctx) {
     const ExperimentKind& kind = experiment_kind(ctx.settings.experiment.type);
-    // The gait family has no GP evaluator: the run layer runs it (src/run/run_gait.cpp).
+    // The gait family has no GP evaluator: its search evaluates gait vectors (src/search/evolution_strategy.cpp).
     if (!kind.make) throw std::logic_error("make_experiment: type '" + kind.type.name + "' has no GP evaluator");
     return kind.make(ctx);
 }

@@ -21,11 +21,12 @@ ALLOWED = {
     "io": {"gp", "nn", "sim", "tree", "core"},
     "experiments": {"io", "gp", "nn", "sim", "tree", "core"},
     "viz": {"sim", "core"},
-    # The application: report < run < study < cli.
+    # The application: report < search < run < study < cli.
     "report": {"experiments", "io", "gp", "nn", "sim", "tree", "core"},
-    "run": {"report", "viz", "experiments", "io", "gp", "nn", "sim", "tree", "core"},
-    "study": {"run", "report", "viz", "experiments", "io", "gp", "nn", "sim", "tree", "core"},
-    "cli": {"study", "run", "report", "viz", "experiments", "io", "gp", "nn", "sim", "tree", "core"},
+    "search": {"report", "experiments", "io", "gp", "nn", "sim", "tree", "core"},
+    "run": {"search", "report", "viz", "experiments", "io", "gp", "nn", "sim", "tree", "core"},
+    "study": {"run", "search", "report", "viz", "experiments", "io", "gp", "nn", "sim", "tree", "core"},
+    "cli": {"study", "run", "search", "report", "viz", "experiments", "io", "gp", "nn", "sim", "tree", "core"},
 }
 # Where each layer's files live: its public headers and its sources.
 def places(root, layer):

@@ -329,79 +329,79 @@ void BloatControl::end_generation(Population& pop, EvolutionState& st) {
 
 // -------------------------------------------------------------------- evolve
 
+Generations::Generations(const GpConfig& gp, const BloatConfig& bloat, const tree::PrimitiveSet& ps,
+                         Evaluator& evaluator, EvolutionState state, std::optional<Population> start)
+    : gp_(gp), init_(gp, ps), evaluate_(evaluator), breed_(gp, ps), control_(gp, bloat, breed_),
+      state_(std::move(state)) {
+    if (start) {
+        pop_ = std::move(*start);
+        evaluate_.apply(pop_, state_);   // no-op for a saved, evaluated population
+    } else {
+        init_.apply(pop_, state_);
+        evaluate_.apply(pop_, state_);
+        control_.initialise(pop_, state_);
+        control_.end_generation(pop_, state_);
+    }
+}
+
+GenerationRecord Generations::record(int max_generations) {
+    GenerationRecord rec = summarise(pop_, state_, gp_.forest_depth);
+    rec.max_generations = max_generations;
+    rec.failed = evaluate_.take_failed();
+    rec.wall_seconds = std::chrono::duration<double>(Clock::now() - session_start_).count();
+    rec.generation_seconds = std::chrono::duration<double>(Clock::now() - gen_start_).count();
+    return rec;
+}
+
+void Generations::step() {
+    gen_start_ = Clock::now();
+    breed_.apply(pop_, state_);
+    evaluate_.apply(pop_, state_);
+    all_.resize(pop_.size());
+    std::iota(all_.begin(), all_.end(), std::size_t{0});
+    control_.filter(pop_, state_, all_);
+    // Rejected children became parent copies: breed again where that left duplicates.
+    for (int round = 0; round < gp_.duplicate_retries; ++round) {
+        const auto slots = breed_.replace_duplicates(pop_, state_);
+        if (slots.empty()) break;
+        evaluate_.apply(pop_, state_);
+        control_.filter(pop_, state_, slots);
+    }
+    control_.end_generation(pop_, state_);
+}
+
+EvolutionResult Generations::finish(StopReason reason) {
+    EvolutionResult result;
+    result.population = std::move(pop_);
+    result.state = std::move(state_);
+    result.reason = reason;
+    return result;
+}
+
 EvolutionResult evolve(const GpConfig& gp, const BloatConfig& bloat, const StopConditions& stop,
                        const tree::PrimitiveSet& ps, Evaluator& evaluator, EvolutionState state,
                        std::optional<Population> start, const EvolutionHooks& hooks) {
     if (stop.maximum_iterations < 1) throw std::invalid_argument("maximumIterations must be >= 1");
-    const auto session_start = Clock::now();
-    auto wall = [&] { return std::chrono::duration<double>(Clock::now() - session_start).count(); };
-
-    Initialise init(gp, ps);
-    Evaluate evaluate(evaluator);
-    Breed breed(gp, ps);
-    BloatControl control(gp, bloat, breed);
-
-    EvolutionResult result;
-    Population pop;
-    auto gen_start = Clock::now();
-    if (start) {
-        pop = std::move(*start);
-        evaluate.apply(pop, state);   // no-op for a saved, evaluated population
-    } else {
-        init.apply(pop, state);
-        evaluate.apply(pop, state);
-        control.initialise(pop, state);
-        control.end_generation(pop, state);
-    }
-
-    auto report = [&](bool fresh) {
-        GenerationRecord rec = summarise(pop, state, gp.forest_depth);
-        rec.max_generations = stop.maximum_iterations;
-        rec.failed = evaluate.take_failed();
-        rec.wall_seconds = wall();
-        rec.generation_seconds = std::chrono::duration<double>(Clock::now() - gen_start).count();
-        if (fresh && hooks.on_generation) hooks.on_generation(rec);
-        return rec;
-    };
-
-    GenerationRecord rec = report(!start.has_value());
-    bool first = true;
-    std::vector<std::size_t> all;   // every slot, for the bloat filter
-    for (;;) {
+    const bool resumed = start.has_value();
+    Generations g(gp, bloat, ps, evaluator, std::move(state), std::move(start));
+    GenerationRecord rec = g.record(stop.maximum_iterations);
+    if (!resumed && hooks.on_generation) hooks.on_generation(rec);
+    for (bool first = true;; first = false) {
         StopReason reason{};
         bool done = true;
         if (rec.best >= stop.minimum_fitness) reason = StopReason::MinimumFitness;
         else if (hooks.hand_over && hooks.hand_over(rec)) reason = StopReason::HandedOver;
-        else if (pop.generation + 1 >= stop.maximum_iterations) reason = StopReason::MaximumIterations;
+        else if (g.population().generation + 1 >= stop.maximum_iterations) reason = StopReason::MaximumIterations;
         else if (hooks.stop_requested && hooks.stop_requested->load()) reason = StopReason::Interrupted;
         else done = false;
         // A resumed population was saved already; save it again only if it is also the last.
-        const bool fresh = !(first && start.has_value());
-        if (hooks.on_checkpoint && (fresh || done)) hooks.on_checkpoint(pop, state, done);
-        first = false;
-        if (done) {
-            result.reason = reason;
-            break;
-        }
-        gen_start = Clock::now();
-        breed.apply(pop, state);
-        evaluate.apply(pop, state);
-        all.resize(pop.size());
-        std::iota(all.begin(), all.end(), std::size_t{0});
-        control.filter(pop, state, all);
-        // Rejected children became parent copies: breed again where that left duplicates.
-        for (int round = 0; round < gp.duplicate_retries; ++round) {
-            const auto slots = breed.replace_duplicates(pop, state);
-            if (slots.empty()) break;
-            evaluate.apply(pop, state);
-            control.filter(pop, state, slots);
-        }
-        control.end_generation(pop, state);
-        rec = report(true);
+        const bool fresh = !(first && resumed);
+        if (hooks.on_checkpoint && (fresh || done)) hooks.on_checkpoint(g.population(), g.state(), done);
+        if (done) return g.finish(reason);
+        g.step();
+        rec = g.record(stop.maximum_iterations);
+        if (hooks.on_generation) hooks.on_generation(rec);
     }
-    result.population = std::move(pop);
-    result.state = std::move(state);
-    return result;
 }
 
 } // namespace cic::gp

@@ -76,6 +76,16 @@ ExperimentFamily family_of(const Settings& s) {
     return t->family;
 }
 
+GenotypeForm genotype_form(const Settings& s) {
+    return family_of(s) == ExperimentFamily::Gait ? GenotypeForm::Vector : GenotypeForm::Trees;
+}
+
+std::string_view to_string(GenotypeForm f) { return f == GenotypeForm::Vector ? "gait vectors" : "trees"; }
+
+bool walks_a_robot(const Settings& s) { return family_of(s) != ExperimentFamily::Symreg; }
+
+bool evaluates_in_process(const Settings& s) { return family_of(s) == ExperimentFamily::Symreg; }
+
 std::string_view to_string(ExperimentFamily f) {
     switch (f) {
     case ExperimentFamily::Symreg: return "symreg";

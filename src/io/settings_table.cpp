@@ -121,6 +121,7 @@ using gp::SelectionType;
 // Experiment (ours)
 void experiment_rows(std::vector<SettingKey>& t) {
     t.push_back(detail::experiment_type_row());
+    t.push_back(detail::search_row());
     {
         auto k = row("Experiment", "seed", ValueType::UInt64, "Master random seed; the same seed gives the same run");
         k.min = 0;

@@ -36,6 +36,8 @@ SettingKey experiment_type_row();
 SettingKey substrate_row();
 // The MapElites.emitter row: auto or one of emitter_names() (emitter_names.cpp).
 SettingKey emitter_row();
+// Experiment.search (search_names.cpp).
+SettingKey search_row();
 // A name a registration may take: 1 to 40 of a-z, 0-9, '-' and '_', starting with a letter.
 bool valid_registered_name(std::string_view name);
 // A key whose value is one of a list that registrations extend (Experiment.type,

@@ -119,7 +119,7 @@ EvaluationSession::EvaluationSession(SessionOptions options) : impl_(std::make_u
     im.found = find_settings_file(im.opt.settings_file, im.opt.worker_executable);   // the installed settings beside it
     im.settings = io::load_settings(im.found, im.opt.overrides);
     const io::Settings& s = im.settings;
-    if (io::family_of(s) == io::ExperimentFamily::Symreg)
+    if (!io::walks_a_robot(s))
         throw InputError("scores robot experiments (HyperGP, gait, CPG and their types); these settings are symbolic "
                          "regression (Experiment.type " + s.experiment.type + ")", im.found.string());
     experiments::check_inputs(s);   // the robot and every input a run of them reads
@@ -128,7 +128,7 @@ EvaluationSession::EvaluationSession(SessionOptions options) : impl_(std::make_u
                          "evaluated from outside a run yet; use settings without it",
                          im.found.string());
     if (s.map_elites.enabled) im.descriptor = s.map_elites.descriptor;
-    if (io::family_of(s) == io::ExperimentFamily::Gait) {
+    if (io::genotype_form(s) == io::GenotypeForm::Vector) {
         im.form = GenotypeForm::Vector;
         im.setup.emplace(gait::Setup::from_settings(s));
     } else {
@@ -270,7 +270,7 @@ RunBest read_run_best(const fs::path& run_dir) {
     if (!fs::exists(population))
         throw InputError("the run has no population.xml yet (has it finished a generation?)", run_dir.string());
     const io::Settings s = io::read_settings(best.settings);
-    if (io::family_of(s) == io::ExperimentFamily::Symreg)
+    if (!io::walks_a_robot(s))
         throw InputError("a symbolic-regression run: only robot runs have a genotype to evaluate", run_dir.string());
     if (s.map_elites.enabled) {
         const io::ArchiveFile a = io::load_archive(population);
@@ -283,7 +283,7 @@ RunBest read_run_best(const fs::path& run_dir) {
         for (const auto& t : e->genotype) best.genotype.trees.push_back(t.to_string());
         return best;
     }
-    if (io::family_of(s) == io::ExperimentFamily::Gait) {
+    if (io::genotype_form(s) == io::GenotypeForm::Vector) {
         const io::GaitFile g = io::load_gait(population);
         best.form = GenotypeForm::Vector;
         best.genotype.vector = gait::Setup::from_settings(s).in_box(g.champion.x);

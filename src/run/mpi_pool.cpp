@@ -71,7 +71,7 @@ std::string host_name() {
 // need (valid settings; for HyperGP, the robot file at the same path).
 void check_settings(const std::string& text) {
     const io::Settings s = io::read_settings_string(text, "settings from rank 0");
-    if (io::family_of(s) == io::ExperimentFamily::HyperGP) (void)hypergp::Model::from_settings(s);
+    if (io::walks_a_robot(s) && io::genotype_form(s) == io::GenotypeForm::Trees) (void)hypergp::Model::from_settings(s);
 }
 
 int env_int(const char* name) {

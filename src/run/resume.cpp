@@ -9,13 +9,9 @@
 #include <fmt/format.h>
 
 #include "cic/core/error.hpp"
-#include "cic/experiments/gait/restarts.hpp"
-#include "cic/experiments/gait/setup.hpp"
-#include "cic/io/experiment_types.hpp"
-#include "cic/io/archive_xml.hpp"
-#include "cic/io/gait_xml.hpp"
-#include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
+#include "cic/io/settings_table.hpp"
+#include "cic/search/search.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/run/provenance.hpp"
 #include "cic/run/run.hpp"
@@ -27,19 +23,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A key's value as the settings table writes it ("Section.key").
+std::string setting_value(const io::Settings& s, const std::string& key) {
+    for (const auto& k : io::settings_table())
+        if (k.section + "." + k.key == key) return k.get(s);
+    throw std::logic_error("no settings key " + key);
+}
+
 // The budget line a resume says (run.log and the console): what it goes on
 // with, against what the run had. Empty when the budget is unchanged.
 std::string budget_line(const io::Settings& ran, const io::Settings& asked) {
-    if (ran.map_elites.enabled && asked.map_elites.evaluations != ran.map_elites.evaluations)
-        return fmt::format("continuing with a budget of {} evaluations (was {})", asked.map_elites.evaluations,
-                           ran.map_elites.evaluations);
-    if (io::family_of(ran) == io::ExperimentFamily::Gait && !ran.map_elites.enabled &&
-        asked.gait.evaluations != ran.gait.evaluations)
-        return fmt::format("continuing with a budget of {} evaluations (was {})", asked.gait.evaluations,
-                           ran.gait.evaluations);
-    if (asked.control.maximum_iterations != ran.control.maximum_iterations)
-        return fmt::format("continuing with a budget of {} generations (was {})", asked.control.maximum_iterations,
-                           ran.control.maximum_iterations);
+    const search::SearchKind& kind = search::search_of(ran);
+    if (const std::string a = setting_value(asked, kind.budget_key), r = setting_value(ran, kind.budget_key); a != r)
+        return fmt::format("continuing with a budget of {} {} (was {})", a, kind.budget_unit, r);
     if (asked.control.minimum_fitness != ran.control.minimum_fitness)
         return fmt::format("continuing until fitness {} (was {})", asked.control.minimum_fitness,
                            ran.control.minimum_fitness);
@@ -48,21 +44,19 @@ std::string budget_line(const io::Settings& ran, const io::Settings& asked) {
 
 // Refuses a budget that lets the run do nothing more (exit 2, nothing
 // written), as the same budget is refused at the start of a run: no further
-// batch, generation, or a minimum fitness already reached.
+// generation or batch, or a minimum fitness already reached. --generations and
+// --until set Control.maximumIterations: only a search counted in it takes them.
 void check_budget_goes_on(const ResumeRequest& r, const io::Settings& ran, io::Settings& asked,
                           const std::optional<fs::path>& checkpoint) {
     const std::string where = checkpoint ? checkpoint->string() : (r.run_dir / "settings.xml").string();
-    if (ran.map_elites.enabled || io::family_of(ran) == io::ExperimentFamily::Gait || ran.neural.switches()) {
-        // Switch-HybrID's budget is Gait.evaluations too, over both phases.
-        const char* key = ran.map_elites.enabled ? "MapElites.evaluations" : "Gait.evaluations";
+    const search::SearchKind& kind = search::search_of(ran);
+    if (kind.budget_key != "Control.maximumIterations") {
         if (r.generations || r.until)
-            throw InputError(fmt::format("a {} run's budget is its evaluations{}: resume it with --set {}=E",
-                                         ran.map_elites.enabled ? "MAP-Elites"
-                                         : ran.neural.switches() ? "Switch-HybrID" : "gait",
-                                         ran.neural.switches() ? " over both phases" : "", key));
-        return;   // the batch check needs the checkpoint's state: after prepare_run
+            throw InputError(fmt::format("a {} run's budget is its {} ({}): resume it with --set {}=E", kind.name,
+                                         kind.budget_unit, kind.budget_key, kind.budget_key));
+        return;   // the step check needs the checkpoint's state: after prepare_run
     }
-    const int done = checkpoint ? io::load_population(*checkpoint).population.generation + 1 : 0;
+    const int done = checkpoint ? kind.load(ran, checkpoint->string())->generations : 0;
     if (r.until) asked.control.maximum_iterations = *r.until;
     if (r.generations) asked.control.maximum_iterations = done + *r.generations;
     if (asked.control.maximum_iterations <= done)
@@ -70,47 +64,6 @@ void check_budget_goes_on(const ResumeRequest& r, const io::Settings& ran, io::S
                                      "for more with --generations N or --until G (G > {})",
                                      done, done == 1 ? "" : "s", asked.control.maximum_iterations, done),
                          where);
-}
-
-// The same for the evaluation budgets, once the checkpoint is read and its
-// search replayed (the next batch's size is the optimiser's).
-void check_batch_fits(const PreparedRun& p, const std::string& where) {
-    const io::Settings& s = p.settings;
-    auto refuse = [&](long spent, long budget, long batch, const char* key, const char* what) {
-        throw InputError(fmt::format("the run has spent {} evaluations; a budget of {} adds no {} of {} (ask for "
-                                     "--set {}={} or more)",
-                                     spent, budget, what, batch, key, spent + batch),
-                         where);
-    };
-    auto reached = [&](double best) {
-        if (best >= s.control.minimum_fitness)
-            throw InputError(fmt::format("the run reached Control.minimumFitness {} (best {}); to go on, raise it "
-                                         "with --set Control.minimumFitness=F",
-                                         s.control.minimum_fitness, best),
-                             where);
-    };
-    if (p.archive_resume) {
-        const io::ArchiveFile& a = *p.archive_resume;
-        if (const auto* best = a.best()) reached(best->fitness);
-        if (a.evaluations + s.map_elites.batch > s.map_elites.evaluations)
-            refuse(a.evaluations, s.map_elites.evaluations, s.map_elites.batch, "MapElites.evaluations", "batch");
-    } else if (p.gait_resume) {
-        const io::GaitFile& g = *p.gait_resume;
-        reached(g.champion.fitness);
-        const gait::Search search = gait::resume_search(gait::Setup::from_settings(s), gait::restart_rule_of(s), g,
-                                                        s.control.population_load_from);
-        // A Switch-HybrID gait phase counts on from its HyperGP phase's evaluations.
-        const long spent = g.evaluations + (g.handover ? g.handover->evaluations : 0);
-        if (spent + search.next_batch_size() > s.gait.evaluations)
-            refuse(spent, s.gait.evaluations, search.next_batch_size(), "Gait.evaluations", "generation");
-    } else if (p.resume) {
-        reached(p.resume->population.best().fitness);
-        if (s.neural.switches() && p.resume->state.evaluations >= s.gait.evaluations)   // Switch-HybrID's HyperGP phase
-            throw InputError(fmt::format("the run has spent {} of its {} evaluations; ask for more with "
-                                         "--set Gait.evaluations=E (E > {})",
-                                         p.resume->state.evaluations, s.gait.evaluations, p.resume->state.evaluations),
-                             where);
-    }
 }
 
 } // namespace
@@ -136,19 +89,20 @@ int resume_run(const ResumeRequest& r) {
     if (!refused.empty()) {
         std::string text;
         for (const auto& d : refused) text += (text.empty() ? "" : "; ") + d;
+        std::string budgets;
+        for (const auto& k : search::budget_keys()) budgets += ", " + k;
         throw InputError(fmt::format("cannot continue {} with other settings than it ran ({}); resume changes only "
-                                     "the budget (--generations, --until, Control.minimumFitness, Gait.evaluations, "
-                                     "MapElites.evaluations) and keys that change no result (workers): start a new run "
-                                     "for other settings",
-                                     dir.string(), text),
+                                     "the budget (--generations, --until{}) and keys that change no result "
+                                     "(workers): start a new run for other settings",
+                                     dir.string(), text, budgets),
                          settings_file.string());
     }
 
     if (checkpoint) asked.control.population_load_from = checkpoint->string();
     PreparedRun prepared = prepare_run(asked);   // the checkpoint parsed and checked against the settings
-    if (checkpoint) check_batch_fits(prepared, checkpoint->string());
+    if (prepared.resume) prepared.resume->check_goes_on(prepared.settings);
     // Every check has passed: from here on the folder is written.
-    prepared.search_note.clear();   // only the budget differs (checked above): said below
+    if (prepared.resume) prepared.resume->search_note.clear();   // only the budget differs (checked above): said below
     const std::string budget = budget_line(ran, prepared.settings);
     io::Settings stored = prepared.settings;
     stored.control.population_load_from.clear();

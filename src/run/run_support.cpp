@@ -111,7 +111,7 @@ experiments::Context make_context(const io::Settings& s, const RunOptions& opt, 
     // (they get the settings as text: they may not see this run folder).
     if (const int ranks = mpi_world_size(); ranks > 1) {
         ctx.make_runner = [text = io::write_settings(s)] { return std::make_unique<MpiPool>(text); };
-        console.say(io::family_of(s) == io::ExperimentFamily::Symreg
+        console.say(io::evaluates_in_process(s)
                         ? fmt::format("MPI: {} ranks; symbolic regression evaluates on rank 0 with {} thread{}, the "
                                       "other ranks stay idle", ranks, workers, workers == 1 ? "" : "s")
                         : fmt::format("MPI: {} ranks, evaluation on ranks 1..{} (Experiment.workers is not used)",
@@ -148,14 +148,10 @@ void point_latest_at(const std::filesystem::path& checkpoint, const std::filesys
 // What the thesis did when a run ended (Appendix B): plots (useMatlabPlot, now
 // gnuplot), POV-Ray scenes of the best (generatePovrayFiles) and showing the best
 // (isAutonomousExperiment = 0). A failure here is reported, never loses the run.
-std::string eq71_line(double distance, double elevation) {
-    return fmt::format("best, eq. 7.1: distance {:.4f} m + elevation {:.4f} m\n", distance, elevation);
-}
-
 void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& console) {
     auto say = [&](const std::string& line) { console.say(line); };
     // Robot experiments (HyperGP, gait) have a best gait to export and show.
-    const bool hypergp = io::family_of(s) != io::ExperimentFamily::Symreg;
+    const bool hypergp = io::walks_a_robot(s);
     auto attempt = [&](const char* what, auto&& action) {
         try {
             action();
@@ -193,21 +189,5 @@ void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& consol
     }
 }
 
-
-void say_checkpoint_notes(const PreparedRun& prepared, RunConsole& console) {
-    if (!prepared.origin_note.empty()) console.say(prepared.origin_note);
-    if (!prepared.search_note.empty()) console.say(prepared.search_note);
-}
-
-void fill_fitness_stats(gp::GenerationRecord& r, std::vector<double> f) {
-    if (f.empty()) return;
-    std::sort(f.begin(), f.end());
-    r.best = f.back();
-    double sum = 0;
-    for (double v : f) sum += v;
-    r.mean = sum / static_cast<double>(f.size());
-    const std::size_t n = f.size();
-    r.median = n % 2 ? f[n / 2] : 0.5 * (f[n / 2 - 1] + f[n / 2]);
-}
 
 } // namespace cic::app::detail

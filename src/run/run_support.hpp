@@ -1,6 +1,5 @@
 #pragma once
-// Private to src/run: what the run loops (run.cpp for GP experiments,
-// run_gait.cpp for the gait baseline) share.
+// Private to src/run: what the run loop (run.cpp) uses around a search.
 #include <atomic>
 #include <filesystem>
 #include <fstream>
@@ -86,55 +85,5 @@ void write_checkpoint(const std::filesystem::path& run_dir, int generation, cons
 // The end-of-run actions of the settings: plot (useMatlabPlot), POV-Ray scenes
 // (generatePovrayFiles) and showing the best (isAutonomousExperiment = 0).
 void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& console);
-
-// best, mean and median of a generation's (or an archive's) fitness values;
-// leaves them 0 when there is none.
-void fill_fitness_stats(gp::GenerationRecord& r, std::vector<double> fitness);
-
-// The summary line that splits the best's score into eq. 7.1's terms.
-std::string eq71_line(double distance, double elevation);
-
-// The GP loop of run_experiment (run.cpp) as one phase of a run: the
-// experiment's evaluator, stats.csv rows, run.log lines, progress and
-// checkpoints. Without hooks it is the whole GP run. A caller holds the
-// StopSignalGuard (one for all of a run's phases).
-struct GpPhase {
-    // Called with each generation's record before stats.csv and the checkpoint see it.
-    std::function<void(const gp::GenerationRecord&)> on_generation;
-    // Adds the phase's own state to each checkpoint.
-    std::function<void(io::PopulationFile&)> annotate;
-    // Ends the phase after a generation (gp::EvolutionHooks::hand_over);
-    // with it Control.maximumIterations does not apply.
-    std::function<bool(const gp::GenerationRecord&)> hand_over;
-    // What the progress line counts to instead of maximumIterations; 0 = that.
-    int progress_generations = 0;
-};
-struct GpPhaseResult {
-    gp::EvolutionResult result;
-    std::unique_ptr<experiments::Experiment> experiment;
-};
-GpPhaseResult run_gp_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& console, const GpPhase& phase);
-// "stopped: ... best: ... best trees: ..." of summary.txt.
-std::string summary_of(const gp::EvolutionResult& result, const experiments::Experiment& experiment,
-                       const io::Settings& s);
-// The prepared run's notes on its checkpoint (origin_note, search_note), if any.
-void say_checkpoint_notes(const PreparedRun& prepared, RunConsole& console);
-
-// The gait experiment's loop (run_gait.cpp); run_experiment hands over to it.
-int run_gait(PreparedRun prepared, const RunOptions& opt);
-// The gait loop as a later phase of a run (Switch-HybrID): `handover` says
-// where the HyperGP phase ended and where the search starts (its generations
-// and evaluations continue the run's); prepared.gait_resume, when set, is this
-// phase's own checkpoint. `summary_head` opens summary.txt. A caller holds the
-// StopSignalGuard.
-int run_gait_phase(PreparedRun& prepared, const RunOptions& opt, RunConsole& console,
-                   const std::optional<io::GaitHandover>& handover, const std::string& summary_head);
-// Switch-HybrID (run_switch.cpp): the GP phase, then the gait phase.
-int run_switch(PreparedRun prepared, const RunOptions& opt);
-// The MAP-Elites loop of either robot family (run_map_elites.cpp).
-int run_map_elites(PreparedRun prepared, const RunOptions& opt);
-// Throws cic::InputError naming `file` when the archive's emitter state is one
-// the settings' emitter cannot take back (before a resume writes anything).
-void check_archive_emitter(const io::Settings& s, const io::ArchiveFile& a, const std::string& file);
 
 } // namespace cic::app::detail

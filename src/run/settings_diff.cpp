@@ -1,6 +1,7 @@
 // Which settings a run ran against those asked of it (settings_diff.hpp).
 #include "cic/run/settings_diff.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -8,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "cic/io/settings_table.hpp"
+#include "cic/search/search.hpp"
 
 namespace cic::app {
 namespace {
@@ -41,9 +43,8 @@ std::vector<std::string> settings_differences(const io::Settings& ran_settings, 
 }
 
 bool is_budget_difference(const std::string& difference) {
-    for (const char* key : {"Control.maximumIterations:", "Control.minimumFitness:", "Gait.evaluations:",
-                            "MapElites.evaluations:"})
-        if (difference.rfind(key, 0) == 0) return true;
+    for (const auto& key : search::budget_keys())
+        if (difference.rfind(key + ":", 0) == 0) return true;
     return false;
 }
 
@@ -52,9 +53,13 @@ bool extends(const io::Settings& ran, const io::Settings& asked) {
     if (diffs.empty()) return false;
     for (const auto& d : diffs)
         if (!is_budget_difference(d)) return false;
-    return asked.control.maximum_iterations >= ran.control.maximum_iterations &&
-           asked.control.minimum_fitness >= ran.control.minimum_fitness && asked.gait.evaluations >= ran.gait.evaluations &&
-           asked.map_elites.evaluations >= ran.map_elites.evaluations;
+    // No budget shrinks (every registered search's, numbers all).
+    const auto keys = search::budget_keys();
+    for (const auto& k : io::settings_table())
+        if (std::find(keys.begin(), keys.end(), k.section + "." + k.key) != keys.end() &&
+            std::stod(k.get(asked)) < std::stod(k.get(ran)))
+            return false;
+    return true;
 }
 
 } // namespace cic::app

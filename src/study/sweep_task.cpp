@@ -364,7 +364,7 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
     if (resume) extra.push_back("Control.populationXmlLoadFrom=" + (dir / "population.xml").string());
 
     PreparedRun prepared = prepare_run(plan.settings(task, extra));
-    if (resume) prepared.search_note.clear();   // a task goes on with its own settings, or a raised budget only
+    if (resume && prepared.resume) prepared.resume->search_note.clear();   // a task goes on with its own settings, or a raised budget only
     fs::remove(dir / "failed.txt");
     if (!resume)   // a fresh start: clear what a run killed before its first checkpoint left
         for (const auto& e : fs::directory_iterator(dir))

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <algorithm>
 
 #include <cmath>
 #include <cstdio>
@@ -296,6 +297,45 @@ TEST(Install, PluginTypeBuildsAndRunsThroughCicsCommandLine) {
     EXPECT_EQ(std::stod(cells[1]), circle_best) << "replayed with eq. 7.1, not the type's own score: " << line;
     EXPECT_NE(std::stod(cells[8]), circle_best) << "raw_fitness (eq. 7.1) should differ from the circle score: " << line;
     EXPECT_GT(circle_best, 0.0);
+
+    // Its search, `one-plus-lambda` (a (1+lambda)-ES of its own file), runs in
+    // cic's one loop: its key is strict, it refuses trees, 1 and 2 workers give
+    // the same bytes, and a run killed with SIGKILL and resumed (`cic resume`)
+    // ends in the bytes of one that was never stopped.
+    const fs::path ol = example / "one_plus_lambda_r1.xml";
+    const std::string quick = " --set Simulator.sample_to=2 --set Simulator.delayed_start=0.5";
+    const Shell bad_lambda = sh(cic + " settings " + q(ol) + " --set OnePlusLambda.lambda=0");
+    EXPECT_EQ(bad_lambda.rc, 2) << bad_lambda.out;
+    EXPECT_HAS(bad_lambda.out, "<OnePlusLambda> lambda");
+    const Shell on_trees = sh(cic + " settings " + q(example / "straight_r1.xml") + " --set Experiment.search=one-plus-lambda");
+    EXPECT_EQ(on_trees.rc, 2) << on_trees.out;
+    EXPECT_HAS(on_trees.out, "Experiment.search = one-plus-lambda varies gait vectors");
+    std::string search_bytes[2];
+    for (int w : {1, 2}) {
+        const fs::path out = scratch.path / ("ol-" + std::to_string(w));
+        const Shell r = sh(cic + " --quiet --settings " + q(ol) + quick + " --set OnePlusLambda.evaluations=49" +
+                           " --set Experiment.workers=" + std::to_string(w) + " --output " + q(out));
+        ASSERT_EQ(r.rc, 0) << r.out;
+        search_bytes[w - 1] = read_text(out / "one_plus_lambda_r1-001" / "population.xml");
+        const std::string stats = read_text(out / "one_plus_lambda_r1-001" / "stats.csv");
+        EXPECT_HAS(stats, ",sigma\n");
+        EXPECT_EQ(std::count(stats.begin(), stats.end(), '\n'), 8) << stats;   // header, generations 0..6
+    }
+    EXPECT_HAS(search_bytes[0], "format=\"cic-one-plus-lambda\"");
+    EXPECT_HAS(search_bytes[0], "<origin");
+    EXPECT_EQ(search_bytes[0], search_bytes[1]);
+    const std::string long_run = quick + " --set OnePlusLambda.evaluations=801 --set Experiment.workers=1";
+    const Shell whole = sh(cic + " --quiet --settings " + q(ol) + long_run + " --output " + q(scratch.path / "ol-whole"));
+    ASSERT_EQ(whole.rc, 0) << whole.out;
+    const fs::path killed = scratch.path / "ol-killed" / "one_plus_lambda_r1-001";
+    const Shell kill9 = sh(cic + " --quiet --settings " + q(ol) + long_run + " --output " + q(scratch.path / "ol-killed") +
+                           " & p=$!; while kill -0 $p 2>/dev/null && [ ! -e " + q(killed / "populations" / "gen-0005.xml") +
+                           " ]; do sleep 0.02; done; kill -9 $p; wait $p; true");
+    ASSERT_TRUE(fs::exists(killed / "population.xml")) << kill9.out;
+    ASSERT_FALSE(fs::exists(killed / "summary.txt")) << "the run ended before it was killed";
+    const Shell resumed = sh(cic + " --quiet resume " + q(killed));
+    ASSERT_EQ(resumed.rc, 0) << resumed.out;
+    EXPECT_EQ(read_text(killed / "population.xml"), read_text(scratch.path / "ol-whole" / "one_plus_lambda_r1-001" / "population.xml"));
 }
 
 // The Python package (docs/python.md) from an installed prefix: found with

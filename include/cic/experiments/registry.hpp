@@ -47,7 +47,7 @@ struct ExperimentKind {
     // file and line; writes nothing (prepare_run and `cic settings FILE` call it).
     std::function<void(const io::Settings&)> check_inputs;
     // The experiment the GP loop drives (families symreg and hypergp). The gait
-    // family's loop is the run layer's (src/run/run_gait.cpp), so gait types leave it empty.
+    // family is varied by a search of gait vectors (src/search/evolution_strategy.cpp), so gait types leave it empty.
     std::function<std::unique_ptr<Experiment>(const Context&)> make;
     // Job kinds its worker processes serve, by the first line of a job.
     std::map<std::string, JobHandlerFactory> job_kinds;

@@ -157,6 +157,38 @@ struct EvolutionResult {
     StopReason reason = StopReason::MaximumIterations;
 };
 
+// The loop of evolve(), one generation at a time, for a caller that owns the
+// loop (the run's one loop, search/generational.cpp). Constructing it
+// initialises and evaluates generation 0, or takes a loaded population (with
+// its state) as it is; step() breeds, evaluates and filters the next one.
+class Generations {
+public:
+    Generations(const GpConfig& gp, const BloatConfig& bloat, const tree::PrimitiveSet& ps, Evaluator& evaluator,
+                EvolutionState state, std::optional<Population> start);
+    Generations(const Generations&) = delete;
+    Generations& operator=(const Generations&) = delete;
+
+    // The current generation's record (its failed count taken: call once per generation).
+    GenerationRecord record(int max_generations);
+    void step();
+    const Population& population() const { return pop_; }
+    const EvolutionState& state() const { return state_; }
+    // The population and state, moved out: the object is spent.
+    EvolutionResult finish(StopReason reason);
+
+private:
+    using Clock = std::chrono::steady_clock;
+    const GpConfig& gp_;
+    Initialise init_;
+    Evaluate evaluate_;
+    Breed breed_;
+    BloatControl control_;
+    EvolutionState state_;
+    Population pop_;
+    Clock::time_point session_start_ = Clock::now(), gen_start_ = session_start_;
+    std::vector<std::size_t> all_;   // every slot, for the bloat filter
+};
+
 // Runs the loop. If `start` is given (a loaded population, evaluated, with its
 // state), it continues from there; otherwise it initialises and evaluates.
 EvolutionResult evolve(const GpConfig& gp, const BloatConfig& bloat, const StopConditions& stop,

@@ -37,6 +37,18 @@ const ExperimentType* find_experiment_type(std::string_view name);
 // Throws std::invalid_argument for a bad or taken name, or an unknown section.
 void register_experiment_type(ExperimentType type);
 
+// What a type's genotypes are, as a search sees them (search/search.hpp):
+// expression trees (symreg, hypergp) or a parameter vector (gait).
+enum class GenotypeForm { Trees, Vector };
+GenotypeForm genotype_form(const Settings& s);
+std::string_view to_string(GenotypeForm f);
+// Whether the type's runs walk a robot (replays, POV-Ray, the viewer, a path):
+// every family but symbolic regression.
+bool walks_a_robot(const Settings& s);
+// Whether the type evaluates in rank 0's process (threads, no worker processes):
+// symbolic regression.
+bool evaluates_in_process(const Settings& s);
+
 // The family of the settings' experiment type (which is always a known one:
 // the reader checks it).
 ExperimentFamily family_of(const Settings& s);

@@ -16,6 +16,8 @@ namespace cic::io {
 struct ExperimentConfig {
     // An experiment type's name (experiment_types.hpp); see the inference in settings_read.
     std::string type = "hypergp";
+    // The registered search that drives the run (search_names.hpp); auto: the one the other keys imply.
+    std::string search = "auto";
     std::uint64_t seed = 1;
     std::string output_directory = "runs";
     int workers = 0;                 // 0 = one per core

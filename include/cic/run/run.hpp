@@ -5,10 +5,10 @@
 #include <optional>
 #include <string>
 
-#include "cic/io/archive_xml.hpp"
-#include "cic/io/gait_xml.hpp"
-#include "cic/io/population_xml.hpp"
+#include <memory>
+
 #include "cic/io/settings.hpp"
+#include "cic/search/search.hpp"
 
 namespace cic::app {
 
@@ -27,29 +27,30 @@ struct RunOptions {
 // Everything a run reads, loaded and checked before its folder exists.
 struct PreparedRun {
     io::Settings settings;
-    std::optional<io::PopulationFile> resume;   // populationXmlLoadFrom, parsed and checked
-    std::optional<io::GaitFile> gait_resume;    // the same, for the gait experiment
-    std::optional<io::ArchiveFile> archive_resume;   // the same, for MAP-Elites (MapElites.enabled)
-    // What the run says about the checkpoint it goes on from: a file without an
-    // <origin> (believed), and a file made with other search settings (its
-    // origin matched, so its fitness values hold). Empty when nothing to say;
-    // a resume in place, which allows only a budget change, clears the second
+    // The search the settings pick (Experiment.search, search/search.hpp).
+    const search::SearchKind* search = nullptr;
+    // populationXmlLoadFrom, read by the search's own strict reader and checked;
+    // its notes (origin_note, search_note) are said when the run starts. A
+    // resume in place, which allows only a budget change, clears search_note
     // and says the budget instead.
-    std::string origin_note;
-    std::string search_note;
+    std::unique_ptr<search::Checkpoint> resume;
 };
 
 // Checks every input of a run: the experiment's own (robot file and its
-// joints, dataset; experiments::check_inputs) and the population to resume
-// from (parsed completely, its values checked, its origin — robot geometry,
-// simulator, controller, genotype, descriptor — the settings' own, and its
-// contents checked against the settings). Throws cic::InputError with file and
-// line; writes nothing.
+// joints, dataset; experiments::check_inputs), the search the settings pick
+// (Experiment.search) and the checkpoint to resume from (read by that search's
+// strict reader: parsed completely, its values checked, its origin — robot
+// geometry, simulator, controller, genotype, descriptor — the settings' own,
+// and its contents checked against the settings). Throws cic::InputError with
+// file and line; writes nothing.
 // `cic settings FILE` runs the same checks.
 PreparedRun prepare_run(io::Settings settings);
 
-// Returns an exit code: 0 done, 1 failure, 130 interrupted by SIGINT, 143 by
-// SIGTERM (the checkpoint is written first; a second signal ends it at once).
+// The one run loop, for every search: start, then stop rule, checkpoint and
+// step until the search stops; stats.csv, run.log, the progress line, stop
+// signals and summary.txt around it. Returns an exit code: 0 done, 1 failure,
+// 130 interrupted by SIGINT, 143 by SIGTERM (the checkpoint is written first;
+// a second signal ends it at once).
 int run_experiment(PreparedRun run, const RunOptions& options);
 
 } // namespace cic::app
