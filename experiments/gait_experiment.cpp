@@ -1,6 +1,6 @@
 // Registers the `gait` type: an open-loop gait or a CPG's weights tuned by a
-// pagmo2 optimiser (experiments/gait/). Its search by default is
-// (src/search/evolution_strategy.cpp, the evolution-strategy search); its workers serve `gait` and `cpg` jobs.
+// pagmo2 optimiser (experiments/gait/). Its search by default is the
+// evolution strategy (src/search/evolution_strategy.cpp); its workers serve `gait` and `cpg` jobs.
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/registry.hpp"
 #include "cic/sim/job_text.hpp"
