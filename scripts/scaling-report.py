@@ -14,11 +14,25 @@
       evaluation (TIMES: lines "ROBOT SECONDS", as scripts/scaling.sh measures
       them), for the whole plan of issue 38 item 5 and with comparison seeds
       cut on the middle sizes
-Standard library only."""
+  scaling-report.py compare-sweeps --results DIR --out DIR [--provisional]
+                    [--tuning DIR] [--cic CIC]
+      OUT/compare-<robot>.xml, the comparison stage's sweeps (seeds 1..10, the
+      middle sizes 1..5), from the tuning winners in RESULTS/scaling-runs.csv and
+      the tuning sweeps in TUNING (default experiments/scaling); refuses (exit 2)
+      while a tuning study has runs to go, unless --provisional
+  scaling-report.py results --results DIR --studies DIR --cic CIC
+                    [--figure SVG] [--baselines CSV]
+      RESULTS/compare.md and the figure (default docs/img/scaling-ratio.svg) from
+      the ledger's compare rows, each run scored by `cic assess` (raw eq. 7.1,
+      cached in RESULTS/compare-raw.csv); scipy, matplotlib (Debian's python3)
+Standard library only, but for results."""
 import csv
 import os
 import statistics
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scaling_compare as sc   # noqa: E402 (the script's own folder)
 
 FIELDS = ["study", "config", "seed", "status", "best_ever", "evaluations", "wall_seconds", "run_dir", "commit"]
 
@@ -61,26 +75,24 @@ def summary(results):
     out = ["# Tuning the direct side and the hybrids (issue 38)", "",
            "Written by `scripts/scaling.sh` from `scaling-runs.csv` (the ledger); best_ever in metres",
            "(eq. 7.1 of the run's best gait), over the finished runs of tuning seeds 101..105.", ""]
-    for study in sorted({r["study"] for r in rows}):
+    for study in sorted({r["study"] for r in rows if r["study"].startswith("tune-")}):   # compare-*: results
         out += [f"## {study}", "", "| config | runs | median | IQR | s per run | ms per evaluation |",
                 "|---|---|---|---|---|---|"]
-        medians = {}
-        for config in sorted({r["config"] for r in rows if r["study"] == study}):
+        medians = sc.config_medians(rows, study)
+        for config in medians:
             rs = [r for r in rows if r["study"] == study and r["config"] == config]
             best = sorted(float(r["best_ever"]) for r in rs)
             wall = statistics.mean(float(r["wall_seconds"]) for r in rs)
             evals = statistics.mean(float(r["evaluations"]) for r in rs)
             lo, hi = quartiles(best)
-            medians[config] = statistics.median(best)
             out.append(f"| {config} | {len(rs)} | {medians[config]:.2f} | [{lo:.2f}, {hi:.2f}] | {wall:.0f} | "
                        f"{1000 * wall / evals:.1f} |")
         complete = all(sum(1 for r in rows if r["study"] == study and r["config"] == c) == 5 for c in medians)
         # A hybrid study tunes two methods (offset-*, switch-*): a winner for each.
-        methods = sorted({c.split("-")[0] for c in medians}) if study.startswith("tune-hybrid") else [None]
+        methods = sorted({sc.method_of(c) for c in medians}) if study.startswith("tune-hybrid") else [None]
         out.append("")
         for m in methods:
-            pool = [c for c in medians if m is None or c.split("-")[0] == m]
-            winner = max(pool, key=lambda c: medians[c])
+            winner = sc.winner(medians, m)
             out.append(f"Winner so far{'' if m is None else ' (' + m + ')'}: **{winner}** (median {medians[winner]:.2f})"
                        + ("" if complete else "; not every configuration has its 5 runs yet") + ".")
         out.append("")
@@ -142,6 +154,11 @@ def estimate(results):
         f.write("\n".join(out) + "\n")
 
 
+def usage(line):
+    print(line, file=sys.stderr)
+    sys.exit(2)
+
+
 def main(argv):
     if len(argv) >= 2 and argv[1] == "ledger":
         args, names = {}, []
@@ -158,6 +175,41 @@ def main(argv):
         estimate(argv[3])
     elif len(argv) == 4 and argv[1] == "summary" and argv[2] == "--results":
         summary(argv[3])
+    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results"):
+        flags = {"--provisional"}
+        known = {"compare-sweeps": {"--results", "--out", "--tuning", "--cic"},
+                 "results": {"--results", "--studies", "--cic", "--figure", "--baselines"}}[argv[1]]
+        args, i = {}, 2
+        while i < len(argv):
+            if argv[1] == "compare-sweeps" and argv[i] in flags:
+                args[argv[i]] = True
+                i += 1
+            elif argv[i] in known and i + 1 < len(argv):
+                args[argv[i]] = argv[i + 1]
+                i += 2
+            else:
+                usage(f"scaling-report.py {argv[1]}: unknown or incomplete option '{argv[i]}' (allowed: "
+                      f"{', '.join(sorted(known | (flags if argv[1] == 'compare-sweeps' else set())))})")
+        need = {"compare-sweeps": ("--results", "--out"), "results": ("--results", "--studies", "--cic")}[argv[1]]
+        for n in need:
+            if n not in args:
+                usage(f"scaling-report.py {argv[1]}: {n} is required")
+        try:
+            if argv[1] == "compare-sweeps":
+                for p in sc.compare_sweeps(args["--results"], args["--out"],
+                                           args.get("--tuning", os.path.join(sc.ROOT, "experiments", "scaling")),
+                                           args.get("--cic", os.path.join(sc.ROOT, "build", "cic")),
+                                           args.get("--provisional", False)):
+                    print(p)
+            else:
+                import scaling_results
+                scaling_results.results(args["--results"], args["--studies"], args["--cic"],
+                                        args.get("--figure", os.path.join(sc.ROOT, "docs", "img", "scaling-ratio.svg")),
+                                        args.get("--baselines", os.path.join(sc.ROOT, "experiments", "baselines",
+                                                                             "results", "walk-runs.csv")))
+        except sc.Refusal as e:
+            print(f"scaling-report.py: {e}", file=sys.stderr)
+            sys.exit(2)
     else:
         sys.exit(__doc__)
 

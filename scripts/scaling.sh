@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # scripts/scaling.sh [--jobs N] [--output DIR] [--commit] [--summary-only] STAGE...
-# Issue 38's scaling study (docs/scaling.md), part A: the direct side and the
-# robots. Resumable like every `cic sweep`: rerun the same command after an
+# Issue 38's scaling study (docs/scaling.md): tuning, then the comparison.
+# Resumable like every `cic sweep`: rerun the same command after an
 # interruption and only what is missing runs. Seeds are fixed in the sweep
 # files (experiments/scaling/). Stages:
 #   tune-direct  IPOP-CMA-ES and separable CMA-ES (sigma0 0.15 or 0.3), tuning
@@ -12,8 +12,12 @@
 #                0.3 or 0.5), tuning seeds 101..105, on the same two robots and
 #                budgets (tune-hybrid-c8.xml, tune-hybrid-r1.xml); the summary
 #                names each hybrid's configuration per robot
-#   ledger       run nothing: merge the studies' index.csv into
-#                results/scaling-runs.csv and write results/tune-direct.md
+#   compare      the comparison, seeds 1..10 (the middle sizes 1..5): every
+#                experiments/scaling/compare-*.xml, smallest robot first, R1 and
+#                R2 last; write them first with `scaling-report.py compare-sweeps`
+#                (refused while one is provisional)
+#   ledger       run nothing: merge the studies' index.csv (tuning and compare)
+#                into results/scaling-runs.csv and write results/tune-direct.md
 #   estimate     run nothing but timing: CPU seconds per evaluation of every
 #                robot of the study (cic simulate), and results/estimate.md, the whole
 #                study's run time with comparison seeds cut on the middle sizes
@@ -23,8 +27,8 @@
 #   --commit        after every run: ledger and summary, then `git commit` of
 #                   experiments/scaling/results/ only (runs go in batches of N)
 #   --summary-only  run nothing; ledger and summary of what is there
-#   --only ROBOT    run only the studies of one robot: c8 or r1 (the ledger
-#                   still covers every study)
+#   --only ROBOT    run only the tuning studies of one robot: c8 or r1 (the
+#                   ledger still covers every study; compare ignores it)
 # Environment: CIC (default build/cic), PYTHON (default python3).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -41,18 +45,24 @@ while [ $# -gt 0 ]; do
     --only) only="$2"; shift 2
             [[ "$only" =~ ^(c8|r1)$ ]] || { echo "scaling.sh: --only takes c8 or r1, got '$only'" >&2; exit 2; } ;;
     -h|--help) sed -n '2,/^set /p' "$0" | grep '^#' | sed 's/^# \{0,1\}//'; exit 0 ;;
-    tune-direct|tune-hybrid|ledger|estimate) stages+=("$1"); shift ;;
+    tune-direct|tune-hybrid|compare|ledger|estimate) stages+=("$1"); shift ;;
     *) echo "scaling.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-[ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, tune-hybrid, ledger, estimate (see --help)" >&2; exit 2; }
+[ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, tune-hybrid, compare, ledger, estimate (see --help)" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scaling.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
 [ -x "$CIC" ] || { echo "scaling.sh: no cic binary at $CIC (build first, or set CIC)" >&2; exit 2; }
 mkdir -p "$HERE/results"
 
 tune_studies=(tune-direct-c8 tune-direct-r1)   # the centipede first: the new question
 hybrid_studies=(tune-hybrid-c8 tune-hybrid-r1)
-all_studies=("${tune_studies[@]}" "${hybrid_studies[@]}")
+# The comparison's sweeps (scaling-report.py compare-sweeps), smallest robot first.
+compare_studies=()
+for r in centipede-2 centipede-2-irregular centipede-4 centipede-4-irregular centipede-8 centipede-8-irregular \
+         centipede-16 centipede-16-irregular r1 r2; do
+  if [ -f "$HERE/compare-$r.xml" ]; then compare_studies+=("compare-$r"); fi
+done
+all_studies=("${tune_studies[@]}" "${hybrid_studies[@]}" "${compare_studies[@]}")
 
 ledger() {   # merge every study's index.csv, then the summary
   local s
@@ -83,7 +93,7 @@ commit_results() {   # MESSAGE
 # batches of --jobs (`cic sweep --task`, each resumable), the ledger committed after each batch.
 run_study() {   # STUDY
   local file="$HERE/$1.xml" dir="$output/$1"
-  if [ -n "$only" ] && [[ "$1" != *-"$only" ]]; then return 0; fi
+  if [ -n "$only" ] && [[ "$1" == tune-* ]] && [[ "$1" != *-"$only" ]]; then return 0; fi
   echo "== $1" >&2
   if [ "$commit" = 0 ]; then
     "$CIC" sweep "$file" --output "$dir" --jobs "$jobs" --workers 1 >&2
@@ -123,6 +133,18 @@ main() {
         fi
         ledger
         commit_results "Ledger (issue 38): tune-hybrid summary" ;;
+      compare)
+        [ ${#compare_studies[@]} = 10 ] || { echo "scaling.sh: compare needs the 10 experiments/scaling/compare-*.xml, found ${#compare_studies[@]}: write them with $PY scripts/scaling-report.py compare-sweeps --results $HERE/results --out $HERE" >&2; exit 2; }
+        for s in "${compare_studies[@]}"; do
+          if grep -q PROVISIONAL "$HERE/$s.xml"; then
+            echo "scaling.sh: $HERE/$s.xml is provisional (written before the tuning finished): rewrite it with scaling-report.py compare-sweeps without --provisional" >&2; exit 2
+          fi
+        done
+        if [ "$summary_only" = 0 ]; then
+          for s in "${compare_studies[@]}"; do run_study "$s"; done
+        fi
+        ledger
+        commit_results "Ledger (issue 38): compare summary" ;;
       ledger)
         ledger ;;
       estimate)

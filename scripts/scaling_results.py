@@ -1,0 +1,237 @@
+"""The scoring of issue 38's comparison (docs/scaling.md, item 6; scaling-report.py results).
+
+Every method is scored on the raw eq. 7.1 of its replayed best: `cic assess`
+replays each finished compare run once, and its raw_fitness is cached in
+RESULTS/compare-raw.csv (keyed by study, config, seed and the run's best_ever,
+so a rerun run is assessed again). Per robot: median and IQR per method; each
+HyperGP method against the best direct one by the two-sided Mann-Whitney U
+(scipy), Holm over every cell of the table, A12 with a bootstrap 95 % interval
+(study_stats.py, as walk-report.py); the ratio of medians with a bootstrap 95 %
+interval against hinge count, regular and irregular centipedes, as an SVG.
+R1 and R2 have no direct method in the comparison: their direct method and
+HyperGP-gait at 15,000 evaluations are issue 21's runs, read (raw_fitness) from
+experiments/baselines/results/walk-runs.csv."""
+import csv
+import os
+import random
+import statistics
+import subprocess
+import sys
+
+import scaling_compare as sc
+from study_stats import a12, a12_interval, holm, mann_whitney_p, quartiles
+
+CACHE_FIELDS = ["study", "config", "seed", "best_ever", "run_dir", "raw_fitness"]
+LABELS = {"direct": "best direct", "hypergp-gait": "HyperGP-gait", "offset-hybrid": "Offset-HybrID",
+          "switch-hybrid": "Switch-HybrID"}
+# issue 21's studies standing in for R1's and R2's direct method and HyperGP-gait (walk-runs.csv)
+BASELINE_STUDIES = {"walk-15000-cmaes-gait": "direct", "walk-15000-hgp-gait": "hypergp-gait"}
+ALPHA = 0.05
+RESAMPLES = 2000
+
+
+def method_of(config):
+    """A compare variant is METHOD.TUNED_CONFIG (scaling_compare.py), or METHOD."""
+    return config.split(".")[0]
+
+
+def robot_of(study):
+    return study[len("compare-"):]
+
+
+def ratio_interval(x, y, resamples=RESAMPLES):
+    """Bootstrap 95 % interval of median(x) / median(y), both groups resampled (fixed seed)."""
+    rng = random.Random(1)
+    values = []
+    for _ in range(resamples):
+        d = statistics.median([rng.choice(y) for _ in y])
+        values.append(statistics.median([rng.choice(x) for _ in x]) / d if d > 0 else float("inf"))
+    values.sort()
+    return values[int(0.025 * resamples)], values[int(0.975 * resamples) - 1]
+
+
+def read_cache(path):
+    if not os.path.exists(path):
+        return {}
+    return {(r["study"], r["config"], r["seed"], r["best_ever"]): r for r in csv.DictReader(open(path))}
+
+
+def write_cache(path, cache):
+    tmp = path + ".tmp"
+    with open(tmp, "w", newline="") as f:
+        w = csv.DictWriter(f, CACHE_FIELDS, lineterminator="\n")
+        w.writeheader()
+        for k in sorted(cache, key=lambda k: (k[0], k[1], int(k[2]))):
+            w.writerow(cache[k])
+    os.replace(tmp, path)
+
+
+def assess(cic, run_dirs, out_csv):
+    """{run_dir: raw eq. 7.1} of the runs' replayed bests, one `cic assess` for all."""
+    p = subprocess.run([cic, "--quiet", "assess", *run_dirs, "--out", out_csv], capture_output=True, text=True)
+    if p.returncode != 0:
+        raise sc.Refusal(f"results: cic assess failed: {p.stderr.strip()}")
+    got = {r["input"]: r["raw_fitness"] for r in csv.DictReader(open(out_csv))}
+    os.remove(out_csv)
+    missing = [d for d in run_dirs if d not in got]
+    if missing:
+        raise sc.Refusal(f"results: cic assess gave no row for {missing[0]}")
+    return got
+
+
+def raw_scores(results, studies, cic):
+    """[(study, config, seed, raw)] of every finished compare run in the ledger, assessing the new ones."""
+    rows = [r for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv")))
+            if r["study"].startswith("compare-") and r["status"] == "done"]
+    cache_path = os.path.join(results, "compare-raw.csv")
+    cache = read_cache(cache_path)
+    todo = {}
+    for r in rows:
+        key = (r["study"], r["config"], r["seed"], r["best_ever"])
+        if key not in cache:
+            run_dir = os.path.join(studies, r["study"], r["run_dir"])
+            if not os.path.isdir(run_dir):
+                raise sc.Refusal(f"results: {r['study']} {r['config']} seed {r['seed']} is done in the ledger but "
+                                 f"{run_dir} is gone, and compare-raw.csv has no score for it")
+            todo[run_dir] = key
+    if todo:
+        got = assess(cic, list(todo), cache_path + ".assess.csv")
+        for run_dir, key in todo.items():
+            cache[key] = dict(zip(CACHE_FIELDS, key), run_dir=run_dir, raw_fitness=got[run_dir])
+        write_cache(cache_path, cache)
+    return [(r["study"], r["config"], r["seed"], float(cache[(r["study"], r["config"], r["seed"], r["best_ever"])]
+                                                      ["raw_fitness"])) for r in rows]
+
+
+def groups(scores, baselines):
+    """{robot: {method: [raw]}}; R1 and R2 get issue 21's direct and HyperGP-gait runs."""
+    out = {}
+    for study, config, _, raw in scores:
+        out.setdefault(robot_of(study), {}).setdefault(method_of(config), []).append(raw)
+    if os.path.exists(baselines):
+        for r in csv.DictReader(open(baselines)):
+            robot = r["config"].lower()
+            if r["study"] in BASELINE_STUDIES and robot in out:
+                out[robot].setdefault(BASELINE_STUDIES[r["study"]], []).append(float(r["raw_fitness"]))
+    return out
+
+
+def cells(g):
+    """Every (robot, method) of a HyperGP method with a direct side to face: the table's cells."""
+    order = sc.CENTIPEDES + list(sc.R_ROBOTS)
+    out = []
+    for robot in sorted(g, key=lambda r: order.index(r) if r in order else len(order)):
+        for m in sc.METHODS[1:]:
+            if m in g[robot] and "direct" in g[robot]:
+                out.append((robot, m))
+    return out
+
+
+def score(g):
+    """Per cell: n, p, Holm-adjusted p, A12 and its interval, ratio of medians and its interval."""
+    cs = cells(g)
+    ps = [mann_whitney_p(g[r][m], g[r]["direct"]) for r, m in cs]
+    adj = holm(ps)
+    out = {}
+    for (r, m), p, q in zip(cs, ps, adj):
+        x, y = g[r][m], g[r]["direct"]
+        md = statistics.median(y)
+        out[(r, m)] = {"p": p, "holm": q, "a12": a12(x, y), "a12_ci": a12_interval(x, y),
+                       "ratio": statistics.median(x) / md if md > 0 else float("inf"),
+                       "ratio_ci": ratio_interval(x, y)}
+    return out
+
+
+def n_text(g, robot):
+    ns = sorted({len(v) for v in g[robot].values()})
+    return "n = " + " and ".join(str(n) for n in ns)
+
+
+def verdict(cell, g, robot):
+    if cell["holm"] is not None and cell["holm"] < ALPHA:
+        return "better than best direct" if cell["a12"] > 0.5 else "worse than best direct"
+    return f"no difference shown at {n_text(g, robot)}"
+
+
+def table(g, sc_cells):
+    out = ["| robot | hinges | method | n | median | IQR | p (Mann-Whitney) | p (Holm) | A12 [95 %] | "
+           "median / direct [95 %] | verdict |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for robot in sorted(g, key=lambda r: (sc.CENTIPEDES + list(sc.R_ROBOTS)).index(r)):
+        h = sc.hinges(robot) if robot.startswith("centipede") else 12
+        for m in sc.METHODS:
+            if m not in g[robot]:
+                continue
+            v = g[robot][m]
+            lo, hi = quartiles(v)
+            row = f"| {robot} | {h} | {LABELS[m]} | {len(v)} | {statistics.median(v):.2f} | [{lo:.2f}, {hi:.2f}] |"
+            c = sc_cells.get((robot, m))
+            if c is None:
+                row += " | | | | |" if m == "direct" else " | | | | no direct runs to face |"
+            else:
+                row += (f" {c['p']:.3g} | {c['holm']:.3g} | {c['a12']:.2f} [{c['a12_ci'][0]:.2f}, {c['a12_ci'][1]:.2f}] |"
+                        f" {c['ratio']:.2f} [{c['ratio_ci'][0]:.2f}, {c['ratio_ci'][1]:.2f}] | {verdict(c, g, robot)} |")
+            out.append(row)
+    return out
+
+
+def figure(g, sc_cells, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    matplotlib.rcParams["svg.hashsalt"] = "issue-38"   # fixed ids: the same runs, the same bytes
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(9, 3.8), sharey=True)
+    for ax, irregular in zip(axes, (False, True)):
+        robots = [r for r in sc.CENTIPEDES if r.endswith("-irregular") == irregular and r in g]
+        for k, m in enumerate(sc.METHODS[1:]):
+            pts = [(sc.hinges(r), sc_cells[(r, m)]) for r in robots if (r, m) in sc_cells]
+            if not pts:
+                continue
+            x = [h * (1 + 0.04 * (k - 1)) for h, _ in pts]   # methods side by side at each size
+            y = [c["ratio"] for _, c in pts]
+            err = [[c["ratio"] - c["ratio_ci"][0] for _, c in pts], [c["ratio_ci"][1] - c["ratio"] for _, c in pts]]
+            ax.errorbar(x, y, yerr=err, marker="os^"[k], capsize=3, label=LABELS[m])
+        ax.axhline(1.0, color="grey", lw=0.8, ls="--")
+        ax.set_xscale("log", base=2)
+        ax.set_xticks([sc.hinges(r) for r in robots] or [12])
+        ax.set_xticklabels([str(sc.hinges(r)) for r in robots] or ["12"])
+        ax.set_xlabel("hinges")
+        ax.set_title("irregular twins" if irregular else "regular centipedes")
+    axes[0].set_ylabel("median raw eq. 7.1 / best direct's")
+    axes[0].legend(fontsize=8)
+    fig.suptitle("Issue 38: each HyperGP method over the best direct one, 2,500 evaluations "
+                 "(bootstrap 95 %)", fontsize=9)
+    fig.tight_layout()
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    tmp = path + ".tmp.svg"
+    fig.savefig(tmp, format="svg", metadata={"Date": None})   # no date: the same runs, the same bytes
+    plt.close(fig)
+    os.replace(tmp, path)
+
+
+def results(results_dir, studies, cic, figure_path, baselines):
+    try:
+        import matplotlib  # noqa: F401
+        import scipy.stats  # noqa: F401
+    except ImportError as e:
+        raise sc.Refusal(f"results needs scipy and matplotlib ({e}): run it with Debian's /usr/bin/python3")
+    g = groups(raw_scores(results_dir, studies, cic), baselines)
+    if not g:
+        raise sc.Refusal(f"results: no finished compare run in {os.path.join(results_dir, 'scaling-runs.csv')}")
+    s = score(g)
+    out = ["# The comparison of issue 38 (docs/scaling.md)", "",
+           "Written by `scripts/scaling-report.py results` from `scaling-runs.csv`'s compare rows. Every run is",
+           "scored on the raw eq. 7.1 of its replayed best (`cic assess`, cached in `compare-raw.csv`). Each",
+           "HyperGP method faces the best direct method on the same robot: two-sided Mann-Whitney U, Holm over",
+           f"all {len(s)} cells of the table, A12 (the chance that the HyperGP method's run beats the direct one's)",
+           "and the ratio of medians with bootstrap 95 % intervals. R1 and R2: the direct method and HyperGP-gait",
+           "are issue 21's runs at 15,000 evaluations (experiments/baselines/results/walk-runs.csv).", ""]
+    out += table(g, s)
+    quiet = [r for r in g if any((r, m) in s for m in sc.METHODS) and
+             not any(s[(r, m)]["holm"] < ALPHA for m in sc.METHODS if (r, m) in s)]
+    if quiet:
+        out += ["", "No difference shown after Holm: " + "; ".join(f"{r} ({n_text(g, r)})" for r in quiet) + "."]
+    with open(os.path.join(results_dir, "compare.md.tmp"), "w") as f:
+        f.write("\n".join(out) + "\n")
+    os.replace(os.path.join(results_dir, "compare.md.tmp"), os.path.join(results_dir, "compare.md"))
+    figure(g, s, figure_path)
+    print(f"scaling-report.py: wrote {os.path.join(results_dir, 'compare.md')} and {figure_path}", file=sys.stderr)

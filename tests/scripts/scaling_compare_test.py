@@ -1,0 +1,250 @@
+#!/usr/bin/env python3
+"""Scripts.ScalingCompareAndResults: scripts/scaling-report.py compare-sweeps
+picks each tuning study's winner by median best_ever from a synthetic ledger,
+writes the ten comparison sweeps (seeds, budgets, robots, the winners' <set>
+lines copied), which `cic sweep --dry-run` accepts and whose direct variant has
+exactly the tuning run's effective settings; refuses (exit 2, one line, nothing
+written) while a tuning study has runs to go, unless --provisional. Then
+`results` on a synthetic compare ledger: a real run scored by `cic assess` and
+cached, Mann-Whitney against scipy, Holm and A12 against hand-computed values,
+the table's verdicts and the figure.
+
+    scaling_compare_test.py SOURCE_DIR CIC WORK_DIR
+Exit 77 (skipped) without scipy or matplotlib.
+"""
+import csv
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+
+source, cic, work = pathlib.Path(sys.argv[1]), sys.argv[2], pathlib.Path(sys.argv[3])
+try:
+    import matplotlib  # noqa: F401
+    from scipy.stats import mannwhitneyu
+except ImportError as e:
+    print(f"scaling_compare_test: skipped: {e}")
+    sys.exit(77)
+shutil.rmtree(work, ignore_errors=True)
+work.mkdir(parents=True)
+sys.path.insert(0, str(source / "scripts"))
+import scaling_compare as sc  # noqa: E402
+import scaling_results as sr  # noqa: E402
+from study_stats import a12, holm  # noqa: E402
+
+REPORT = [sys.executable, str(source / "scripts" / "scaling-report.py")]
+
+
+def check(condition, message):
+    if not condition:
+        print(f"scaling_compare_test: {message}", file=sys.stderr)
+        sys.exit(1)
+
+
+def run(args, **kw):
+    return subprocess.run(args, capture_output=True, text=True, **kw)
+
+
+# ---- tuning files: the shipped ones, their <base> made absolute (they now live in WORK/tuning) ----
+tuning = work / "tuning"
+tuning.mkdir()
+for f in (source / "experiments" / "scaling").glob("tune-*.xml"):
+    text = f.read_text().replace("<base>../../settings/", f"<base>{source}/settings/")
+    text = text.replace("Simulator.robotFile=../../settings/", f"Simulator.robotFile={source}/settings/")
+    (tuning / f.name).write_text(text)
+
+# A ledger where the median and the mean disagree: cmaes-s0.3 has the best mean, sepcmaes-s0.15 the best median.
+VALUES = {
+    "tune-direct-c8": {"cmaes-s0.15": [1, 2, 3, 4, 5], "cmaes-s0.3": [0, 0, 1, 50, 60],
+                       "sepcmaes-s0.15": [4, 4, 6, 7, 7], "sepcmaes-s0.3": [2, 3, 5, 6, 6]},
+    "tune-hybrid-c8": {"offset-s0.1": [3, 3, 3, 3, 3], "offset-s0.3": [1, 1, 2, 9, 9],
+                       "switch-0.3": [5, 5, 5, 5, 5], "switch-0.5": [4, 4, 4, 40, 40]},
+    "tune-hybrid-r1": {"offset-s0.1": [1, 1, 1, 1, 1], "offset-s0.3": [2, 2, 2, 2, 2],
+                       "switch-0.3": [6, 6, 6, 6, 6], "switch-0.5": [7, 7, 7, 7, 7]},
+}
+FIELDS = ["study", "config", "seed", "status", "best_ever", "evaluations", "wall_seconds", "run_dir", "commit"]
+
+
+def write_ledger(folder, rows):
+    folder.mkdir(parents=True, exist_ok=True)
+    with open(folder / "scaling-runs.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, FIELDS, lineterminator="\n")
+        w.writeheader()
+        w.writerows(rows)
+
+
+def tuning_rows(drop=None):
+    rows = []
+    for study, configs in VALUES.items():
+        for config, values in configs.items():
+            for seed, v in zip(range(101, 106), values):
+                done = (study, config, seed) != drop
+                rows.append({"study": study, "config": config, "seed": seed, "status": "done" if done else "pending",
+                             "best_ever": v if done else "", "evaluations": 2500, "wall_seconds": 1,
+                             "run_dir": f"runs/{config}/s{seed}", "commit": "x"})
+    return rows
+
+
+def compare_sweeps(results, out, *extra):
+    return run(REPORT + ["compare-sweeps", "--results", str(results), "--out", str(out), "--tuning", str(tuning),
+                         "--cic", cic, *extra])
+
+
+# ---- refusal: one run of tune-hybrid-r1 to go ----
+write_ledger(work / "unfinished", tuning_rows(drop=("tune-hybrid-r1", "switch-0.5", 105)))
+p = compare_sweeps(work / "unfinished", work / "refused")
+check(p.returncode == 2, f"an unfinished tuning study is refused with exit 2, got {p.returncode}: {p.stderr}")
+check(p.stderr.count("\n") == 1 and "tune-hybrid-r1 has 19 of its 20 runs finished" in p.stderr,
+      f"one clear line naming the study: {p.stderr!r}")
+check(not (work / "refused").exists() or not any((work / "refused").iterdir()), "nothing written when refused")
+p = compare_sweeps(work / "unfinished", work / "provisional", "--provisional")
+check(p.returncode == 0, f"--provisional writes the sweeps: {p.stderr}")
+text = (work / "provisional" / "compare-r1.xml").read_text()
+check("PROVISIONAL" in text and "tune-hybrid-r1" in text.split("PROVISIONAL")[1][:200],
+      "a provisional file says so and names the unfinished study\n" + text)
+
+# ---- the finished ledger: winners, files, seeds ----
+write_ledger(work / "finished", tuning_rows())
+out = work / "exp"
+p = compare_sweeps(work / "finished", out)
+check(p.returncode == 0, f"compare-sweeps on a finished ledger: {p.stderr}")
+files = sorted(f.name for f in out.glob("compare-*.xml"))
+want = sorted([f"compare-{r}.xml" for r in sc.CENTIPEDES] + ["compare-r1.xml", "compare-r2.xml"])
+check(files == want, f"ten sweeps expected, got {files}")
+check("PROVISIONAL" not in (out / "compare-centipede-2.xml").read_text(), "a finished tuning is not provisional")
+for name in files:
+    text = (out / name).read_text()
+    variants = re.findall(r'<variant name="([^"]+)">(.*?)</variant>', text)
+    names = [v for v, _ in variants]
+    if name in ("compare-r1.xml", "compare-r2.xml"):
+        check(names == ["offset-hybrid.offset-s0.3", "switch-hybrid.switch-0.5"],
+              f"{name}: R's hybrids are tune-hybrid-r1's winners, got {names}")
+        check("<set>Gait.evaluations=15000</set>" in text, f"{name}: 15,000 evaluations")
+        check(f"<set>Simulator.robot_type={name[-5]}</set>" in text, f"{name}: its robot type")
+        check("collisionSpace" not in text, f"{name}: R1 and R2 keep the default collision space")
+    else:
+        robot = name[len("compare-"):-4]
+        check(names == ["direct.sepcmaes-s0.15", "hypergp-gait", "offset-hybrid.offset-s0.1",
+                        "switch-hybrid.switch-0.3"], f"{name}: the winners by median, got {names}")
+        check(f"settings/robots/{robot}.xml</set>" in text and "<set>Simulator.collisionSpace=1</set>" in text,
+              f"{name}: its robot and the sweep collision space")
+        check("<set>Gait.evaluations=2500</set>" in text, f"{name}: 2,500 evaluations")
+        direct = dict(variants)["direct.sepcmaes-s0.15"]
+        check(direct.endswith("<set>Gait.optimizer=sepcmaes</set><set>Gait.sigma0=0.15</set>"),
+              f"{name}: the tuning variant's own <set> lines, copied: {direct}")
+        check(dict(variants)["offset-hybrid.offset-s0.1"] ==
+              "<set>Neural.switchPatience=0</set><set>Neural.switchShare=0</set><set>Neural.directOffsets=1</set>"
+              "<set>Neural.offsetSigma=0.1</set>", f"{name}: the offset winner's sets")
+    seeds = 5 if name[len("compare-"):-4] in sc.MIDDLE else 10
+    check(f'<repeats count="{seeds}" firstSeed="1" seeds="same"/>' in text, f"{name}: comparison seeds 1..{seeds}")
+    check(("seeds 1..5 only" in text) == (seeds == 5), f"{name}: the comment states the seeds and why")
+    p = run([cic, "sweep", str(out / name), "--output", str(work / "dry" / name[:-4]), "--dry-run"])
+    check(p.returncode == 0, f"cic sweep --dry-run refuses {name}: {p.stderr}")
+    check(f"{len(names)} configurations x {seeds} repeats" in p.stdout, f"{name}: {p.stdout.splitlines()[0]}")
+
+
+def effective(sweep, config, seed):
+    """`cic settings` of the command `cic sweep --dry-run` gives for one run, seed left out."""
+    p = run([cic, "sweep", str(sweep), "--output", str(work / "dry" / sweep.stem), "--dry-run"])
+    line = next(ln for ln in p.stdout.splitlines() if f" runs/{config}/s{seed} " in ln)
+    args = line.split(" cic ", 1)[1].split()
+    q = run([cic, "settings", args[1]] + [a for a in args[2:]])
+    check(q.returncode == 0, f"cic settings of {config}: {q.stderr}")
+    return re.sub(r"<seed>\d+</seed>", "", q.stdout)
+
+
+# The direct variant on the hybrids' base is the tuning run, key by key.
+check(effective(out / "compare-centipede-8.xml", "direct.sepcmaes-s0.15", 1) ==
+      effective(tuning / "tune-direct-c8.xml", "sepcmaes-s0.15", 101),
+      "the compare direct variant's effective settings are tune-direct-c8's sepcmaes-s0.15")
+check(effective(out / "compare-centipede-8.xml", "switch-hybrid.switch-0.3", 1) ==
+      effective(tuning / "tune-hybrid-c8.xml", "switch-0.3", 101), "the switch winner is the tuning run")
+check(effective(out / "compare-r2.xml", "offset-hybrid.offset-s0.3", 1).replace("<robot_type>2<", "<robot_type>1<") ==
+      effective(tuning / "tune-hybrid-r1.xml", "offset-s0.3", 101), "R2's offset hybrid is R1's winner on R2")
+
+# ---- statistics on known data ----
+check(holm([0.01, 0.04, 0.03, 0.5]) == [0.04, 0.09, 0.09, 0.5], f"Holm: {holm([0.01, 0.04, 0.03, 0.5])}")
+check(abs(a12([3, 4, 5], [1, 2, 3]) - 8.5 / 9) < 1e-12, "A12 of [3,4,5] over [1,2,3] is 8.5/9")
+check(a12([1, 2], [1, 2]) == 0.5, "A12 of equal samples is 0.5")
+direct = [float(v) for v in range(10, 20)]
+g = {"centipede-2": {"direct": direct, "hypergp-gait": [v + 20 for v in direct],          # all above
+                     "offset-hybrid": [v + 0.5 for v in direct],                           # overlapping
+                     "switch-hybrid": [v - 20 for v in direct]},                          # all below
+     # 23 of 25 pairs won: p = 0.032 alone, 0.063 after Holm over 4 cells
+     "centipede-4": {"direct": direct[:5], "hypergp-gait": [12.5, 14.5, 15, 16, 17]}}
+s = sr.score(g)
+cells = [("centipede-2", "hypergp-gait"), ("centipede-2", "offset-hybrid"), ("centipede-2", "switch-hybrid"),
+         ("centipede-4", "hypergp-gait")]
+check(list(s) == cells, f"the cells, in order: {list(s)}")
+ps = [mannwhitneyu(g[r][m], g[r]["direct"], alternative="two-sided").pvalue for r, m in cells]
+for c, p in zip(cells, ps):
+    check(abs(s[c]["p"] - p) < 1e-15, f"{c}: Mann-Whitney p {s[c]['p']} against scipy's {p}")
+order = sorted(range(4), key=lambda i: ps[i])
+running, adjusted = 0.0, [0.0] * 4
+for rank, i in enumerate(order):
+    running = max(running, min(1.0, (4 - rank) * ps[i]))
+    adjusted[i] = running
+for c, q in zip(cells, adjusted):
+    check(abs(s[c]["holm"] - q) < 1e-15, f"{c}: Holm over the 4 cells {s[c]['holm']} against {q}")
+check(s[cells[3]]["p"] < 0.05 < s[cells[3]]["holm"], f"Holm takes centipede-4's cell over 0.05: {s[cells[3]]}")
+check(s[cells[0]]["a12"] == 1.0 and s[cells[2]]["a12"] == 0.0, "A12 1 above and 0 below")
+check(abs(s[cells[0]]["ratio"] - 34.5 / 14.5) < 1e-12, f"ratio of medians {s[cells[0]]['ratio']}")
+lo, hi = s[cells[0]]["ratio_ci"]
+check(lo <= s[cells[0]]["ratio"] <= hi and lo > 1, f"the ratio's interval holds it: {lo, hi}")
+check(sr.ratio_interval([2.0] * 5, [1.0] * 5) == (2.0, 2.0), "constant samples: a point interval")
+
+# ---- results end to end: a real run assessed once, the rest cached ----
+studies = work / "studies"
+p = run([cic, "--quiet", "--settings", str(source / "settings" / "r1_gait.xml"), "--set", "Gait.evaluations=12",
+         "--set", "Gait.populationSize=6", "--output", str(studies / "compare-centipede-2" / "runs" / "direct.x")])
+check(p.returncode == 0, f"a tiny gait run: {p.stderr}")
+real = next((studies / "compare-centipede-2" / "runs" / "direct.x").iterdir())
+p = run([cic, "assess", str(real)])
+raw_real = float(next(csv.DictReader(p.stdout.splitlines()))["raw_fitness"])
+rows, cache = [], []
+for robot, groups in g.items():
+    for method, values in groups.items():
+        config = "direct.x" if method == "direct" else method + ".y"
+        for seed, v in enumerate(values, 1):
+            run_dir = f"runs/{config}/s{seed}"
+            if robot == "centipede-2" and method == "direct" and seed == 1:
+                run_dir = f"runs/direct.x/{real.name}"   # scored by cic assess
+            else:
+                cache.append({"study": f"compare-{robot}", "config": config, "seed": seed, "best_ever": v + 100,
+                              "run_dir": "unused", "raw_fitness": v})
+            rows.append({"study": f"compare-{robot}", "config": config, "seed": seed, "status": "done",
+                         "best_ever": v + 100, "evaluations": 2500, "wall_seconds": 1, "run_dir": run_dir,
+                         "commit": "x"})
+results = work / "results"
+write_ledger(results, tuning_rows() + rows)
+with open(results / "compare-raw.csv", "w", newline="") as f:
+    w = csv.DictWriter(f, sr.CACHE_FIELDS, lineterminator="\n")
+    w.writeheader()
+    w.writerows(cache)
+svg = work / "img" / "scaling-ratio.svg"
+args = REPORT + ["results", "--results", str(results), "--studies", str(studies), "--cic", cic, "--figure", str(svg),
+                 "--baselines", str(work / "none.csv")]
+p = run(args)
+check(p.returncode == 0, f"results: {p.stderr}")
+cached = {(r["study"], r["config"], r["seed"]): r for r in csv.DictReader(open(results / "compare-raw.csv"))}
+check(float(cached[("compare-centipede-2", "direct.x", "1")]["raw_fitness"]) == raw_real,
+      "the real run's raw eq. 7.1 is cic assess's, cached")
+md = (results / "compare.md").read_text()
+check("| centipede-2 | 12 | HyperGP-gait | 10 |" in md, "a row per robot and method\n" + md)
+check("better than best direct" in md and "worse than best direct" in md, "significant cells say which way\n" + md)
+check("| centipede-4 | 24 | HyperGP-gait | 5 |" in md and "no difference shown at n = 5 |" in md,
+      "the 5-seed robot: nothing shown\n" + md)
+check("No difference shown after Holm: centipede-4 (n = 5)." in md, "the robots with nothing significant\n" + md)
+check(svg.read_text().lstrip().startswith("<?xml") and "<svg" in svg.read_text(), "the figure is an SVG")
+first = svg.read_bytes()
+# Scored once: with the run folder gone, the cache still scores it, and the same bytes come out.
+shutil.rmtree(real)
+p = run(args)
+check(p.returncode == 0, f"results from the cache: {p.stderr}")
+check(svg.read_bytes() == first, "the figure's bytes are the same from the same runs")
+# A finished run neither cached nor on disk is refused.
+(results / "compare-raw.csv").write_text(",".join(sr.CACHE_FIELDS) + "\n")
+p = run(args)
+check(p.returncode == 2 and "is gone" in p.stderr, f"an unscored vanished run is refused: {p.returncode} {p.stderr}")
+print("scaling_compare_test: ok")
