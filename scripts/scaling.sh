@@ -100,6 +100,8 @@ run_study() {   # STUDY
     return 0
   fi
   mapfile -t pending < <("$CIC" sweep "$file" --output "$dir" --dry-run | awk '$1 ~ /^[0-9]+$/ && $3 ~ /^runs\// && $2 != "done" {print $1 " " $3}')
+  # Every run already in the store (another study ran it): link them, so the ledger sees the study.
+  if [ ${#pending[@]} = 0 ]; then "$CIC" --quiet sweep "$file" --output "$dir" --index-only; fi
   local i=0 batch=() item
   while [ $i -lt ${#pending[@]} ]; do
     batch=("${pending[@]:i:jobs}")

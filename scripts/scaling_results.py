@@ -197,7 +197,8 @@ def figure(g, sc_cells, path):
         ax.set_xlabel("hinges")
         ax.set_title("irregular twins" if irregular else "regular centipedes")
     axes[0].set_ylabel("median raw eq. 7.1 / best direct's")
-    axes[0].legend(fontsize=8)
+    if axes[0].get_legend_handles_labels()[0]:
+        axes[0].legend(fontsize=8)
     fig.suptitle("Issue 38: each HyperGP method over the best direct one, 2,500 evaluations "
                  "(bootstrap 95 %)", fontsize=9)
     fig.tight_layout()
