@@ -168,11 +168,13 @@ def direct_variant(cic, robot, out, top, hybrid, direct, config):
 
 def sweep_text(name, robot, budget, out, hybrid, top, variants, notes, unfinished):
     seeds = seeds_of(robot) if robot not in R_ROBOTS else 10
-    why = ("seeds 1..5 only: a middle size, cut first because the whole plan passes 30 hours "
-           "(docs/scaling.md, \"Run-time estimate\")" if seeds == 5 else "comparison seeds 1..10")
+    why = ("comparison seeds 1..5 only: a middle size, whose seeds are cut first because the whole\n"
+           "     plan passes 30 hours (docs/scaling.md, \"Run-time estimate\")" if seeds == 5
+           else "comparison seeds 1..10")
     base = os.path.relpath(hybrid["base"], out)
     lines = ['<?xml version="1.0" encoding="UTF-8"?>',
-             f"<!-- Issue 38, the comparison on {robot} at {budget:,} evaluations (docs/scaling.md, \"Plan\"), {why}.",
+             f"<!-- Issue 38, the comparison on {robot} at {budget:,} evaluations (docs/scaling.md, \"Plan\"),",
+             f"     {why}.",
              "     Written by scripts/scaling-report.py compare-sweeps from the tuning winners in",
              "     results/scaling-runs.csv; every value is copied from the tuning sweep files. Do not edit:",
              "     rerun compare-sweeps. Variants:"]
