@@ -83,6 +83,8 @@ const SearchKind& search_of(const io::Settings& s) {
                                      "it: auto, {}",
                                      asked, forms_text(it->forms), s.experiment.type, io::to_string(form), allowed()),
                          s.source_file);
+    if (it->claims && !it->claims(s))
+        throw InputError(fmt::format("Experiment.search = {} needs {}", asked, it->claimed_by), s.source_file);
     if (claimer && claimer != &*it)
         throw InputError(fmt::format("Experiment.search = {}, but {} asks for the search {}; set one of them",
                                      asked, claimer->claimed_by, claimer->name),

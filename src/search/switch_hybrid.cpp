@@ -183,7 +183,7 @@ const Registrar registrar{SearchKind{
     .budget_key = "Gait.evaluations",
     .budget_unit = "evaluations",
     .claims = [](const io::Settings& s) { return s.neural.switches() && !s.map_elites.enabled; },
-    .claimed_by = "Neural.switchPatience or Neural.switchShare",
+    .claimed_by = "Neural.switchPatience > 0 or Neural.switchShare > 0",
     .fallback = false,
     .load = [](const io::Settings& s, const std::string& file) -> std::unique_ptr<Checkpoint> {
         if (io::is_gait_file(file)) return load_gait_checkpoint(s, file);   // the gait phase's

@@ -73,6 +73,17 @@ TEST(SearchRegistry, AKeyThatAsksForAnotherSearchIsAConflict) {
     EXPECT_NE(m.find("MapElites.enabled = 1 asks for the search map-elites"), std::string::npos) << m;
 }
 
+TEST(SearchRegistry, ANamedSearchNeedsTheKeysThatAskForIt) {
+    Settings g;
+    g.experiment.type = "gait";
+    g.experiment.search = "map-elites";
+    EXPECT_NE(refusal(g).find("Experiment.search = map-elites needs MapElites.enabled = 1"), std::string::npos)
+        << refusal(g);
+    Settings s;
+    s.experiment.search = "switch-hybrid";
+    EXPECT_NE(refusal(s).find("needs Neural.switchPatience > 0 or Neural.switchShare > 0"), std::string::npos) << refusal(s);
+}
+
 TEST(SearchRegistry, TheReaderRefusesAnUnknownNameWithTheAllowedOnes) {
     try {
         (void)cic::io::read_settings_string(
