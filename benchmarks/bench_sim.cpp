@@ -199,8 +199,8 @@ int main(int argc, char** argv) {
     if (argc > 1 && std::strcmp(argv[1], "worker") == 0) {
         const int out = ::dup(1);
         ::dup2(2, 1);
-        const auto kinds = cic::app::make_worker_job_kinds({});
-        return cic::serve_worker(0, out, [&](const std::string& job) { return cic::app::dispatch_worker_job(kinds, job); });
+        const auto kinds = cic::run::make_worker_job_kinds({});
+        return cic::serve_worker(0, out, [&](const std::string& job) { return cic::run::dispatch_worker_job(kinds, job); });
     }
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

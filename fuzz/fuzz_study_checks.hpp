@@ -34,9 +34,9 @@ inline const std::filesystem::path& sweep_folder() {
 // configurations x repeats tasks, distinct seeds within a configuration, and
 // each task's overrides end with its seed.
 inline Outcome check_sweep(std::string_view input) {
-    app::SweepPlan plan;
+    study::SweepPlan plan;
     try {
-        plan = app::parse_sweep(input, sweep_folder() / "s.xml", sweep_folder() / "study");
+        plan = study::parse_sweep(input, sweep_folder() / "s.xml", sweep_folder() / "study");
     } catch (const std::exception&) {
         return {};
     }
@@ -66,9 +66,9 @@ inline Outcome check_sweep(std::string_view input) {
 // Study indexes: parse_study_index; every number an accepted index holds is
 // finite, and grouping keeps every run (with the unfinished) in its configuration.
 inline Outcome check_index(std::string_view input) {
-    app::StudyIndex index;
+    report::StudyIndex index;
     try {
-        index = app::parse_study_index(input, "/fuzz-study");
+        index = report::parse_study_index(input, "/fuzz-study");
     } catch (const std::exception&) {
         return {};
     }
@@ -78,7 +78,7 @@ inline Outcome check_index(std::string_view input) {
             if (*v && !std::isfinite(**v)) return bug("index: a non-finite number was accepted at line " + std::to_string(run.line));
         if (run.values.size() != index.varied_keys.size()) return bug("index: a run has the wrong number of varied values");
     }
-    for (const auto& g : app::group_study(index, true)) {
+    for (const auto& g : report::group_study(index, true)) {
         for (const auto* r : g.runs)
             if (r->config != g.config) return bug("index: a run grouped under another configuration");
         grouped += g.runs.size();

@@ -1,3 +1,3 @@
 #include "cic/cli/cli.hpp"
 
-int main(int argc, char** argv) { return cic::app::main(argc, argv); }
+int main(int argc, char** argv) { return cic::cli::main(argc, argv); }

@@ -45,4 +45,4 @@ const experiments::Registrar registrar{{
 
 } // namespace
 
-int main(int argc, char** argv) { return cic::app::main(argc, argv); }
+int main(int argc, char** argv) { return cic::cli::main(argc, argv); }

@@ -20,9 +20,9 @@
 
 namespace py = pybind11;
 using namespace cic;
-using app::EvaluationSession;
-using app::Genotype;
-using app::GenotypeForm;
+using run::EvaluationSession;
+using run::Genotype;
+using run::GenotypeForm;
 
 namespace {
 
@@ -62,7 +62,7 @@ class Session {
 public:
     Session(const std::string& settings, int workers, const std::vector<std::string>& overrides,
             const std::string& worker_executable) {
-        app::SessionOptions o;
+        run::SessionOptions o;
         o.settings_file = settings;
         o.overrides = overrides;
         o.workers = workers;
@@ -108,7 +108,7 @@ public:
 
     py::dict simulate(const std::vector<double>& vector, const std::vector<std::string>& trees, bool trace) {
         Genotype g{vector, trees};
-        app::Walk w;
+        run::Walk w;
         {
             py::gil_scoped_release release;
             std::lock_guard lock(mutex_);
@@ -139,7 +139,7 @@ public:
 
 private:
     py::dict run(const std::vector<Genotype>& batch) {
-        app::Scores s;
+        run::Scores s;
         {
             py::gil_scoped_release release;
             std::lock_guard lock(mutex_);
@@ -174,7 +174,7 @@ private:
 };
 
 py::dict read_run_best(const std::string& folder) {
-    const app::RunBest b = app::read_run_best(folder);
+    const run::RunBest b = run::read_run_best(folder);
     py::dict d;
     d["form"] = form_name(b.form);
     d["vector"] = vector_array(b.genotype.vector);

@@ -18,19 +18,19 @@
 #include "cic/run/main_job.hpp"
 #include "cic/run/settings_lookup.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 int main(int argc, char** argv) {
     CommandContext ctx;
     for (int i = 0; i < argc; ++i) ctx.command_line += (i ? " " : "") + std::string(argv[i]);
-    MainJob o;
+    run::MainJob o;
     CLI::App app{"cic: evolutionary robotics with HyperGP (hypercube-encoded genetic programming evolving "
                  "recurrent neural controllers for simulated modular robots), and symbolic regression.\n"
                  "Runs the experiment a settings file describes; each run gets a fresh folder OUTPUT/NAME-NNN "
                  "with the effective settings, a log, statistics and populations.",
                  "cic"};
     // Where this binary came from: version, commit, compiler, flags, libraries (provenance.hpp).
-    app.set_version_flag("--version", build_text());
+    app.set_version_flag("--version", run::build_text());
     app.add_option("--settings", o.settings_file, "settings XML file (see `cic settings --defaults`)");
     app.add_option("--set", o.sets, "override one setting, Section.key=value (repeatable), e.g. GP.tournament_size=7")
         ->allow_extra_args(false);
@@ -102,8 +102,8 @@ int main(int argc, char** argv) {
     // file. A plain `cic` run (no launcher in the environment) never touches MPI,
     // and neither do subcommands (so `cic worker` children stay out of it).
     // The session outlives the job: its end tells the ranks to stop.
-    std::optional<MpiSession> mpi;
-    const int launch_size = mpi_launch_size();
+    std::optional<run::MpiSession> mpi;
+    const int launch_size = run::mpi_launch_size();
     if (launch_size > 1 || launch_size < 0) {
         mpi.emplace();
         if (mpi->rank() > 0) return mpi->serve();
@@ -111,11 +111,11 @@ int main(int argc, char** argv) {
 #endif
     try {
         // NAME.xml not found as given: the installed (or source-tree) settings folder.
-        o.settings_file = find_settings_file(o.settings_file).string();
+        o.settings_file = run::find_settings_file(o.settings_file).string();
         o.command_line = ctx.command_line;
         o.quiet = ctx.quiet;
         o.verbose = ctx.verbose;
-        return run_main_job(o);
+        return run::run_main_job(o);
     } catch (const InputError& e) {
         std::cerr << "cic: error: " << e.what() << '\n';
         return 2;
@@ -125,4 +125,4 @@ int main(int argc, char** argv) {
     }
 }
 
-} // namespace cic::app
+} // namespace cic::cli

@@ -5,7 +5,7 @@
 #include <set>
 #include <string>
 
-namespace cic::app::docs {
+namespace cic::cli::docs {
 
 bool hidden(const CLI::App* sub) { return sub->get_group().empty() || sub->get_name().empty(); }
 
@@ -69,4 +69,4 @@ std::string value_kind(const CLI::Option* opt) {
     return folder && !file ? "dir" : "file";
 }
 
-} // namespace cic::app::docs
+} // namespace cic::cli::docs

@@ -12,13 +12,13 @@
 #include "cic/report/plot.hpp"
 #include "cic/io/xml.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 void add_assess_command(Command& app, CommandContext& ctx) {
     struct Options {
         std::vector<std::string> inputs;
         std::string out;
-        double shaking_above = kShakingAboveHz;
+        double shaking_above = report::kShakingAboveHz;
         std::string cell;
     };
     auto opts = std::make_shared<Options>();
@@ -42,17 +42,17 @@ void add_assess_command(Command& app, CommandContext& ctx) {
             // A study folder (index.csv) stands for its finished runs, as in plot, export and compare.
             std::vector<std::string> inputs;
             for (const std::string& input : opts->inputs) {
-                if (!is_study_folder(input)) {
+                if (!report::is_study_folder(input)) {
                     inputs.push_back(input);
                     continue;
                 }
-                const StudyIndex index = read_study_index(input);
-                for (const StudyRun& run : index.runs)
+                const report::StudyIndex index = report::read_study_index(input);
+                for (const report::StudyRun& run : index.runs)
                     if (run.status == "done") inputs.push_back(index.run_path(run).string());
             }
             for (const std::string& input : inputs) {
-                const auto items = replay(input, opts->cell.empty() ? "best" : "cell:" + opts->cell, 1, 10.0, true);
-                const GaitAssessment a = assess_gait(items.at(0), opts->shaking_above);
+                const auto items = report::replay(input, opts->cell.empty() ? "best" : "cell:" + opts->cell, 1, 10.0, true);
+                const report::GaitAssessment a = report::assess_gait(items.at(0), opts->shaking_above);
                 std::string duty;   // "foot:fraction" per foot, space-separated
                 for (std::size_t f = 0; f < a.foot_names.size(); ++f)
                     duty += fmt::format("{}{}:{:.3f}", f ? " " : "", a.foot_names[f], a.duty_factors[f]);
@@ -71,4 +71,4 @@ void add_assess_command(Command& app, CommandContext& ctx) {
     });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

@@ -12,12 +12,12 @@
 #include "cic/io/xml.hpp"
 #include "cic/study/compare_table.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CompareOptions : CompareRequest {
+struct CompareOptions : study::CompareRequest {
     std::string study;
     std::string out;
 };
@@ -28,7 +28,7 @@ int run_compare(const CompareOptions& o, const CommandContext& ctx) {
         if (!out_dir.empty() && !fs::is_directory(out_dir))
             throw InputError("output folder does not exist", out_dir.string());
     }
-    const CompareTables tables = compare_study(o.study, o);
+    const study::CompareTables tables = study::compare_study(o.study, o);
     std::cout << tables.markdown << std::flush;
     if (!o.out.empty()) {
         io::xml::write_file_atomically(o.out + ".md", tables.markdown);
@@ -68,4 +68,4 @@ void add_compare_command(Command& app, CommandContext& ctx) {
     });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

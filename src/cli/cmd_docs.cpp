@@ -12,7 +12,7 @@
 #include "cic/cli/commands.hpp"
 #include "docs.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 void add_docs_commands(Command& root, CommandContext& ctx) {
     CLI::App& app = *root.app();   // introspection: every option and check of every command
@@ -34,4 +34,4 @@ void add_docs_commands(Command& root, CommandContext& ctx) {
         });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

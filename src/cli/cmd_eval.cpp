@@ -19,7 +19,7 @@
 #include "cic/run/self_path.hpp"
 #include "cic/sim/evaluate.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 namespace {
 
@@ -85,9 +85,9 @@ private:
 // A line's genotype: {"genotype": G, "id": ANY} or G alone, where G is an array
 // of numbers (a gait or CPG vector), an S-expression string, or an array of them
 // (a forest). Throws InputError for anything else.
-Genotype genotype_of(const json& line) {
+run::Genotype genotype_of(const json& line) {
     const json& g = line.is_object() ? line.at("genotype") : line;
-    Genotype out;
+    run::Genotype out;
     if (g.is_string()) {
         out.trees.push_back(g.get<std::string>());
     } else if (g.is_array() && !g.empty() && g.front().is_string()) {
@@ -106,14 +106,14 @@ Genotype genotype_of(const json& line) {
     return out;   // the session checks the form against the settings
 }
 
-json info_of(const EvaluationSession& session) {
+json info_of(const run::EvaluationSession& session) {
     const io::Settings& s = session.settings();
     json j;
     j["cic"] = CIC_VERSION;
     j["protocol"] = kProtocol;
     j["settings"] = session.settings_file().string();
     j["experiment"] = s.experiment.type;
-    j["form"] = session.form() == GenotypeForm::Vector ? "vector" : "forest";
+    j["form"] = session.form() == run::GenotypeForm::Vector ? "vector" : "forest";
     j["dimension"] = session.dimension();
     j["descriptor"] = s.map_elites.enabled ? sim::to_string(s.map_elites.descriptor) : "none";
     j["workers"] = session.workers();
@@ -122,13 +122,13 @@ json info_of(const EvaluationSession& session) {
 
 int run_eval(const EvalOptions& o) {
     if (o.batch < 1) throw InputError("--batch must be at least 1, got " + std::to_string(o.batch));
-    SessionOptions so;
+    run::SessionOptions so;
     so.settings_file = o.settings;
     so.overrides = o.overrides;
     so.workers = o.workers;
-    so.worker_executable = self_exec_path();
+    so.worker_executable = run::self_exec_path();
     so.warn = [](const std::string& line) { std::cerr << line << '\n'; };
-    EvaluationSession session(so);
+    run::EvaluationSession session(so);
     if (o.info) {
         std::cout << info_of(session).dump() << std::endl;
         return 0;
@@ -138,7 +138,7 @@ int run_eval(const EvalOptions& o) {
     while (reader.next_batch(lines, static_cast<std::size_t>(o.batch))) {
         // Each line is parsed and checked alone: a bad line gets its error, the others their scores.
         std::vector<json> replies(lines.size());
-        std::vector<Genotype> batch;
+        std::vector<run::Genotype> batch;
         std::vector<std::size_t> slot;
         for (std::size_t i = 0; i < lines.size(); ++i) {
             if (lines[i].find_first_not_of(" \t\r") == std::string::npos) {
@@ -149,7 +149,7 @@ int run_eval(const EvalOptions& o) {
             try {
                 const json line = json::parse(lines[i]);
                 if (line.is_object() && line.contains("id")) reply["id"] = line["id"];
-                Genotype g = genotype_of(line);
+                run::Genotype g = genotype_of(line);
                 session.check(g);
                 batch.push_back(std::move(g));
                 slot.push_back(i);
@@ -160,7 +160,7 @@ int run_eval(const EvalOptions& o) {
             }
         }
         if (!batch.empty()) {
-            const Scores s = session.evaluate(batch);
+            const run::Scores s = session.evaluate(batch);
             for (std::size_t k = 0; k < slot.size(); ++k) {
                 json& reply = replies[slot[k]];
                 reply["fitness"] = s.fitness[k];
@@ -192,4 +192,4 @@ void add_eval_command(Command& app, CommandContext& ctx) {
     cmd.on_run([o, &ctx] { ctx.exit_code = run_eval(*o); });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

@@ -11,7 +11,7 @@
 #include "cic/report/export.hpp"
 #include "cic/report/plot.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 void add_export_command(Command& app, CommandContext& ctx) {
     struct Options {
@@ -28,15 +28,15 @@ void add_export_command(Command& app, CommandContext& ctx) {
     cmd.flag("--terms", opts->terms, "fill distance and elevation (eq. 7.1) by replaying each distinct genotype once");
     cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "export", [&] {
-            ExportRequest r;
+            report::ExportRequest r;
             for (const auto& i : opts->inputs) r.inputs.emplace_back(i);
             r.terms = opts->terms;
             if (!ctx.quiet)   // runs an edited sweep file dropped are still on disk: say that they are left out
                 for (const auto& i : opts->inputs)
-                    if (is_study_folder(i))
-                        if (const std::string note = runs_missing_note(read_study_index(i)); !note.empty())
+                    if (report::is_study_folder(i))
+                        if (const std::string note = report::runs_missing_note(report::read_study_index(i)); !note.empty())
                             std::cerr << "cic export: " << note << '\n';
-            const std::string csv = export_individuals(r);
+            const std::string csv = report::export_individuals(r);
             if (opts->out.empty()) {
                 std::cout << csv;
             } else {
@@ -49,4 +49,4 @@ void add_export_command(Command& app, CommandContext& ctx) {
     });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

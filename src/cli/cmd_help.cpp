@@ -6,7 +6,7 @@
 #include "cic/cli/command_guard.hpp"
 #include "cic/io/did_you_mean.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 namespace {
 
 std::vector<std::string> option_names(const CLI::App& app) {
@@ -87,4 +87,4 @@ std::string settings_file_hint(const CLI::App& app, int argc, char** argv) {
     return {};
 }
 
-} // namespace cic::app
+} // namespace cic::cli

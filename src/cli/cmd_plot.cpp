@@ -13,7 +13,7 @@
 #include "cic/report/plot.hpp"
 #include "cic/core/error.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 namespace {
 
 struct PlotCommandOptions {
@@ -41,7 +41,7 @@ P plot_options(const PlotCommandOptions& o) {
     plot.title = o.title;
     plot.width = o.width;
     plot.height = o.height;
-    if constexpr (std::is_base_of_v<StudyPlotOptions, P>) {
+    if constexpr (std::is_base_of_v<report::StudyPlotOptions, P>) {
         plot.median = o.median;
         plot.include_unfinished = o.include_unfinished;
     }
@@ -101,12 +101,12 @@ void add_plot_command(Command& app, CommandContext& ctx) {
                 std::vector<std::filesystem::path> dirs(opts->runs.begin(), opts->runs.end());
                 if (dirs.size() > 1)
                     for (const auto& dir : dirs)
-                        if (is_study_folder(dir))
+                        if (report::is_study_folder(dir))
                             throw InputError("a study folder is plotted on its own (give one study, or run folders)",
                                              dir.string());
-                const auto paths = best_paths(dirs, opts->include_unfinished);
+                const auto paths = report::best_paths(dirs, opts->include_unfinished);
                 const std::string out = opts->out.empty() ? "path.svg" : opts->out;
-                plot_paths(paths, out, plot_options<PlotOptions>(*opts));
+                report::plot_paths(paths, out, plot_options<report::PlotOptions>(*opts));
                 if (!ctx.quiet) {
                     for (const auto& p : paths)
                         std::cerr << fmt::format("{}: {:.4f} m along the preferred axis\n", p.label, p.distance);
@@ -132,23 +132,23 @@ void add_plot_command(Command& app, CommandContext& ctx) {
                     dims.push_back(static_cast<std::size_t>(v - 1));
                 }
                 if (dims.size() != 2) throw InputError("--dims takes two descriptor dimensions, e.g. --dims 1,2");
-                auto plot = plot_options<ArchivePlotOptions>(*opts);
+                auto plot = plot_options<report::ArchivePlotOptions>(*opts);
                 plot.x_dim = dims[0];
                 plot.y_dim = dims[1];
                 const std::string out = opts->out.empty() ? "archive.svg" : opts->out;
-                plot_archive(opts->runs[0], out, plot);
+                report::plot_archive(opts->runs[0], out, plot);
                 if (!ctx.quiet) std::cerr << "wrote " << out << '\n';
                 return 0;
             }
             if (opts->by_evaluations && !opts->trace.empty())
                 throw InputError("--by-evaluations plots study folders, not a trace");
             if (!opts->trace.empty()) {
-                auto plot = plot_options<TracePlotOptions>(*opts);
+                auto plot = plot_options<report::TracePlotOptions>(*opts);
                 plot.joints = opts->joints;
                 plot.from = opts->from;
                 plot.to = opts->to;
                 const std::string out = opts->out.empty() ? "trace.svg" : opts->out;
-                plot_trace(opts->trace, out, plot);
+                report::plot_trace(opts->trace, out, plot);
                 if (!ctx.quiet) std::cerr << "wrote " << out << '\n';
                 return 0;
             }
@@ -157,57 +157,57 @@ void add_plot_command(Command& app, CommandContext& ctx) {
             if (opts->by_evaluations) {
                 std::vector<std::filesystem::path> studies;
                 for (const auto& dir : opts->runs) {
-                    if (!is_study_folder(dir))
+                    if (!report::is_study_folder(dir))
                         throw InputError("--by-evaluations plots study folders (each holds index.csv from cic sweep)",
                                          dir);
                     studies.emplace_back(dir);
                 }
-                auto plot = plot_options<EvaluationPlotOptions>(*opts);
+                auto plot = plot_options<report::EvaluationPlotOptions>(*opts);
                 plot.configs = opts->configs;
                 const std::string out = opts->out.empty() ? "plot.svg" : opts->out;
-                plot_studies_by_evaluations(studies, out, plot);
+                report::plot_studies_by_evaluations(studies, out, plot);
                 if (!ctx.quiet) std::cerr << "wrote " << out << '\n';
                 return 0;
             }
-            const bool study = opts->runs.size() == 1 && is_study_folder(opts->runs[0]);
+            const bool study = opts->runs.size() == 1 && report::is_study_folder(opts->runs[0]);
             if (!study) {
                 for (const auto& dir : opts->runs)
-                    if (is_study_folder(dir))
+                    if (report::is_study_folder(dir))
                         throw InputError("a study folder is plotted on its own (give one study, or run folders)",
                                          dir);
                 if (opts->median || opts->include_unfinished)
                     throw InputError("--median and --include-unfinished apply to a study folder (holds index.csv)");
             } else {
-                const auto plot = plot_options<StudyPlotOptions>(*opts);
+                const auto plot = plot_options<report::StudyPlotOptions>(*opts);
                 const std::string out = opts->out.empty() ? "plot.svg" : opts->out;
-                plot_study(opts->runs[0], out, plot);
+                report::plot_study(opts->runs[0], out, plot);
                 if (!ctx.quiet) {
-                    const StudyIndex index = read_study_index(opts->runs[0]);
-                    if (const std::string note = runs_missing_note(index); !note.empty())
+                    const report::StudyIndex index = report::read_study_index(opts->runs[0]);
+                    if (const std::string note = report::runs_missing_note(index); !note.empty())
                         std::cerr << "cic plot: " << note << '\n';
-                    for (const auto& g : group_study(index, opts->include_unfinished))
+                    for (const auto& g : report::group_study(index, opts->include_unfinished))
                         std::cerr << fmt::format("{}: {} run(s)\n", g.config, g.runs.size());
                     std::cerr << "wrote " << out << '\n';
                 }
                 return 0;
             }
-            const auto plot = plot_options<PlotOptions>(*opts);
+            const auto plot = plot_options<report::PlotOptions>(*opts);
             std::vector<std::filesystem::path> dirs(opts->runs.begin(), opts->runs.end());
             const std::string out = opts->out.empty() ? "plot.svg" : opts->out;
-            plot_runs(dirs, out, plot);
+            report::plot_runs(dirs, out, plot);
             if (!ctx.quiet) {
-                for (const auto& g : group_runs(dirs))
+                for (const auto& g : report::group_runs(dirs))
                     std::cerr << fmt::format("{}: {} run(s)\n", g.label, g.runs.size());
                 std::cerr << "wrote " << out << '\n';
             }
             // One MAP-Elites run: its archive too, beside the curves (OUT-archive.EXT).
-            if (dirs.size() == 1 && is_archive_run(dirs.front())) {
+            if (dirs.size() == 1 && report::is_archive_run(dirs.front())) {
                 const std::filesystem::path curves(out);
                 const std::filesystem::path heatmap =
                     curves.parent_path() / (curves.stem().string() + "-archive" + curves.extension().string());
-                auto archive = plot_options<ArchivePlotOptions>(*opts);
+                auto archive = plot_options<report::ArchivePlotOptions>(*opts);
                 archive.title.clear();
-                plot_archive(dirs.front(), heatmap, archive);
+                report::plot_archive(dirs.front(), heatmap, archive);
                 if (!ctx.quiet) std::cerr << "wrote " << heatmap.string() << '\n';
             }
             return 0;
@@ -215,4 +215,4 @@ void add_plot_command(Command& app, CommandContext& ctx) {
     });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

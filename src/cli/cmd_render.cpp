@@ -10,11 +10,11 @@
 #include "cic/core/error.hpp"
 #include "cic/io/povray.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 void add_render_command(Command& app, CommandContext& ctx) {
     struct Options {
-        ReplaySource source;
+        report::ReplaySource source;
         std::string out;
         double fps = 25.0;
         bool no_trail = false;
@@ -35,8 +35,8 @@ void add_render_command(Command& app, CommandContext& ctx) {
         run_guarded(ctx, "render", [&] {
             if (opts->camera != "follow" && opts->camera != "fixed")
                 throw InputError("--camera takes follow or fixed; got '" + opts->camera + "'");
-            const auto items = load_replay(opts->source, 1, opts->fps, false);
-            const ReplayItem& item = items.at(0);
+            const auto items = report::load_replay(opts->source, 1, opts->fps, false);
+            const report::ReplayItem& item = items.at(0);
             io::PovrayOptions pov;
             pov.centre_body = item.centre_body;
             pov.title = item.label;
@@ -52,4 +52,4 @@ void add_render_command(Command& app, CommandContext& ctx) {
     });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

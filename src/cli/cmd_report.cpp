@@ -20,7 +20,7 @@
 #include "cic/study/compare_table.hpp"
 #include "cic/study/html_report.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -39,7 +39,7 @@ std::string strip_by_viewer(const fs::path& run, const std::vector<double>& time
     for (double t : times) at += fmt::format("{}{:.3f}", at.empty() ? "" : ",", t);
     const fs::path log = png.string() + ".log";
     const std::string cmd = fmt::format("{} --quiet view {} --screenshot {} --strip {} --width 320 --height 240 > {} 2>&1",
-                                        shell_quote(self_path()), shell_quote(run.string()), shell_quote(png.string()),
+                                        shell_quote(run::self_path()), shell_quote(run.string()), shell_quote(png.string()),
                                         at, shell_quote(log.string()));
     const int rc = std::system(cmd.c_str());
     if (rc == 0) return {};
@@ -79,16 +79,16 @@ void add_report_command(Command& app, CommandContext& ctx) {
                 throw InputError("--out must name an .html file", opts->out);
             if (!out.parent_path().empty() && !fs::is_directory(out.parent_path()))
                 throw InputError("output folder does not exist", out.parent_path().string());
-            if (std::find(kCompareMetrics.begin(), kCompareMetrics.end(), opts->metric) == kCompareMetrics.end())
-                throw InputError(fmt::format("--metric {}: not one of {}", opts->metric, fmt::join(kCompareMetrics, ", ")));
-            ReportOptions report;
+            if (std::find(study::kCompareMetrics.begin(), study::kCompareMetrics.end(), opts->metric) == study::kCompareMetrics.end())
+                throw InputError(fmt::format("--metric {}: not one of {}", opts->metric, fmt::join(study::kCompareMetrics, ", ")));
+            study::ReportOptions report;
             report.metric = opts->metric;
             report.include_unfinished = opts->include_unfinished;
 #ifdef CIC_HAVE_VIEWER
             if (!opts->no_strips) report.strip = strip_by_viewer;
 #endif
             if (opts->no_strips) report.no_strip_reason = "none were asked for (--no-strips)";
-            const std::string html = report_html(opts->input, report);
+            const std::string html = study::report_html(opts->input, report);
             io::xml::write_file_atomically(out, html);
             if (!ctx.quiet) std::cerr << fmt::format("wrote {} ({} KB)\n", out.string(), html.size() / 1024);
             return 0;
@@ -96,4 +96,4 @@ void add_report_command(Command& app, CommandContext& ctx) {
     });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

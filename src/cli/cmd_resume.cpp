@@ -6,7 +6,7 @@
 #include "cic/cli/commands.hpp"
 #include "cic/run/resume.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 void add_resume_command(Command& app, CommandContext& ctx) {
     struct Options {
@@ -25,7 +25,7 @@ void add_resume_command(Command& app, CommandContext& ctx) {
                                     "as Experiment.workers");
     cmd.on_run([opts, &ctx, more, until] {
         run_guarded(ctx, "resume", [&] {
-            ResumeRequest r;
+            run::ResumeRequest r;
             r.run_dir = opts->run;
             if (more.count()) r.generations = opts->generations;
             if (until.count()) r.until = opts->until;
@@ -33,9 +33,9 @@ void add_resume_command(Command& app, CommandContext& ctx) {
             r.command_line = ctx.command_line;
             r.quiet = ctx.quiet;
             r.verbose = ctx.verbose;
-            return resume_run(r);
+            return run::resume_run(r);
         });
     });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

@@ -9,7 +9,7 @@
 #include "cic/io/xml.hpp"
 #include "cic/sim/centipede.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 void add_robot_command(Command& app, CommandContext& ctx) {
     struct Options {
@@ -46,4 +46,4 @@ void add_robot_command(Command& app, CommandContext& ctx) {
     });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

@@ -11,7 +11,7 @@
 #include "cic/io/settings_table.hpp"
 #include "cic/io/xml.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 namespace {
 
 // One Markdown table row per key (the key table of docs/settings.md is made from this).
@@ -60,8 +60,8 @@ void add_settings_command(Command& app, CommandContext& ctx) {
             } else {
                 // Found as --settings finds it (the installed settings too), then
                 // the same checks as a run: robot, dataset, population to resume from.
-                const std::string file = find_settings_file(opts->file).string();
-                auto settings = prepare_run(io::load_settings(file, opts->sets)).settings;
+                const std::string file = run::find_settings_file(opts->file).string();
+                auto settings = run::prepare_run(io::load_settings(file, opts->sets)).settings;
                 if (!opts->validate_xsd.empty()) {
                     auto problems = io::xml::Document::load_file(file).validate(opts->validate_xsd);
                     if (!problems.empty()) throw InputError("schema: " + problems.front());
@@ -73,4 +73,4 @@ void add_settings_command(Command& app, CommandContext& ctx) {
     });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

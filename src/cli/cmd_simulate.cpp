@@ -16,7 +16,7 @@
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/layout.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 namespace {
 
@@ -32,8 +32,8 @@ struct SimulateOptions {
 // "constant" = hold 0; "sine" = sine:0.8,0.5; anything else as parse_controller_spec.
 std::unique_ptr<sim::Controller> make_controller(const std::string& spec) {
     if (spec == "constant") return std::make_unique<sim::ConstantController>(0.0);
-    if (spec == "sine") return parse_controller_spec("sine:0.8,0.5");
-    return parse_controller_spec(spec);
+    if (spec == "sine") return report::parse_controller_spec("sine:0.8,0.5");
+    return report::parse_controller_spec(spec);
 }
 
 int simulate(const SimulateOptions& o) {
@@ -97,4 +97,4 @@ void add_simulate_command(Command& app, CommandContext& ctx) {
     cmd.on_run([o, &ctx] { ctx.exit_code = simulate(*o); });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

@@ -14,7 +14,7 @@
 #include "cic/study/sweep.hpp"
 #include "cic/study/sweep_runner.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -29,7 +29,7 @@ struct SweepOptions {
     bool slurm = false;
     bool index_only = false;
     bool status = false;
-    SlurmOptions cluster;               // --slurm-partition, ...
+    study::SlurmOptions cluster;        // --slurm-partition, ...
     std::vector<std::string> configs;   // --config: only these configurations (empty: all)
 };
 
@@ -64,7 +64,7 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
         .range(0L, 100000000L);
     cmd.on_run([o, &ctx] {
         run_guarded(ctx, "sweep", [&] {
-            const SweepPlan plan = read_sweep_file(o->file, o->output);
+            const study::SweepPlan plan = study::read_sweep_file(o->file, o->output);
             const int workers = o->workers > 0 ? o->workers : std::max(1, hardware_threads() / o->jobs);
             if (o->task >= 0) {
                 if (!o->configs.empty())
@@ -74,17 +74,17 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
                 if (static_cast<std::size_t>(o->task) >= tasks.size())
                     throw InputError(fmt::format("--task {}: the sweep has tasks 0..{}", o->task, tasks.size() - 1),
                                      plan.file.string());
-                return run_task(plan, tasks[static_cast<std::size_t>(o->task)], workers, ctx.quiet, self_exec_path());
+                return study::run_task(plan, tasks[static_cast<std::size_t>(o->task)], workers, ctx.quiet, run::self_exec_path());
             }
-            const std::vector<SweepTask> tasks = selected_tasks(plan, o->configs);
+            const std::vector<study::SweepTask> tasks = study::selected_tasks(plan, o->configs);
             const bool cluster_options = !o->cluster.partition.empty() || !o->cluster.time.empty() ||
                                          !o->cluster.mem.empty() || !o->cluster.account.empty() ||
                                          !o->cluster.extra.empty();
             if (cluster_options && !o->slurm)
                 throw InputError("--slurm-partition, --slurm-time, --slurm-mem, --slurm-account and --sbatch go with "
                                  "--slurm");
-            check_slurm_options(o->cluster);
-            if (const auto outside = runs_outside_the_plan(plan); !outside.empty()) {
+            study::check_slurm_options(o->cluster);
+            if (const auto outside = study::runs_outside_the_plan(plan); !outside.empty()) {
                 // Still on disk, but no task of the sweep file now: index.csv and export leave them out.
                 std::string list;
                 for (std::size_t i = 0; i < outside.size() && i < 5; ++i) list += (i ? ", " : "") + outside[i].string();
@@ -95,24 +95,24 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
                                          outside.size(), outside.size() == 1 ? "" : "s", outside.size() == 1 ? "s" : "",
                                          plan.file.string(), outside.size() == 1 ? "it" : "them", list);
             }
-            if (o->status) return print_status(plan, tasks, o->jobs);
-            check_every_configuration(plan);
-            if (o->dry_run) return dry_run(plan, tasks, workers);
+            if (o->status) return study::print_status(plan, tasks, o->jobs);
+            study::check_every_configuration(plan);
+            if (o->dry_run) return study::dry_run(plan, tasks, workers);
             if (o->index_only) {   // for summaries: the runs as they are, nothing run
                 fs::create_directories(plan.study);
-                link_to_store(plan, StoreLinks::StoredRunsOnly);
-                write_index(plan);
+                study::link_to_store(plan, study::StoreLinks::StoredRunsOnly);
+                study::write_index(plan);
                 return 0;
             }
-            refuse_mismatched_runs(plan);   // before anything of the study is written
+            study::refuse_mismatched_runs(plan);   // before anything of the study is written
             fs::create_directories(plan.study);
-            link_to_store(plan);
+            study::link_to_store(plan);
             io::xml::write_file_atomically(plan.study / "sweep.xml", io::xml::Document::load_file(plan.file).to_string());
-            if (o->slurm) return write_slurm_script(plan, tasks, o->jobs, workers, o->cluster);
-            write_index(plan);
-            return run_locally(plan, tasks, o->jobs, workers, ctx.quiet);
+            if (o->slurm) return study::write_slurm_script(plan, tasks, o->jobs, workers, o->cluster);
+            study::write_index(plan);
+            return study::run_locally(plan, tasks, o->jobs, workers, ctx.quiet);
         });
     });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

@@ -10,11 +10,11 @@
 #include "cic/cli/replay_options.hpp"
 #include "cic/report/trace_csv.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 void add_trace_command(Command& app, CommandContext& ctx) {
     struct Options {
-        ReplaySource source;
+        report::ReplaySource source;
         std::string out = "trace.csv";
         std::string plot;
     };
@@ -27,21 +27,21 @@ void add_trace_command(Command& app, CommandContext& ctx) {
     cmd.option("--plot", opts->plot, "also draw it into this .svg or .png (like cic plot --trace)");
     cmd.on_run([opts, &ctx] {
         run_guarded(ctx, "trace", [&] {
-            const auto items = load_replay(opts->source, 1, 0.0, true);
-            const ReplayItem& item = items.at(0);
+            const auto items = report::load_replay(opts->source, 1, 0.0, true);
+            const report::ReplayItem& item = items.at(0);
             if (item.trace.empty()) throw std::runtime_error("the replay recorded no trace rows");
             // Without raw outputs (a controller that does not report them) the commands stand in.
             std::vector<std::vector<double>> raw = item.raw_outputs;
             if (raw.empty())
                 for (const auto& row : item.trace) raw.push_back(row.desired);
-            write_trace_csv(opts->out, make_trace(item.trace, raw), joint_names_of(item));
+            report::write_trace_csv(opts->out, report::make_trace(item.trace, raw), report::joint_names_of(item));
             if (!ctx.quiet)
                 std::cerr << fmt::format("{}: fitness {:.6g}; wrote {} rows to {}\n", item.label,
                                          item.replayed_fitness, item.trace.size(), opts->out);
             if (!opts->plot.empty()) {
-                TracePlotOptions plot;
+                report::TracePlotOptions plot;
                 plot.title = item.label;
-                plot_trace(opts->out, opts->plot, plot);
+                report::plot_trace(opts->out, opts->plot, plot);
                 if (!ctx.quiet) std::cerr << "plotted " << opts->plot << '\n';
             }
             return 0;
@@ -49,4 +49,4 @@ void add_trace_command(Command& app, CommandContext& ctx) {
     });
 }
 
-} // namespace cic::app
+} // namespace cic::cli

@@ -19,7 +19,7 @@
 #include "cic/cli/replay_options.hpp"
 #include "cic/viz/viewer.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 namespace {
 
 // Screenshots need an X server: without one, run this same command again inside
@@ -31,7 +31,7 @@ void reexec_under_xvfb() {
     std::vector<std::string> args;
     for (std::string arg; std::getline(in, arg, '\0');) args.push_back(arg);
     if (args.empty()) return;
-    args[0] = self_path();   // this binary's file: under xvfb-run, /proc/self/exe would be its shell
+    args[0] = run::self_path();   // this binary's file: under xvfb-run, /proc/self/exe would be its shell
     std::vector<std::string> cmd = {"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
     cmd.insert(cmd.end(), args.begin(), args.end());
     std::vector<char*> argv;
@@ -43,7 +43,7 @@ void reexec_under_xvfb() {
     execvp("xvfb-run", argv.data());   // returns only on failure
 }
 
-viz::ViewEntry to_entry(ReplayItem& item) {
+viz::ViewEntry to_entry(report::ReplayItem& item) {
     viz::ViewEntry e;
     // The HUD shows "generation G | individual I", or the label alone (a preset
     // replay, or an archive's elite: "cell I,J,... (N), batch B").
@@ -61,7 +61,7 @@ viz::ViewEntry to_entry(ReplayItem& item) {
 
 void add_view_command(Command& app, CommandContext& ctx) {
     struct Options {
-        ReplaySource source;
+        report::ReplaySource source;
         int count = 5;
         std::string screenshot;
         double at = 5.0;
@@ -123,7 +123,7 @@ void add_view_command(Command& app, CommandContext& ctx) {
                 throw std::runtime_error("no X display (DISPLAY is unset or empty): the window cannot open; "
                                          "use --screenshot FILE.png to render offscreen");
             const int count = opts->screenshot.empty() ? opts->count : 1;
-            auto items = load_replay(opts->source, count, opts->fps, false);
+            auto items = report::load_replay(opts->source, count, opts->fps, false);
             std::vector<viz::ViewEntry> entries;
             for (auto& item : items) {
                 if (!ctx.quiet) {
@@ -162,6 +162,6 @@ void add_view_command(Command& app, CommandContext& ctx) {
     });
 }
 
-} // namespace cic::app
+} // namespace cic::cli
 
 #endif  // CIC_HAVE_VIEWER

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-namespace cic::app {
+namespace cic::cli {
 
 Option& Option::required() {
     option_->required();
@@ -66,4 +66,4 @@ void Command::on_run(std::function<void()> action) { app_->callback(std::move(ac
 
 void Command::hide() { app_->group(""); }
 
-} // namespace cic::app
+} // namespace cic::cli

@@ -3,7 +3,7 @@
 #include "docs.hpp"
 
 
-namespace cic::app::docs {
+namespace cic::cli::docs {
 
 const char* const kCompletionFunctions = R"BASH(# COMPREPLY from the words in $1 that start with $cur. When $cur holds
 # an '=' (a word break for bash), only the part after it is replaced.
@@ -99,4 +99,4 @@ _cic() {
 complete -F _cic cic
 )BASH";
 
-} // namespace cic::app::docs
+} // namespace cic::cli::docs

@@ -6,7 +6,7 @@
 
 #include "cic/io/settings_table.hpp"
 
-namespace cic::app::docs {
+namespace cic::cli::docs {
 
 std::string join(const std::vector<std::string>& items) {
     std::string s;
@@ -95,4 +95,4 @@ std::string completion_script(CLI::App& app) {
     return b.str();
 }
 
-} // namespace cic::app::docs
+} // namespace cic::cli::docs

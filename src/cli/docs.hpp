@@ -6,7 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
-namespace cic::app::docs {
+namespace cic::cli::docs {
 
 // ---- what the CLI11 objects say (cli_introspection.cpp) ----
 bool hidden(const CLI::App* sub);
@@ -35,4 +35,4 @@ std::string man_page(CLI::App& app);
 std::string completion_script(CLI::App& app);
 extern const char* const kCompletionFunctions;
 
-} // namespace cic::app::docs
+} // namespace cic::cli::docs

@@ -7,7 +7,7 @@
 
 #include "cic/cli/commands.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 void add_help_command(CLI::App& app, CommandContext& ctx);
 
@@ -20,4 +20,4 @@ std::string near_misses(const CLI::App& app, int argc, char** argv);
 // --settings left out): the one line that says how to run or check it; else "".
 std::string settings_file_hint(const CLI::App& app, int argc, char** argv);
 
-} // namespace cic::app
+} // namespace cic::cli

@@ -6,7 +6,7 @@
 
 #include "cic/io/settings_table.hpp"
 
-namespace cic::app::docs {
+namespace cic::cli::docs {
 
 std::string man_page(CLI::App& app) {
     std::ostringstream m;
@@ -100,4 +100,4 @@ std::string man_page(CLI::App& app) {
     return m.str();
 }
 
-} // namespace cic::app::docs
+} // namespace cic::cli::docs

@@ -1,8 +1,8 @@
 #include "cic/cli/replay_options.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
-void add_replay_options(Command& command, ReplaySource& source) {
+void add_replay_options(Command& command, report::ReplaySource& source) {
     command.option("input", source.input, "run folder or population XML file to replay");
     command.option("--individual", source.individual, "best, or an individual's id").show_default();
     command.option("--cell", source.cell,
@@ -19,4 +19,4 @@ void add_replay_options(Command& command, ReplaySource& source) {
                        "Simulator.selfCollision=0");
 }
 
-} // namespace cic::app
+} // namespace cic::cli

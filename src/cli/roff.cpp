@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-namespace cic::app::docs {
+namespace cic::cli::docs {
 
 // Escapes text for roff: backslashes, hyphens (as \- so options copy and paste),
 // non-ASCII characters (as \[uXXXX]), and a leading . or ' (read as a request).
@@ -98,4 +98,4 @@ std::string short_description(const CLI::App& app) {
     return d;
 }
 
-} // namespace cic::app::docs
+} // namespace cic::cli::docs

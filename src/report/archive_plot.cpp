@@ -13,7 +13,7 @@
 #include "cic/sim/evaluate.hpp"
 #include "gnuplot_support.hpp"
 
-namespace cic::app {
+namespace cic::report {
 
 namespace fs = std::filesystem;
 
@@ -191,4 +191,4 @@ void plot_archive(const fs::path& input, const fs::path& out_file, const Archive
     detail::render(options.gnuplot, scratch.path(), script, out_file);
 }
 
-} // namespace cic::app
+} // namespace cic::report

@@ -19,7 +19,7 @@
 #include "cic/report/replay.hpp"
 #include "cic/sim/evaluate.hpp"
 
-namespace cic::app {
+namespace cic::report {
 namespace {
 
 namespace fs = std::filesystem;
@@ -161,4 +161,4 @@ std::string export_individuals(const ExportRequest& request) {
     return csv;
 }
 
-} // namespace cic::app
+} // namespace cic::report

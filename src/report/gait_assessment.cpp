@@ -9,7 +9,7 @@
 #include "cic/experiments/hypergp/oscillation.hpp"
 #include "cic/sim/recording_sampler.hpp"
 
-namespace cic::app {
+namespace cic::report {
 GaitAssessment assess_gait(const ReplayItem& item, double shaking_above_hz) {
     if (!(shaking_above_hz > 0)) throw std::invalid_argument("assess_gait: the shaking bound must be > 0 Hz");
     if (item.trace.size() < 2) throw std::invalid_argument("assess_gait: the replay has fewer than 2 trace rows");
@@ -53,4 +53,4 @@ GaitAssessment assess_gait(const ReplayItem& item, double shaking_above_hz) {
     return a;
 }
 
-} // namespace cic::app
+} // namespace cic::report

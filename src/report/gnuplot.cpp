@@ -18,7 +18,7 @@
 #include "cic/report/plot.hpp"
 #include "gnuplot_support.hpp"
 
-namespace cic::app {
+namespace cic::report {
 
 namespace detail {
 
@@ -140,4 +140,4 @@ void run_gnuplot(const std::string& gnuplot, const std::filesystem::path& script
                                          script_file.string(), err.str()));
 }
 
-} // namespace cic::app
+} // namespace cic::report

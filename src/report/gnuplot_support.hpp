@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-namespace cic::app::detail {
+namespace cic::report::detail {
 
 // A scratch folder for the script and data files, removed afterwards.
 class ScratchDir {
@@ -33,4 +33,4 @@ void check_output_folder(const std::filesystem::path& out_file);
 void render(const std::string& gnuplot, const std::filesystem::path& scratch, const std::string& script,
             const std::filesystem::path& out_file);
 
-} // namespace cic::app::detail
+} // namespace cic::report::detail

@@ -10,7 +10,7 @@
 #include "cic/core/error.hpp"
 #include "gnuplot_support.hpp"
 
-namespace cic::app {
+namespace cic::report {
 
 namespace fs = std::filesystem;
 
@@ -145,4 +145,4 @@ void plot_paths(const std::vector<CentrePath>& paths, const fs::path& out_file, 
     detail::render(options.gnuplot, scratch.path(), script, out_file);
 }
 
-} // namespace cic::app
+} // namespace cic::report

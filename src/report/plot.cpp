@@ -17,7 +17,7 @@
 #include "gnuplot_support.hpp"
 #include "cic/core/error.hpp"
 
-namespace cic::app {
+namespace cic::report {
 namespace {
 
 using detail::check_output_folder;
@@ -472,4 +472,4 @@ void plot_trace(const fs::path& trace_csv, const fs::path& out_file, const Trace
     render(options.gnuplot, scratch.path(), script, out_file);
 }
 
-} // namespace cic::app
+} // namespace cic::report

@@ -16,7 +16,7 @@
 #include "cic/report/statistics.hpp"
 #include "cic/core/error.hpp"
 
-namespace cic::app {
+namespace cic::report {
 namespace {
 
 std::vector<std::string> split_csv(const std::string& line) {
@@ -434,4 +434,4 @@ std::vector<GenerationSummary> summarise(const std::vector<std::vector<StatsRow>
     return out;
 }
 
-} // namespace cic::app
+} // namespace cic::report

@@ -15,7 +15,7 @@
 #include "cic/sim/layout.hpp"
 #include "cic/sim/robot.hpp"
 
-namespace cic::app {
+namespace cic::report {
 namespace {
 
 namespace fs = std::filesystem;
@@ -150,4 +150,4 @@ std::vector<ReplayItem> load_replay(const ReplaySource& source, int count, doubl
     return {replay_preset(preset, fps, trace)};
 }
 
-} // namespace cic::app
+} // namespace cic::report

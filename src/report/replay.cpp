@@ -24,7 +24,7 @@
 #include "cic/experiments/hypergp/model.hpp"
 #include "cic/experiments/registry.hpp"
 
-namespace cic::app {
+namespace cic::report {
 namespace fs = std::filesystem;
 
 namespace {
@@ -314,4 +314,4 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
     return items;
 }
 
-} // namespace cic::app
+} // namespace cic::report

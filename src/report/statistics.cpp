@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace cic::app::stats {
+namespace cic::report::stats {
 namespace {
 
 void check_sample(std::span<const double> sample, const char* what) {
@@ -241,4 +241,4 @@ std::vector<double> holm_adjust(std::span<const double> p_values) {
     return adjusted;
 }
 
-} // namespace cic::app::stats
+} // namespace cic::report::stats

@@ -9,7 +9,7 @@
 
 #include "cic/core/error.hpp"
 
-namespace cic::app {
+namespace cic::report {
 namespace {
 
 bool valid_name(const std::string& s) {
@@ -116,4 +116,4 @@ TraceTable read_trace_csv(const std::filesystem::path& path) {
     return table;
 }
 
-} // namespace cic::app
+} // namespace cic::report

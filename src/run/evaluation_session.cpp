@@ -29,7 +29,7 @@
 #include "cic/tree/primitives.hpp"
 #include "cic/tree/tree.hpp"
 
-namespace cic::app {
+namespace cic::run {
 namespace fs = std::filesystem;
 
 namespace {
@@ -304,4 +304,4 @@ RunBest read_run_best(const fs::path& run_dir) {
     return best;
 }
 
-} // namespace cic::app
+} // namespace cic::run

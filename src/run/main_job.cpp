@@ -13,7 +13,7 @@
 #include "cic/run/run_folder.hpp"
 #include "cic/run/self_path.hpp"
 
-namespace cic::app {
+namespace cic::run {
 namespace {
 
 namespace fs = std::filesystem;
@@ -99,4 +99,4 @@ int run_main_job(const MainJob& o) {
     return rc;
 }
 
-} // namespace cic::app
+} // namespace cic::run

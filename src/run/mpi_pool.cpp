@@ -20,7 +20,7 @@
 #include "cic/io/settings_io.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 
-namespace cic::app {
+namespace cic::run {
 namespace {
 
 constexpr int kTagSettings = 1;
@@ -195,6 +195,6 @@ std::vector<JobResult> MpiPool::run(const std::vector<std::string>& jobs) {
     return results;
 }
 
-} // namespace cic::app
+} // namespace cic::run
 
 #endif // CIC_HAVE_MPI

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <iostream>
 
-namespace cic::app {
+namespace cic::run {
 
 std::string format_duration(double seconds) {
     if (!std::isfinite(seconds) || seconds < 0) return "?";
@@ -80,4 +80,4 @@ void ProgressPrinter::finish() {
     line_open_ = false;
 }
 
-} // namespace cic::app
+} // namespace cic::run

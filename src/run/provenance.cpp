@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-namespace cic::app {
+namespace cic::run {
 namespace {
 
 constexpr std::string_view kCommitLine = "commit: ";
@@ -64,4 +64,4 @@ std::string recorded_commit(const std::filesystem::path& run_dir) {
     return found;
 }
 
-} // namespace cic::app
+} // namespace cic::run

@@ -18,7 +18,7 @@
 #include "cic/run/self_path.hpp"
 #include "cic/run/settings_diff.hpp"
 
-namespace cic::app {
+namespace cic::run {
 namespace {
 
 namespace fs = std::filesystem;
@@ -125,4 +125,4 @@ int resume_run(const ResumeRequest& r) {
     return run_experiment(std::move(prepared), opt);
 }
 
-} // namespace cic::app
+} // namespace cic::run

@@ -11,7 +11,7 @@
 #include "cic/search/support.hpp"
 #include "run_support.hpp"
 
-namespace cic::app {
+namespace cic::run {
 
 using detail::finish_run;
 using detail::make_context;
@@ -78,4 +78,4 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
     return 0;
 }
 
-} // namespace cic::app
+} // namespace cic::run

@@ -12,7 +12,7 @@
 
 #include "cic/core/error.hpp"
 
-namespace cic::app {
+namespace cic::run {
 
 namespace fs = std::filesystem;
 
@@ -86,4 +86,4 @@ fs::path create_run_folder(const fs::path& output_dir, const std::string& name) 
     }
 }
 
-} // namespace cic::app
+} // namespace cic::run

@@ -24,7 +24,7 @@
 #include "cic/viz/viewer.hpp"
 #endif
 
-namespace cic::app::detail {
+namespace cic::run::detail {
 namespace {
 
 std::atomic<bool> g_interrupted{false};
@@ -161,12 +161,12 @@ void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& consol
     };
     if (s.control.plot)
         attempt("the plot (useMatlabPlot)", [&] {
-            plot_runs({opt.run_dir}, opt.run_dir / "fitness.svg");
+            report::plot_runs({opt.run_dir}, opt.run_dir / "fitness.svg");
             say("plot written to " + (opt.run_dir / "fitness.svg").string());
         });
     if (s.robot.generate_povray && hypergp)
         attempt("POV-Ray export (generatePovrayFiles)", [&] {
-            auto items = replay(opt.run_dir.string(), "best", 1, 25.0, false);
+            auto items = report::replay(opt.run_dir.string(), "best", 1, 25.0, false);
             io::PovrayOptions po;
             po.centre_body = items.front().centre_body;
             po.title = items.front().label;
@@ -178,7 +178,7 @@ void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& consol
 #ifdef CIC_HAVE_VIEWER
         attempt("showing the best (isAutonomousExperiment=0)", [&] {
             std::vector<viz::ViewEntry> entries;
-            for (auto& item : replay(opt.run_dir.string(), "best", 5, 30.0, false))
+            for (auto& item : report::replay(opt.run_dir.string(), "best", 5, 30.0, false))
                 entries.push_back({{item.generation, std::to_string(item.id), item.stored_fitness},
                                    std::move(item.recording), item.centre_body});
             viz::Viewer(std::move(entries)).run();
@@ -190,4 +190,4 @@ void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& consol
 }
 
 
-} // namespace cic::app::detail
+} // namespace cic::run::detail

@@ -19,7 +19,7 @@
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings.hpp"
 
-namespace cic::app::detail {
+namespace cic::run::detail {
 
 // Ctrl-C or a batch scheduler's SIGTERM: the loop finishes the generation under
 // way, writes its checkpoint and leaves; a second signal ends the process at
@@ -86,4 +86,4 @@ void write_checkpoint(const std::filesystem::path& run_dir, int generation, cons
 // (generatePovrayFiles) and showing the best (isAutonomousExperiment = 0).
 void finish_run(const io::Settings& s, const RunOptions& opt, RunConsole& console);
 
-} // namespace cic::app::detail
+} // namespace cic::run::detail

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string_view>
 
-namespace cic::app {
+namespace cic::run {
 
 namespace fs = std::filesystem;
 
@@ -29,4 +29,4 @@ std::string self_exec_path() {
     return fs::exists("/proc/self/exe", ec) ? std::string("/proc/self/exe") : self_path();
 }
 
-} // namespace cic::app
+} // namespace cic::run

@@ -11,7 +11,7 @@
 #include "cic/io/settings_table.hpp"
 #include "cic/search/search.hpp"
 
-namespace cic::app {
+namespace cic::run {
 namespace {
 
 bool same_file_contents(const std::filesystem::path& a, const std::filesystem::path& b) {
@@ -62,4 +62,4 @@ bool extends(const io::Settings& ran, const io::Settings& asked) {
     return true;
 }
 
-} // namespace cic::app
+} // namespace cic::run

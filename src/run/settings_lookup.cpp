@@ -12,7 +12,7 @@
 #include "cic/core/error.hpp"
 #include "cic/io/did_you_mean.hpp"
 
-namespace cic::app {
+namespace cic::run {
 
 namespace fs = std::filesystem;
 
@@ -62,4 +62,4 @@ fs::path find_settings_file(const std::string& given, const fs::path& cic_binary
                      (near.empty() ? "" : "; did you mean " + near + "?"));
 }
 
-} // namespace cic::app
+} // namespace cic::run

@@ -3,7 +3,7 @@
 
 #include <stdexcept>
 
-namespace cic::app {
+namespace cic::run {
 
 std::map<std::string, JobHandler> make_worker_job_kinds(const WorkerContext& context) {
     return experiments::make_job_handlers(context);
@@ -18,4 +18,4 @@ std::string dispatch_worker_job(const std::map<std::string, JobHandler>& kinds, 
     return it->second(body);
 }
 
-} // namespace cic::app
+} // namespace cic::run

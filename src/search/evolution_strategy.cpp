@@ -233,7 +233,7 @@ std::string EvolutionStrategy::summary(const Stop& stop) {
     if (!stop.interrupted) {   // the champion again: what its score is made of
         const auto controller = setup_.controller(best.x);
         const sim::EvalResult r = sim::evaluate(setup_.robot, *controller, setup_.sim);
-        const auto [distance, elevation] = app::eq71_terms(setup_.robot, r);
+        const auto [distance, elevation] = report::eq71_terms(setup_.robot, r);
         text += eq71_line(distance, elevation);
     }
     return text;

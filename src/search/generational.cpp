@@ -196,7 +196,7 @@ std::string Generational::summary(const Stop& stop) {
     std::string text = summary_text();
     if (io::walks_a_robot(services_.settings) && !stop.interrupted) {
         try {   // the best of the final checkpoint, replayed: what its score is made of
-            const auto best = app::replay(services_.run_dir.string(), "best", 1, 0.0, false);
+            const auto best = report::replay(services_.run_dir.string(), "best", 1, 0.0, false);
             text += eq71_line(best.front().distance, best.front().elevation);
         } catch (const std::exception& e) {
             services_.say(std::string("note: the best's replay failed: ") + e.what());

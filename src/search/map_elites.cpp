@@ -241,7 +241,7 @@ public:
                             archive.qd_score(offset), offset);
         if (!stop.interrupted && archive.best()) {
             const sim::EvalResult replayed = form_.replay(archive.best()->solution);
-            const auto [distance, elevation] = app::eq71_terms(*form_.robot, replayed);
+            const auto [distance, elevation] = report::eq71_terms(*form_.robot, replayed);
             text += eq71_line(distance, elevation);
         }
         return text;

@@ -16,10 +16,11 @@
 #include "cic/report/plot.hpp"
 #include "cic/report/statistics.hpp"
 
-namespace cic::app {
+namespace cic::study {
 namespace {
 
 namespace fs = std::filesystem;
+namespace stats = report::stats;
 
 struct ConfigResult {
     std::string config;
@@ -44,7 +45,7 @@ struct PairResult {
     std::string verdict;
 };
 
-std::optional<double> metric_of(const StudyRun& run, const std::string& metric) {
+std::optional<double> metric_of(const report::StudyRun& run, const std::string& metric) {
     if (metric == "final_best") return run.final_best;
     if (metric == "best_ever") return run.best_ever;
     if (metric == "generations") return run.generations;
@@ -103,20 +104,20 @@ std::string md_row(const std::vector<std::string>& cells) {
     return row + "\n";
 }
 
-std::vector<ConfigResult> summarise_configs(const StudyIndex& index, const CompareRequest& o) {
+std::vector<ConfigResult> summarise_configs(const report::StudyIndex& index, const CompareRequest& o) {
     std::vector<ConfigResult> out;
-    for (const auto& group : group_study(index, o.include_unfinished)) {
+    for (const auto& group : report::group_study(index, o.include_unfinished)) {
         ConfigResult c;
         c.config = group.config;
         c.values = group.values;
         c.runs = group.runs.size();
         std::vector<double> gens, evals, walls;
-        for (const StudyRun* run : group.runs) {
+        for (const report::StudyRun* run : group.runs) {
             if (run->status != "done") ++c.not_done;
             if (const auto v = metric_of(*run, o.metric)) c.sample.push_back(*v);
             if (run->wall_seconds) walls.push_back(*run->wall_seconds);
             if (o.has_threshold) {
-                for (const StatsRow& row : read_study_run_stats(index, *run)) {
+                for (const report::StatsRow& row : report::read_study_run_stats(index, *run)) {
                     if (row.best >= o.threshold) {
                         ++c.reached;
                         gens.push_back(row.generation);
@@ -181,7 +182,7 @@ std::vector<PairResult> compare_pairs(const std::vector<ConfigResult>& configs, 
     return pairs;
 }
 
-std::string markdown(const StudyIndex& index, const std::vector<ConfigResult>& configs,
+std::string markdown(const report::StudyIndex& index, const std::vector<ConfigResult>& configs,
                      const std::vector<PairResult>& pairs, const CompareRequest& o) {
     std::size_t used = 0, with_value = 0;
     for (const auto& c : configs) {
@@ -276,7 +277,7 @@ std::string markdown(const StudyIndex& index, const std::vector<ConfigResult>& c
     return md;
 }
 
-std::string configs_csv(const StudyIndex& index, const std::vector<ConfigResult>& configs,
+std::string configs_csv(const report::StudyIndex& index, const std::vector<ConfigResult>& configs,
                         const CompareRequest& o) {
     std::vector<std::string> head = {"config"};
     for (const auto& k : index.varied_keys) head.push_back(csv_cell(k));
@@ -338,7 +339,7 @@ namespace {
 
 // The index and the two result lists every form of the comparison starts from.
 struct Comparison {
-    StudyIndex index;
+    report::StudyIndex index;
     std::vector<ConfigResult> configs;
     std::vector<PairResult> pairs;
 };
@@ -350,7 +351,7 @@ Comparison compare(const std::filesystem::path& study, const CompareRequest& o) 
         throw InputError(fmt::format("--metric {}: not one of {}", o.metric, fmt::join(kCompareMetrics, ", ")));
     if (!fs::is_directory(study))
         throw InputError("not a folder (give a study folder from cic sweep)", study.string());
-    Comparison c{read_study_index(study), {}, {}};
+    Comparison c{report::read_study_index(study), {}, {}};
     if (c.index.runs.empty()) throw InputError("the study index lists no runs", c.index.file.string());
     c.configs = summarise_configs(c.index, o);
     std::size_t used = 0;
@@ -402,4 +403,4 @@ CompareData compare_data(const std::filesystem::path& study, const CompareReques
     return d;
 }
 
-} // namespace cic::app
+} // namespace cic::study

@@ -26,7 +26,7 @@
 #include "cic/run/provenance.hpp"
 #include "cic/study/compare_table.hpp"
 
-namespace cic::app {
+namespace cic::study {
 
 namespace fs = std::filesystem;
 
@@ -151,16 +151,16 @@ std::vector<double> strip_times(double duration) {
 }
 
 std::string walk_section(const Shown& shown, const ReportOptions& options, const Scratch& scratch, std::size_t k,
-                         std::vector<CentrePath>& paths) {
+                         std::vector<report::CentrePath>& paths) {
     std::string html = fmt::format("<h3>{}{}</h3>\n", html_escape(shown.name),
                                    shown.seed.empty() ? "" : html_escape(" (best run: seed " + shown.seed + ")"));
-    std::vector<ReplayItem> items;
+    std::vector<report::ReplayItem> items;
     try {
-        items = replay(shown.run.string(), "best", 1, 10.0, true);
+        items = report::replay(shown.run.string(), "best", 1, 10.0, true);
     } catch (const std::exception& e) {
         return html + note(std::string("no replay: ") + e.what());
     }
-    const ReplayItem& item = items.front();
+    const report::ReplayItem& item = items.front();
     html += "<p>" + html_escape(item.label) + fmt::format(", fitness {:.4f}", item.replayed_fitness) + "</p>\n";
     // The strip.
     const double duration = item.recording.times.empty() ? 0.0 : item.recording.times.back() - item.recording.times.front();
@@ -173,18 +173,18 @@ std::string walk_section(const Shown& shown, const ReportOptions& options, const
                                                : note("No strip: " + (why.empty() ? "the viewer wrote none" : why));
     }
     // The path and the verdict.
-    paths.push_back(centre_path(item, shown.name));
+    paths.push_back(report::centre_path(item, shown.name));
     html += "<div class=\"row\">\n";
     html += figure(scratch / fmt::format("path{}.svg", k), "path of " + shown.name,
                    [&](const fs::path& f) {
-                       PlotOptions o;
+                       report::PlotOptions o;
                        o.gnuplot = options.gnuplot;
                        o.width = 560;
                        o.title = shown.name + ": the centre's path from above";
-                       plot_paths({paths.back()}, f, o);
+                       report::plot_paths({paths.back()}, f, o);
                    });
     try {
-        const GaitAssessment a = assess_gait(item);
+        const report::GaitAssessment a = report::assess_gait(item);
         std::string duty;
         for (std::size_t f = 0; f < a.foot_names.size(); ++f)
             duty += fmt::format("{}{} {:.2f}", f ? ", " : "", a.foot_names[f], a.duty_factors[f]);
@@ -223,7 +223,7 @@ img { max-width: 100%; height: auto; border: 1px solid #eee; }
 } // namespace
 
 std::string report_html(const fs::path& folder, const ReportOptions& options) {
-    const bool study = is_study_folder(folder);
+    const bool study = report::is_study_folder(folder);
     if (!study && !(fs::is_regular_file(folder / "settings.xml") && fs::is_regular_file(folder / "stats.csv")))
         throw InputError("not a run folder (settings.xml and stats.csv) or a study folder (index.csv)", folder.string());
     fs::path p = folder;
@@ -232,11 +232,11 @@ std::string report_html(const fs::path& folder, const ReportOptions& options) {
     Scratch scratch;
 
     std::vector<Shown> shown;
-    std::optional<StudyIndex> index;
+    std::optional<report::StudyIndex> index;
     if (study) {
-        index = read_study_index(folder);
-        for (const StudyGroup& g : group_study(*index, options.include_unfinished))
-            if (const StudyRun* r = best_run_of(g)) shown.push_back({g.config, index->run_path(*r), r->seed});
+        index = report::read_study_index(folder);
+        for (const report::StudyGroup& g : report::group_study(*index, options.include_unfinished))
+            if (const report::StudyRun* r = report::best_run_of(g)) shown.push_back({g.config, index->run_path(*r), r->seed});
         if (shown.empty())
             throw InputError("the study has no done run to report (--include-unfinished also shows the others)",
                              index->file.string());
@@ -250,16 +250,16 @@ std::string report_html(const fs::path& folder, const ReportOptions& options) {
     html += "</head>\n<body>\n";
     html += fmt::format("<h1>cic report: {} ({})</h1>\n", html_escape(name), study ? "study" : "run");
     html += fmt::format("<p>Made by cic {} on {} at {} from <code>{}</code>. One file: every figure is inside it.</p>\n",
-                        html_escape(build_label()), html_escape(host_name()),
-                        html_escape(iso_utc(std::chrono::system_clock::now())),
+                        html_escape(run::build_label()), html_escape(run::host_name()),
+                        html_escape(run::iso_utc(std::chrono::system_clock::now())),
                         html_escape(fs::weakly_canonical(folder).string()));
 
     // Provenance.
     html += "<h2>Provenance</h2>\n";
     if (study) {
         std::set<std::string> commits;
-        for (const StudyRun& r : index->runs) {
-            const std::string c = recorded_commit(index->run_path(r));
+        for (const report::StudyRun& r : index->runs) {
+            const std::string c = run::recorded_commit(index->run_path(r));
             if (!c.empty()) commits.insert(c);
         }
         html += "<p>Commits that made the study's runs: " +
@@ -305,15 +305,15 @@ std::string report_html(const fs::path& folder, const ReportOptions& options) {
     html += "<h2>Curves</h2>\n";
     html += figure(scratch / "curves.svg", "curves", [&](const fs::path& f) {
         if (study) {
-            StudyPlotOptions o;
+            report::StudyPlotOptions o;
             o.gnuplot = options.gnuplot;
             o.include_unfinished = options.include_unfinished;
             o.median = true;
-            plot_study(folder, f, o);
+            report::plot_study(folder, f, o);
         } else {
-            PlotOptions o;
+            report::PlotOptions o;
             o.gnuplot = options.gnuplot;
-            plot_runs({folder}, f, o);
+            report::plot_runs({folder}, f, o);
         }
     });
 
@@ -327,26 +327,26 @@ std::string report_html(const fs::path& folder, const ReportOptions& options) {
         html += "<h2>The best gait of each configuration</h2>\n";
         html += "<p>Frames of the replay with a camera fixed on the world, the centre's path so far on the ground "
                 "(green ring: the start); its path from above; and <code>cic assess</code>'s verdict.</p>\n";
-        std::vector<CentrePath> paths;
+        std::vector<report::CentrePath> paths;
         for (std::size_t k = 0; k < shown.size(); ++k) html += walk_section(shown[k], options, scratch, k, paths);
         if (paths.size() > 1)
             html += "<h3>All paths</h3>\n" + figure(scratch / "paths.svg", "all paths", [&](const fs::path& f) {
-                        PlotOptions o;
+                        report::PlotOptions o;
                         o.gnuplot = options.gnuplot;
-                        plot_paths(paths, f, o);
+                        report::plot_paths(paths, f, o);
                     });
     }
 
     // MAP-Elites archives.
     std::string heatmaps;
     for (std::size_t k = 0; k < shown.size(); ++k) {
-        if (!is_archive_run(shown[k].run)) continue;
+        if (!report::is_archive_run(shown[k].run)) continue;
         heatmaps += "<h3>" + html_escape(shown[k].name) + "</h3>\n" +
                     figure(scratch / fmt::format("archive{}.svg", k), "archive of " + shown[k].name,
                            [&](const fs::path& f) {
-                               ArchivePlotOptions o;
+                               report::ArchivePlotOptions o;
                                o.gnuplot = options.gnuplot;
-                               plot_archive(shown[k].run, f, o);
+                               report::plot_archive(shown[k].run, f, o);
                            });
     }
     if (!heatmaps.empty()) html += "<h2>MAP-Elites archives</h2>\n" + heatmaps;
@@ -355,18 +355,18 @@ std::string report_html(const fs::path& folder, const ReportOptions& options) {
     html += "<h2>Runs</h2>\n";
     std::vector<std::vector<std::string>> rows;
     if (study) {
-        for (const StudyRun& r : index->runs)
+        for (const report::StudyRun& r : index->runs)
             rows.push_back({r.run_dir, r.config, r.seed, r.status, num(r.final_best), num(r.best_ever),
                             num(r.generations), num(r.evaluations), num(r.wall_seconds)});
         html += table({"run", "configuration", "seed", "status", "final best", "best ever", "generations",
                        "evaluations", "wall seconds"},
                       rows);
     } else {
-        const auto stats = read_stats_csv(folder / "stats.csv");
-        const StatsRow& last = stats.back();
+        const auto stats = report::read_stats_csv(folder / "stats.csv");
+        const report::StatsRow& last = stats.back();
         rows.push_back({name, std::to_string(last.generation), num(last.best), num(last.best_so_far),
                         num(last.evaluations), num(last.wall_seconds)});
-        html += table({"run", std::string("last ") + x_axis_name(search_kind_of(folder)), "its best", "best so far",
+        html += table({"run", std::string("last ") + report::x_axis_name(report::search_kind_of(folder)), "its best", "best so far",
                        "evaluations", "wall seconds"},
                       rows);
         const std::string summary = read_bytes(folder / "summary.txt");
@@ -376,4 +376,4 @@ std::string report_html(const fs::path& folder, const ReportOptions& options) {
     return html;
 }
 
-} // namespace cic::app
+} // namespace cic::study

@@ -12,7 +12,7 @@
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
 
-namespace cic::app {
+namespace cic::study {
 namespace {
 
 namespace fs = std::filesystem;
@@ -265,4 +265,4 @@ io::Settings SweepPlan::settings(const SweepTask& task, const std::vector<std::s
     return io::load_settings_text(base_xml, base, all);
 }
 
-} // namespace cic::app
+} // namespace cic::study

@@ -23,7 +23,7 @@
 #include "cic/run/run.hpp"
 #include "cic/run/self_path.hpp"
 
-namespace cic::app {
+namespace cic::study {
 namespace {
 
 namespace fs = std::filesystem;
@@ -36,7 +36,7 @@ extern "C" void on_sweep_signal(int sig) {
 // `program`: self_path() where the command is shown or written down,
 // self_exec_path() where it is run.
 std::vector<std::string> task_argv(const SweepPlan& plan, const SweepTask& t, int workers,
-                                   const std::string& program = self_path()) {
+                                   const std::string& program = run::self_path()) {
     return {program, "--quiet",  "sweep", plan.file.string(), "--task", std::to_string(t.index), "--workers",
             std::to_string(workers), "--output", plan.study.string()};
 }
@@ -67,12 +67,12 @@ void check_every_configuration(const SweepPlan& plan) {
         io::Settings settings;
         try {
             settings = plan.settings(t);
-            prepare_run(settings);
+            run::prepare_run(settings);
         } catch (const InputError& e) {
             throw InputError(fmt::format("configuration {}: {}", config.name, e.what()), plan.file.string(),
                              config.line);
         }
-        settings = result_settings(settings);
+        settings = run::result_settings(settings);
         settings.experiment.seed = 0;
         std::string text;
         for (const auto& k : io::settings_table()) text += k.section + "." + k.key + "=" + k.get(settings) + "\n";
@@ -228,7 +228,7 @@ int run_locally(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int 
     while (next < todo.size() || !running.empty()) {
         while (g_stop_signal == 0 && next < todo.size() && static_cast<int>(running.size()) < jobs) {
             const SweepTask& t = todo[next++];
-            const auto argv = task_argv(plan, t, workers, self_exec_path());
+            const auto argv = task_argv(plan, t, workers, run::self_exec_path());
             std::vector<char*> args;
             for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
             args.push_back(nullptr);
@@ -283,4 +283,4 @@ int run_locally(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int 
     return rc;
 }
 
-} // namespace cic::app
+} // namespace cic::study

@@ -8,7 +8,7 @@
 #include "cic/study/sweep.hpp"
 #include "cic/study/sweep_runner.hpp"
 
-namespace cic::app {
+namespace cic::study {
 namespace {
 
 std::string duration(double seconds) {
@@ -59,4 +59,4 @@ int print_status(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int
     return 0;
 }
 
-} // namespace cic::app
+} // namespace cic::study

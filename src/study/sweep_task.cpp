@@ -27,7 +27,7 @@
 #include "cic/io/settings_table.hpp"
 #include "cic/io/xml.hpp"
 
-namespace cic::app {
+namespace cic::study {
 namespace {
 
 namespace fs = std::filesystem;
@@ -149,8 +149,8 @@ TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
             return st;
         }
         const io::Settings asked = plan.settings(task);
-        st.mismatch = settings_differences(ran, asked, "the sweep");
-        if (!st.mismatch.empty() && !extends(ran, asked)) {
+        st.mismatch = run::settings_differences(ran, asked, "the sweep");
+        if (!st.mismatch.empty() && !run::extends(ran, asked)) {
             st.status = TaskStatus::Mismatched;
             return st;
         }
@@ -234,7 +234,7 @@ void write_index(const SweepPlan& plan) {
         for (const auto& [key, value] : cfg.varied) text += "," + csv_cell(value);
         text += fmt::format(",{},{},{},{},{},{:.3f},{},{}\n", t.seed, to_string(st.status), st.final_best,
                             st.generations, st.evaluations, st.wall_seconds, st.best_ever,
-                            csv_cell(recorded_commit(plan.study / t.run_dir)));
+                            csv_cell(run::recorded_commit(plan.study / t.run_dir)));
     }
     io::xml::write_file_atomically(plan.study / "index.csv", text);
 }
@@ -247,7 +247,7 @@ namespace {
 // out, so that a key added to cic later (whose default keeps the old
 // behaviour) does not change the fingerprint of the runs already stored.
 std::string run_fingerprint(const io::Settings& settings) {
-    const io::Settings s = result_settings(settings);
+    const io::Settings s = run::result_settings(settings);
     const io::Settings defaults;
     std::string text = std::string("cic ") + CIC_VERSION + "\n";
     for (const auto& k : io::settings_table())
@@ -326,7 +326,7 @@ void start_from_a_shorter_stored_run(const SweepPlan& plan, const SweepTask& tas
         } catch (const std::exception&) {
             continue;
         }
-        if (!extends(ran, asked)) continue;
+        if (!run::extends(ran, asked)) continue;
         const std::tuple<int, long, long> budget{ran.control.maximum_iterations, ran.gait.evaluations,
                                                  ran.map_elites.evaluations};
         if (budget > longest_budget) longest_budget = budget, longest = run;
@@ -363,7 +363,7 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
     const bool resume = fs::exists(dir / "population.xml") && fs::exists(dir / "settings.xml");
     if (resume) extra.push_back("Control.populationXmlLoadFrom=" + (dir / "population.xml").string());
 
-    PreparedRun prepared = prepare_run(plan.settings(task, extra));
+    run::PreparedRun prepared = run::prepare_run(plan.settings(task, extra));
     if (resume && prepared.resume) prepared.resume->search_note.clear();   // a task goes on with its own settings, or a raised budget only
     fs::remove(dir / "failed.txt");
     if (!resume)   // a fresh start: clear what a run killed before its first checkpoint left
@@ -378,9 +378,9 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
         const std::string command = fmt::format("cic sweep {} --task {} ({}, seed {})", plan.file.string(), task.index,
                                                 plan.configs[task.config].name, task.seed);
         std::ofstream(dir / "run.log", resume ? std::ios::app : std::ios::trunc)
-            << (resume ? "resumed in place from population.xml\n" : "") << run_log_head(command, std::chrono::system_clock::now());
+            << (resume ? "resumed in place from population.xml\n" : "") << run::run_log_head(command, std::chrono::system_clock::now());
     }
-    RunOptions opt;
+    run::RunOptions opt;
     opt.run_dir = dir;
     opt.quiet = quiet;
     opt.worker_executable = executable;
@@ -388,7 +388,7 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
     opt.resume_command = "cic sweep " + plan.file.string() + " (the task goes on from its checkpoint)";
     int rc = 1;
     try {
-        rc = run_experiment(std::move(prepared), opt);
+        rc = run::run_experiment(std::move(prepared), opt);
     } catch (const std::exception& e) {
         io::xml::write_file_atomically(dir / "failed.txt", std::string(e.what()) + "\n");
         write_index(plan);
@@ -398,4 +398,4 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
     return rc;
 }
 
-} // namespace cic::app
+} // namespace cic::study

@@ -272,13 +272,13 @@ TEST_F(Cli, RunFolderNumbersPastTheHighestAndNeverReuses) {
     fs::create_directories(dir / "o" / "exp-x");
     fs::create_directories(dir / "o" / "other-050");
     std::ofstream(dir / "o" / "exp-009") << "a file, not a run";
-    EXPECT_EQ(cic::app::create_run_folder(dir / "o", "exp"), dir / "o" / "exp-010");
-    EXPECT_EQ(cic::app::create_run_folder(dir / "o", "exp"), dir / "o" / "exp-011");
-    EXPECT_EQ(cic::app::create_run_folder(dir / "o", "new"), dir / "o" / "new-001");
+    EXPECT_EQ(cic::run::create_run_folder(dir / "o", "exp"), dir / "o" / "exp-010");
+    EXPECT_EQ(cic::run::create_run_folder(dir / "o", "exp"), dir / "o" / "exp-011");
+    EXPECT_EQ(cic::run::create_run_folder(dir / "o", "new"), dir / "o" / "new-001");
     cic::io::Settings s;
-    EXPECT_EQ(cic::app::run_name(s), "run");
+    EXPECT_EQ(cic::run::run_name(s), "run");
     s.source_file = "settings/r1_settings.xml";
-    EXPECT_EQ(cic::app::run_name(s), "r1_settings");
+    EXPECT_EQ(cic::run::run_name(s), "r1_settings");
     s.experiment.name = "sweep";
-    EXPECT_EQ(cic::app::run_name(s), "sweep");
+    EXPECT_EQ(cic::run::run_name(s), "sweep");
 }

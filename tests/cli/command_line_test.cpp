@@ -1,4 +1,4 @@
-// app::Command / app::Option, the subcommands' CLI11-free way to declare
+// cli::Command / cli::Option, the subcommands' CLI11-free way to declare
 // options: values, checks, counts and hidden commands, parsed by a real CLI11 app.
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 
 namespace {
 
-using cic::app::Command;
-using cic::app::Option;
+using cic::cli::Command;
+using cic::cli::Option;
 
 struct Parsed {
     int jobs = 1;

@@ -40,7 +40,7 @@ TEST(Export, EveryIndividualOfEverySavedGenerationWithItsTerms) {
     ASSERT_EQ(run_command("export " + r.run.string() + " --terms --out " + (dir / "x.csv").string(), dir / "x.log"), 0)
         << read_text(dir / "x.log");
     const std::string csv = read_text(dir / "x.csv");
-    EXPECT_EQ(csv.substr(0, csv.find('\n') + 1), cic::app::kExportHeader);
+    EXPECT_EQ(csv.substr(0, csv.find('\n') + 1), cic::report::kExportHeader);
     const auto rows = rows_of(csv);
     std::size_t expected = 0;
     for (int g = 0; g < 3; ++g) {

@@ -471,22 +471,22 @@ TEST(SettingsLookup, GivenPathWinsThenInstalledThenSourceTree) {
         ~InFolder() { fs::current_path(old); }
     } in_dir(dir);
     cic::testing::write_text(dir / "mine.xml", "<settings/>");
-    EXPECT_EQ(cic::app::find_settings_file("mine.xml"), fs::path("mine.xml"));
-    EXPECT_EQ(cic::app::find_settings_file((dir / "mine.xml").string()), dir / "mine.xml");
+    EXPECT_EQ(cic::run::find_settings_file("mine.xml"), fs::path("mine.xml"));
+    EXPECT_EQ(cic::run::find_settings_file((dir / "mine.xml").string()), dir / "mine.xml");
     // Not here: the source tree's settings/ (a test binary has no share/cic next to it).
-    EXPECT_EQ(cic::app::find_settings_file("r1_settings.xml"),
+    EXPECT_EQ(cic::run::find_settings_file("r1_settings.xml"),
               fs::canonical(fs::path(CIC_SOURCE_DIR) / "settings/r1_settings.xml"));
-    EXPECT_EQ(cic::app::find_settings_file("robots/r1.xml"),
+    EXPECT_EQ(cic::run::find_settings_file("robots/r1.xml"),
               fs::canonical(fs::path(CIC_SOURCE_DIR) / "settings/robots/r1.xml"));
     try {
-        cic::app::find_settings_file("nowhere.xml");
+        cic::run::find_settings_file("nowhere.xml");
         ADD_FAILURE() << "no InputError";
     } catch (const cic::InputError& e) {
         const std::string what = e.what();
         EXPECT_HAS(what, "nowhere.xml");
         EXPECT_HAS(what, (dir / "nowhere.xml").string());
-        for (const auto& folder : cic::app::settings_search_folders()) EXPECT_HAS(what, folder.string());
+        for (const auto& folder : cic::run::settings_search_folders()) EXPECT_HAS(what, folder.string());
     }
     // An absolute path is never looked up elsewhere.
-    EXPECT_THROW(cic::app::find_settings_file((dir / "r1_settings.xml").string()), cic::InputError);
+    EXPECT_THROW(cic::run::find_settings_file((dir / "r1_settings.xml").string()), cic::InputError);
 }

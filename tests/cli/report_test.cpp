@@ -74,12 +74,12 @@ std::vector<std::string> outside_references(const std::string& html) {
 }
 
 TEST(ReportPieces, Base64AndEscapesFollowTheStandards) {
-    EXPECT_EQ(cic::app::base64(""), "");
-    EXPECT_EQ(cic::app::base64("f"), "Zg==");
-    EXPECT_EQ(cic::app::base64("fo"), "Zm8=");
-    EXPECT_EQ(cic::app::base64("foobar"), "Zm9vYmFy");
-    EXPECT_EQ(cic::app::base64(std::string("\xff\x00\x10", 3)), "/wAQ");
-    EXPECT_EQ(cic::app::html_escape("<a href=\"x\">&'</a>"), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;&lt;/a&gt;");
+    EXPECT_EQ(cic::study::base64(""), "");
+    EXPECT_EQ(cic::study::base64("f"), "Zg==");
+    EXPECT_EQ(cic::study::base64("fo"), "Zm8=");
+    EXPECT_EQ(cic::study::base64("foobar"), "Zm9vYmFy");
+    EXPECT_EQ(cic::study::base64(std::string("\xff\x00\x10", 3)), "/wAQ");
+    EXPECT_EQ(cic::study::html_escape("<a href=\"x\">&'</a>"), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;&lt;/a&gt;");
     EXPECT_EQ(outside_references("<img src=\"data:image/png;base64,AA\"><a href='http://x'>"),
               std::vector<std::string>{"http://x"});
 }

@@ -114,7 +114,7 @@ TEST(HypergpRun, ReplayReproducesTheStoredFitness) {
     const auto dir = temp_dir("hgp-replay");
     const auto r = run_settings(dir, "a", tiny_hypergp_settings(2, 1));
     ASSERT_EQ(r.rc, 0) << r.log;
-    const auto items = app::replay(r.run.string(), "best", 3, 10.0, true);
+    const auto items = report::replay(r.run.string(), "best", 3, 10.0, true);
     ASSERT_EQ(items.size(), 3u);
     for (const auto& it : items) {
         EXPECT_EQ(it.replayed_fitness, it.stored_fitness) << it.label;   // bit for bit
@@ -123,13 +123,13 @@ TEST(HypergpRun, ReplayReproducesTheStoredFitness) {
         EXPECT_EQ(it.raw_outputs.size(), it.trace.size());
     }
     EXPECT_GE(items[0].stored_fitness, items[1].stored_fitness);
-    EXPECT_THROW(app::replay(r.run.string(), "123456789", 1, 10.0, false), InputError);
-    EXPECT_THROW(app::replay((dir / "nope").string(), "best", 1, 10.0, false), InputError);
+    EXPECT_THROW(report::replay(r.run.string(), "123456789", 1, 10.0, false), InputError);
+    EXPECT_THROW(report::replay((dir / "nope").string(), "best", 1, 10.0, false), InputError);
     fs::remove_all(dir);
 }
 
 // The CPG and gait substrates and the evolved clock replay (view, trace, assess
-// and render all go through app::replay) to their stored fitness, bit for bit.
+// and render all go through report::replay) to their stored fitness, bit for bit.
 TEST(HypergpRun, EverySubstrateReplaysItsStoredFitness) {
     const auto dir = temp_dir("hgp-substrates");
     const std::vector<std::string> neural = {
@@ -143,7 +143,7 @@ TEST(HypergpRun, EverySubstrateReplaysItsStoredFitness) {
         text.replace(text.find("</settings>"), 0, "  <Neural>" + neural[i] + "</Neural>\n");
         const auto r = run_settings(dir, "s" + std::to_string(i), text);
         ASSERT_EQ(r.rc, 0) << r.log;
-        const auto items = app::replay(r.run.string(), "best", 2, 10.0, true);
+        const auto items = report::replay(r.run.string(), "best", 2, 10.0, true);
         ASSERT_EQ(items.size(), 2u);
         for (const auto& it : items) {
             EXPECT_EQ(it.replayed_fitness, it.stored_fitness) << neural[i] << ": " << it.label;

@@ -131,8 +131,8 @@ TEST(OffsetHybrid, ResumeIsExactAndReplaysUseTheOffsets) {
     ASSERT_EQ(resumed.rc, 0) << resumed.log;
     EXPECT_EQ(read_text(resumed.run / "population.xml"), read_text(full.run / "population.xml"));
 
-    // view, trace, assess and render replay through app::replay: the stored fitness, bit for bit,
-    const auto items = app::replay(full.run.string(), "best", 3, 0.0, false);
+    // view, trace, assess and render replay through report::replay: the stored fitness, bit for bit,
+    const auto items = report::replay(full.run.string(), "best", 3, 0.0, false);
     for (const auto& it : items) EXPECT_EQ(it.replayed_fitness, it.stored_fitness) << it.label;
     // and without the offsets the same trees walk otherwise.
     const auto pop = io::load_population(full.run / "population.xml");

@@ -199,7 +199,7 @@ TEST(SwitchHybrid, OneRunHandsOverInOneFolderWithTheSameBytesForAnyWorkers) {
     // stats.csv: one row per generation, numbered on across the switch.
     EXPECT_EQ(rows_of(one.run / "stats.csv"), g + 1 + last.generation + 1);
     // view, trace and assess replay the champion to its stored fitness.
-    const auto items = app::replay(one.run.string(), "best", 1, 0.0, false);
+    const auto items = report::replay(one.run.string(), "best", 1, 0.0, false);
     ASSERT_EQ(items.size(), 1u);
     EXPECT_EQ(items[0].replayed_fitness, last.champion.fitness);
     fs::remove_all(dir);

@@ -7,7 +7,7 @@
 #include "cic/report/gait_assessment.hpp"
 #include "cic/report/preset_replay.hpp"
 
-namespace cic::app {
+namespace cic::report {
 namespace {
 
 ReplayItem sine_replay(const std::string& controller) {
@@ -90,4 +90,4 @@ TEST(GaitAssessment, BadArgumentsThrow) {
 }
 
 } // namespace
-} // namespace cic::app
+} // namespace cic::report

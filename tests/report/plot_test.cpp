@@ -22,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace cic;
 using cic::testing::input_error;
-using namespace cic::app;
+using namespace cic::report;
 
 fs::path scratch(const std::string& name) { return cic::testing::temp_dir("plot-" + name); }
 using cic::testing::read_text;

@@ -24,10 +24,10 @@ bool have(const char* tool) { return std::system(("command -v " + std::string(to
 // and a frame is a picture, not one flat colour.
 TEST(Povray, RenderScriptMakesFramesAndAVideo) {
     if (!have("povray") || !have("ffmpeg")) GTEST_SKIP() << "povray or ffmpeg not installed";
-    app::PresetReplay preset;
+    report::PresetReplay preset;
     preset.sim.sample_to = 0.2;
     preset.sim.delayed_start = 0.0;
-    const app::ReplayItem item = app::replay_preset(preset, 10.0, false);
+    const report::ReplayItem item = report::replay_preset(preset, 10.0, false);
     const fs::path dir = fresh_dir("render");
     io::PovrayOptions options;
     options.centre_body = item.centre_body;

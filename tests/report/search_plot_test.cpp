@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace cic;
-using namespace cic::app;
+using namespace cic::report;
 using cic::testing::read_text;
 
 // IPOP CMA-ES on R0 that restarts (as golden_test's), and the golden MAP-Elites gait run.

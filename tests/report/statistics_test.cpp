@@ -22,8 +22,8 @@
 namespace {
 
 namespace fs = std::filesystem;
-using namespace cic::app::stats;
-namespace stats = cic::app::stats;
+using namespace cic::report::stats;
+namespace stats = cic::report::stats;
 
 struct MwuReference {
     const char* name;
@@ -377,18 +377,18 @@ namespace {
 // var = S10/3 + S01/2 = 5/36, so A12 +- z sqrt(5/36).
 TEST(A12Interval, MatchesDeLongsVarianceByHand) {
     const std::vector<double> x = {1, 2, 3}, y = {0, 2.5};
-    const auto half = cic::app::stats::a12_interval(x, y, 0.5);
+    const auto half = cic::report::stats::a12_interval(x, y, 0.5);
     EXPECT_NEAR(half.low, 4.0 / 6 - 0.5 * std::sqrt(5.0 / 36), 1e-12);
     EXPECT_NEAR(half.high, 4.0 / 6 + 0.5 * std::sqrt(5.0 / 36), 1e-12);
-    const auto wide = cic::app::stats::a12_interval(x, y);   // 95%: clamped to [0, 1]
+    const auto wide = cic::report::stats::a12_interval(x, y);   // 95%: clamped to [0, 1]
     EXPECT_EQ(wide.low, 0.0);
     EXPECT_EQ(wide.high, 1.0);
     // Samples that do not overlap: no spread in the shares, an interval of width 0.
-    const auto apart = cic::app::stats::a12_interval(std::vector<double>{5, 6}, std::vector<double>{1, 2});
+    const auto apart = cic::report::stats::a12_interval(std::vector<double>{5, 6}, std::vector<double>{1, 2});
     EXPECT_EQ(apart.low, 1.0);
     EXPECT_EQ(apart.high, 1.0);
-    EXPECT_THROW(cic::app::stats::a12_interval(x, std::vector<double>{}), std::invalid_argument);
-    EXPECT_THROW(cic::app::stats::a12_interval(x, y, 0.0), std::invalid_argument);
+    EXPECT_THROW(cic::report::stats::a12_interval(x, std::vector<double>{}), std::invalid_argument);
+    EXPECT_THROW(cic::report::stats::a12_interval(x, y, 0.0), std::invalid_argument);
 }
 
 } // namespace

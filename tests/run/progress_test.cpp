@@ -8,7 +8,7 @@
 
 namespace {
 
-using namespace cic::app;
+using namespace cic::run;
 
 // Generation g (from 0) finished.
 ProgressLine record(int g) { return {g - 1, 50, 123.4, 2.5 + g, 1.25, 17, 90.0}; }

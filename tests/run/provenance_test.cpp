@@ -13,7 +13,7 @@
 #include "support/run_helpers.hpp"
 
 namespace fs = std::filesystem;
-using namespace cic::app;
+using namespace cic::run;
 using cic::testing::read_text;
 using cic::testing::temp_dir;
 

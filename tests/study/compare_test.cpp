@@ -24,7 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace cic;
-using namespace cic::app;
+using namespace cic::report;
 using cic::testing::read_text;
 using cic::testing::temp_dir;
 using cic::testing::write_text;

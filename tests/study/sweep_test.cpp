@@ -50,7 +50,7 @@ pid_t start_sweep(const fs::path& file, const fs::path& log) {
 TEST(SweepFile, PlansEveryConfigurationAndSeed) {
     const auto dir = temp_dir("sweep-plan");
     write_text(dir / "s.xml", sweep_text(dir / "study"));
-    const app::SweepPlan plan = app::read_sweep_file(dir / "s.xml");
+    const study::SweepPlan plan = study::read_sweep_file(dir / "s.xml");
     ASSERT_EQ(plan.configs.size(), 4u);
     EXPECT_EQ(plan.configs[1].name, "elitism=0+sampleAverageCount=2");
     EXPECT_EQ(plan.varied_keys, (std::vector<std::string>{"GP.elitism", "Neural.sampleAverageCount"}));
@@ -68,7 +68,7 @@ TEST(SweepFile, PlansEveryConfigurationAndSeed) {
     std::string distinct = sweep_text(dir / "study");
     distinct.replace(distinct.find("firstSeed=\"4\""), 13, "firstSeed=\"4\" seeds=\"distinct\"");
     write_text(dir / "d.xml", distinct);
-    EXPECT_EQ(app::read_sweep_file(dir / "d.xml").tasks()[5].seed, 4u + 1 * 3 + 1);
+    EXPECT_EQ(study::read_sweep_file(dir / "d.xml").tasks()[5].seed, 4u + 1 * 3 + 1);
     fs::remove_all(dir);
 }
 
@@ -86,7 +86,7 @@ TEST(SweepFile, RelativePathsAreReadAgainstTheSweepFilesFolder) {
   <repeats count="1" firstSeed="1"/>
 </sweep>
 )");
-    const app::SweepPlan plan = app::read_sweep_file(dir / "studies" / "s.xml");
+    const study::SweepPlan plan = study::read_sweep_file(dir / "studies" / "s.xml");
     const auto folder = fs::absolute(dir / "studies").lexically_normal();
     EXPECT_EQ(plan.common.at(0), "SymbolicRegression.dataFile=" + (folder / "data/a.csv").string());
     ASSERT_EQ(plan.configs.size(), 2u);
@@ -126,10 +126,10 @@ TEST(SweepFile, ShippedStudiesAreValid) {
 // The settings of the seed-1 run of `config` in a sweep file, as the sweep runs
 // it, with the base's seed: what a shipped settings file must equal.
 std::string swept_settings(const fs::path& sweep, const std::string& config) {
-    const app::SweepPlan plan = app::read_sweep_file(sweep);
+    const study::SweepPlan plan = study::read_sweep_file(sweep);
     const auto tasks = plan.tasks();
     const auto task = std::find_if(tasks.begin(), tasks.end(),
-                                   [&](const app::SweepTask& t) { return plan.configs[t.config].name == config; });
+                                   [&](const study::SweepTask& t) { return plan.configs[t.config].name == config; });
     if (task == tasks.end()) throw std::runtime_error(sweep.string() + " has no configuration " + config);
     std::vector<std::string> overrides = plan.overrides(*task);
     if (overrides.empty() || overrides.back().rfind("Experiment.seed=", 0) != 0)
@@ -302,11 +302,11 @@ TEST(Sweep, RunsEveryTaskInItsFolderAndMatchesAPlainRun) {
     EXPECT_EQ(rows, 12u) << index;
     // best_ever is the largest best of the run's generations, as stats.csv writes it.
     {
-        const app::StudyIndex study = app::read_study_index(dir / "study");
+        const report::StudyIndex study = report::read_study_index(dir / "study");
         ASSERT_EQ(study.runs.size(), 12u);
-        for (const app::StudyRun& run : study.runs) {
+        for (const report::StudyRun& run : study.runs) {
             double most = -1e300;
-            for (const auto& row : app::read_stats_csv(dir / "study" / run.run_dir / "stats.csv")) most = std::max(most, row.best);
+            for (const auto& row : report::read_stats_csv(dir / "study" / run.run_dir / "stats.csv")) most = std::max(most, row.best);
             ASSERT_TRUE(run.best_ever.has_value()) << run.run_dir;
             EXPECT_EQ(*run.best_ever, most) << run.run_dir;
             EXPECT_GE(*run.best_ever, *run.final_best);
@@ -661,9 +661,9 @@ TEST(Sweep, ConfigSelectsOneConfigurationsRuns) {
         << read_text(dir / "study" / "slurm.sh");
     ASSERT_EQ(run_command(sweep + one + " --jobs 2", dir / "log"), 0) << read_text(dir / "log");
     EXPECT_NE(read_text(dir / "log").find("3 of 3 runs to do"), std::string::npos) << read_text(dir / "log");
-    const app::StudyIndex study = app::read_study_index(dir / "study");
+    const report::StudyIndex study = report::read_study_index(dir / "study");
     ASSERT_EQ(study.runs.size(), 12u);
-    for (const app::StudyRun& run : study.runs)
+    for (const report::StudyRun& run : study.runs)
         EXPECT_EQ(run.status == "done", run.config == "elitism=1+sampleAverageCount=1") << run.run_dir;
     EXPECT_EQ(run_command(sweep + " --config elitism=2 --dry-run", dir / "bad.log"), 2);
     EXPECT_NE(read_text(dir / "bad.log").find("--config elitism=2: the sweep has no such configuration (it has: "

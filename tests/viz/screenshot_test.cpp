@@ -24,12 +24,12 @@ using namespace cic;
 
 // R1 under a sine gait for 2 s, recorded at 25 fps: the recording the viewer plays.
 viz::ViewEntry sine_entry() {
-    app::PresetReplay preset;
+    report::PresetReplay preset;
     preset.robot_type = 1;
     preset.controller = "sine:0.6,0.5";
     preset.sim.sample_to = 2.0;
     preset.sim.delayed_start = 0.0;
-    app::ReplayItem item = app::replay_preset(preset, 25.0, false);
+    report::ReplayItem item = report::replay_preset(preset, 25.0, false);
     return {{-1, item.label, item.replayed_fitness}, std::move(item.recording), item.centre_body};
 }
 
@@ -88,12 +88,12 @@ TEST(Screenshot, ShowsALitRobotOnTheGround) {
 
 // R1 under a sine gait that walks (about 1.5 m in 15 s), recorded at 25 fps.
 viz::ViewEntry walking_entry() {
-    app::PresetReplay preset;
+    report::PresetReplay preset;
     preset.robot_type = 1;
     preset.controller = "sine:1.1,1,1.571";
     preset.sim.sample_to = 15.0;
     preset.sim.delayed_start = 0.0;
-    app::ReplayItem item = app::replay_preset(preset, 25.0, false);
+    report::ReplayItem item = report::replay_preset(preset, 25.0, false);
     viz::ViewEntry e{{-1, item.label, item.replayed_fitness}, std::move(item.recording), item.centre_body};
     e.preferred_axis = item.preferred_axis;
     return e;

@@ -9,7 +9,7 @@
 #include "cic/cli/commands.hpp"
 #include "cic/core/error.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 inline void run_guarded(CommandContext& ctx, std::string_view command, const std::function<int()>& body) {
     try {
@@ -23,4 +23,4 @@ inline void run_guarded(CommandContext& ctx, std::string_view command, const std
     }
 }
 
-} // namespace cic::app
+} // namespace cic::cli

@@ -12,7 +12,7 @@ class App;
 class Option;
 } // namespace CLI
 
-namespace cic::app {
+namespace cic::cli {
 
 // One option or flag of a command; each call returns the option for chaining.
 class Option {
@@ -51,4 +51,4 @@ private:
     CLI::App* app_;
 };
 
-} // namespace cic::app
+} // namespace cic::cli

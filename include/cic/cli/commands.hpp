@@ -5,7 +5,7 @@
 
 #include "cic/cli/command_line.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 struct CommandContext {
     int exit_code = 0;
@@ -34,4 +34,4 @@ void add_view_command(Command& app, CommandContext& ctx);       // cmd_view.cpp
 // `cic man` and `cic completion`: register last, they document every other subcommand.
 void add_docs_commands(Command& app, CommandContext& ctx);      // cmd_docs.cpp
 
-} // namespace cic::app
+} // namespace cic::cli

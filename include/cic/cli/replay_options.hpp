@@ -4,9 +4,9 @@
 #include "cic/cli/command_line.hpp"
 #include "cic/report/preset_replay.hpp"
 
-namespace cic::app {
+namespace cic::cli {
 
 // Adds the positional input and --individual, --robot, --middle-legs, --controller, --seconds, --set.
-void add_replay_options(Command& command, ReplaySource& source);
+void add_replay_options(Command& command, report::ReplaySource& source);
 
-} // namespace cic::app
+} // namespace cic::cli

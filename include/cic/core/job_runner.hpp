@@ -1,7 +1,7 @@
 #pragma once
 // Something that runs text jobs somewhere else and hands back the replies:
 // worker processes on this machine (ProcessPool) or MPI ranks on several
-// machines (app/MpiPool). Evaluators use this interface, so they do not care
+// machines (run::MpiPool). Evaluators use this interface, so they do not care
 // where a job runs. A job is text; its reply is text (see run/worker_jobs.hpp).
 #include <string>
 #include <vector>

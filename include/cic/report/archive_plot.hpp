@@ -13,7 +13,7 @@
 #include "cic/io/archive_xml.hpp"
 #include "cic/report/plot.hpp"
 
-namespace cic::app {
+namespace cic::report {
 
 struct ArchiveMap {
     std::size_t x_dim = 0, y_dim = 0;   // the dimensions shown (0-based); y_dim == x_dim for a 1-D grid
@@ -56,4 +56,4 @@ struct ArchivePlotOptions : PlotOptions {
 void plot_archive(const std::filesystem::path& run_or_archive, const std::filesystem::path& out_file,
                   const ArchivePlotOptions& options = {});
 
-} // namespace cic::app
+} // namespace cic::report

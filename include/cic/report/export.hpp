@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace cic::app {
+namespace cic::report {
 
 struct ExportRequest {
     std::vector<std::filesystem::path> inputs;   // run folders or study folders
@@ -28,4 +28,4 @@ inline constexpr const char* kExportHeader =
 // folder that is neither a run (settings.xml and populations/) nor a study.
 std::string export_individuals(const ExportRequest& request);
 
-} // namespace cic::app
+} // namespace cic::report

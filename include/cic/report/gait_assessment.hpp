@@ -13,7 +13,7 @@
 
 #include "cic/report/replay.hpp"
 
-namespace cic::app {
+namespace cic::report {
 
 // Walking gaits of these robots step at about 0.3 to 2 Hz (docs/thesis-ch7).
 inline constexpr double kShakingAboveHz = 4.0;
@@ -44,4 +44,4 @@ inline constexpr double kSteppingAboveHz = 0.2;
 // shaking_above_hz <= 0.
 GaitAssessment assess_gait(const ReplayItem& item, double shaking_above_hz = kShakingAboveHz);
 
-} // namespace cic::app
+} // namespace cic::report

@@ -10,7 +10,7 @@
 #include "cic/report/plot.hpp"
 #include "cic/report/replay.hpp"
 
-namespace cic::app {
+namespace cic::report {
 
 struct CentrePath {
     std::string label;
@@ -44,4 +44,4 @@ std::vector<CentrePath> best_paths(const std::vector<std::filesystem::path>& run
 void plot_paths(const std::vector<CentrePath>& paths, const std::filesystem::path& out_file,
                 const PlotOptions& options = {});
 
-} // namespace cic::app
+} // namespace cic::report

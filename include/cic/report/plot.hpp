@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-namespace cic::app {
+namespace cic::report {
 
 // The header of RUN_DIR/stats.csv, in this order (the run writes it, plots read it).
 inline constexpr std::array<std::string_view, 12> kStatsColumns = {
@@ -212,4 +212,4 @@ void plot_trace(const std::filesystem::path& trace_csv, const std::filesystem::p
 // output when it cannot be started or exits non-zero.
 void run_gnuplot(const std::string& gnuplot, const std::filesystem::path& script_file);
 
-} // namespace cic::app
+} // namespace cic::report

@@ -11,7 +11,7 @@
 #include "cic/sim/config.hpp"
 #include "cic/sim/controller.hpp"
 
-namespace cic::app {
+namespace cic::report {
 
 // "sine:A,F[,P]": joint j follows A sin(2 pi F t + j P) (P defaults to pi/2,
 // a travelling wave along the joint order); "constant:ANGLE" holds every joint.
@@ -54,4 +54,4 @@ std::vector<ReplayItem> load_replay(const ReplaySource& source, int count, doubl
 // item.joint_names, or "j0", "j1", ... sized to the trace when those are empty.
 std::vector<std::string> joint_names_of(const ReplayItem& item);
 
-} // namespace cic::app
+} // namespace cic::report

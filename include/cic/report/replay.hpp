@@ -11,7 +11,7 @@
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/recording.hpp"
 
-namespace cic::app {
+namespace cic::report {
 
 struct ReplayItem {
     std::string label;                               // e.g. "generation 12, individual 345"
@@ -55,4 +55,4 @@ void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalRes
 std::vector<ReplayItem> replay(const std::string& run_dir_or_population, const std::string& individual, int count,
                                double fps, bool trace);
 
-} // namespace cic::app
+} // namespace cic::report

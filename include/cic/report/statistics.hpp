@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace cic::app::stats {
+namespace cic::report::stats {
 
 // Quantile q (0..1) of a sample, numpy's default "linear" definition (Hyndman and
 // Fan type 7): sort, h = (n-1)q, then interpolate linearly between the values at
@@ -91,4 +91,4 @@ double smallest_attainable_p(std::size_t na, std::size_t nb);
 // value outside [0, 1]; an empty family gives an empty result.
 std::vector<double> holm_adjust(std::span<const double> p_values);
 
-} // namespace cic::app::stats
+} // namespace cic::report::stats

@@ -9,7 +9,7 @@
 
 #include "cic/sim/recording.hpp"
 
-namespace cic::app {
+namespace cic::report {
 
 struct TraceSample {
     double t = 0.0;
@@ -40,4 +40,4 @@ void write_trace_csv(const std::filesystem::path& path, const std::vector<TraceS
 // file and line for anything else.
 TraceTable read_trace_csv(const std::filesystem::path& path);
 
-} // namespace cic::app
+} // namespace cic::report

@@ -16,7 +16,7 @@
 
 #include "cic/io/settings.hpp"
 
-namespace cic::app {
+namespace cic::run {
 
 // One genotype: a point of the gait family's unit box (gait or CPG vector), or
 // a HyperGP forest as S-expressions (one per tree).
@@ -112,4 +112,4 @@ struct RunBest {
 };
 RunBest read_run_best(const std::filesystem::path& run_dir);
 
-} // namespace cic::app
+} // namespace cic::run

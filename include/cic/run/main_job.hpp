@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace cic::app {
+namespace cic::run {
 
 struct MainJob {
     std::string settings_file;        // as found (cic/run/settings_lookup.hpp)
@@ -21,4 +21,4 @@ struct MainJob {
 // after it). Throws cic::InputError for bad input, before anything is written.
 int run_main_job(const MainJob& job);
 
-} // namespace cic::app
+} // namespace cic::run

@@ -16,7 +16,7 @@
 
 #include "cic/core/job_runner.hpp"
 
-namespace cic::app {
+namespace cic::run {
 
 // What the launcher says in the environment, without touching MPI:
 // the world size from OMPI_COMM_WORLD_SIZE or PMI_SIZE; -1 when only PMIX_RANK
@@ -67,6 +67,6 @@ private:
     int size_ = 1;
 };
 
-} // namespace cic::app
+} // namespace cic::run
 
 #endif // CIC_HAVE_MPI

@@ -9,7 +9,7 @@
 
 #include "cic/search/progress_line.hpp"
 
-namespace cic::app {
+namespace cic::run {
 
 using search::ProgressLine;
 
@@ -54,4 +54,4 @@ private:
     std::string last_line_;   // the live line, redrawn after a message
 };
 
-} // namespace cic::app
+} // namespace cic::run

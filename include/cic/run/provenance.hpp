@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-namespace cic::app {
+namespace cic::run {
 
 struct BuildInfo {
     const char* commit;       // 40 hex digits, or "unknown" (built outside a git checkout)
@@ -46,4 +46,4 @@ std::string summary_tail(std::chrono::system_clock::time_point started, std::chr
 // before cic recorded it, or no run.log); with " (dirty)" when it was.
 std::string recorded_commit(const std::filesystem::path& run_dir);
 
-} // namespace cic::app
+} // namespace cic::run

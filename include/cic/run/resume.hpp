@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace cic::app {
+namespace cic::run {
 
 struct ResumeRequest {
     std::filesystem::path run_dir;
@@ -33,4 +33,4 @@ struct ResumeRequest {
 // starts again in place: the bytes of an unbroken run.
 int resume_run(const ResumeRequest& request);
 
-} // namespace cic::app
+} // namespace cic::run

@@ -10,7 +10,7 @@
 #include "cic/io/settings.hpp"
 #include "cic/search/search.hpp"
 
-namespace cic::app {
+namespace cic::run {
 
 struct RunOptions {
     std::filesystem::path run_dir;   // already created, empty; effective settings are written here
@@ -53,4 +53,4 @@ PreparedRun prepare_run(io::Settings settings);
 // a second signal ends it at once).
 int run_experiment(PreparedRun run, const RunOptions& options);
 
-} // namespace cic::app
+} // namespace cic::run

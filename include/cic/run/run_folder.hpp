@@ -5,7 +5,7 @@
 
 #include "cic/io/settings.hpp"
 
-namespace cic::app {
+namespace cic::run {
 
 // The run name: settings' Experiment.name, else the settings file's stem, else "run".
 std::string run_name(const io::Settings& settings);
@@ -16,4 +16,4 @@ std::string run_name(const io::Settings& settings);
 // cic::InputError naming the folder when OUTPUT cannot be created or written.
 std::filesystem::path create_run_folder(const std::filesystem::path& output_dir, const std::string& name);
 
-} // namespace cic::app
+} // namespace cic::run

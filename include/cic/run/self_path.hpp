@@ -2,7 +2,7 @@
 // The running cic binary, for child processes and for the commands cic writes.
 #include <string>
 
-namespace cic::app {
+namespace cic::run {
 
 // Its file, for messages, dry runs and Slurm scripts: /proc/self/exe resolved
 // (without the " (deleted)" Linux adds once the file was replaced), else
@@ -15,4 +15,4 @@ std::string self_path(const char* argv0 = nullptr);
 // builds; self_path() where /proc is missing.
 std::string self_exec_path();
 
-} // namespace cic::app
+} // namespace cic::run

@@ -7,7 +7,7 @@
 
 #include "cic/io/settings.hpp"
 
-namespace cic::app {
+namespace cic::run {
 
 // The settings less the keys that change no result: the run's name, output
 // folder, worker count and resume file. What a run store fingerprints and what
@@ -31,4 +31,4 @@ bool is_budget_difference(const std::string& difference);
 // goes on from its checkpoint (`cic resume`, an extended sweep).
 bool extends(const io::Settings& ran, const io::Settings& asked);
 
-} // namespace cic::app
+} // namespace cic::run

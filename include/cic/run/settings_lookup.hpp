@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace cic::app {
+namespace cic::run {
 
 // The folders searched, in order, when `given` is not found as given:
 // <exe dir>/../share/cic/settings, then CIC_SOURCE_DIR/settings.
@@ -20,4 +20,4 @@ std::vector<std::filesystem::path> settings_search_folders(const std::filesystem
 // up elsewhere. Throws cic::InputError naming every place it looked.
 std::filesystem::path find_settings_file(const std::string& given, const std::filesystem::path& cic_binary = {});
 
-} // namespace cic::app
+} // namespace cic::run

@@ -9,7 +9,7 @@
 
 #include "cic/experiments/registry.hpp"
 
-namespace cic::app {
+namespace cic::run {
 
 using experiments::JobHandler;
 using experiments::WorkerContext;
@@ -21,4 +21,4 @@ std::map<std::string, JobHandler> make_worker_job_kinds(const WorkerContext& con
 // std::invalid_argument naming it.
 std::string dispatch_worker_job(const std::map<std::string, JobHandler>& kinds, const std::string& job);
 
-} // namespace cic::app
+} // namespace cic::run

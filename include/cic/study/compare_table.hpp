@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace cic::app {
+namespace cic::study {
 
 // The index.csv columns a comparison can summarise and test.
 inline constexpr std::array<std::string_view, 5> kCompareMetrics = {"final_best", "best_ever", "generations",
@@ -56,4 +56,4 @@ CompareData compare_data(const std::filesystem::path& study, const CompareReques
 // bad request, a folder without an index, or no usable run.
 CompareTables compare_study(const std::filesystem::path& study, const CompareRequest& request);
 
-} // namespace cic::app
+} // namespace cic::study

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace cic::app {
+namespace cic::study {
 
 struct ReportOptions {
     std::string gnuplot = "gnuplot";
@@ -35,4 +35,4 @@ std::string base64(const std::string& bytes);
 // Text with &, <, >, " and ' escaped for HTML.
 std::string html_escape(const std::string& text);
 
-} // namespace cic::app
+} // namespace cic::study

@@ -12,7 +12,7 @@
 
 #include "cic/io/settings.hpp"
 
-namespace cic::app {
+namespace cic::study {
 
 // How each repeat's seed follows from <repeats firstSeed="F" count="R">:
 // same: repeat r of every configuration has seed F + r (paired: configurations
@@ -124,4 +124,4 @@ void link_to_store(const SweepPlan& plan, StoreLinks which = StoreLinks::Every);
 int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool quiet,
              const std::string& executable);
 
-} // namespace cic::app
+} // namespace cic::study

@@ -6,7 +6,7 @@
 
 #include "cic/study/sweep.hpp"
 
-namespace cic::app {
+namespace cic::study {
 
 // The tasks of the named configurations (--config), in plan order; every task
 // when `names` is empty. Throws cic::InputError for an unknown name, listing the
@@ -48,4 +48,4 @@ int print_status(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int
 // 130 or 143.
 int run_locally(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int jobs, int workers, bool quiet);
 
-} // namespace cic::app
+} // namespace cic::study
