@@ -144,9 +144,7 @@ class OnePlusLambdaCheckpoint : public search::Checkpoint {
 public:
     State state;
     void check_goes_on(const io::Settings& s) const override {
-        if (state.fitness >= s.control.minimum_fitness)
-            throw InputError(fmt::format("the run reached Control.minimumFitness {} (best {})",
-                                         s.control.minimum_fitness, state.fitness), file);
+        search::refuse_if_reached(state.fitness, s, file);
         const long lambda = io::extra_integer(s, kSection, "lambda");
         const long budget = io::extra_integer(s, kSection, "evaluations");
         if (state.evaluations + lambda > budget)

@@ -28,11 +28,7 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 } // namespace
 
 void GaitCheckpoint::check_goes_on(const io::Settings& s) const {
-    if (gait.champion.fitness >= s.control.minimum_fitness)
-        throw InputError(fmt::format("the run reached Control.minimumFitness {} (best {}); to go on, raise it "
-                                     "with --set Control.minimumFitness=F",
-                                     s.control.minimum_fitness, gait.champion.fitness),
-                         file);
+    refuse_if_reached(gait.champion.fitness, s, file);
     // A Switch-HybrID gait phase counts on from its HyperGP phase's evaluations.
     const long spent = gait.evaluations + (gait.handover ? gait.handover->evaluations : 0);
     const long batch = search->next_batch_size();

@@ -40,12 +40,7 @@ void check_direct_offsets(const io::PopulationFile& loaded, const io::Settings& 
 } // namespace
 
 void PopulationCheckpoint::check_goes_on(const io::Settings& s) const {
-    const double best = population.population.best().fitness;
-    if (best >= s.control.minimum_fitness)
-        throw InputError(fmt::format("the run reached Control.minimumFitness {} (best {}); to go on, raise it "
-                                     "with --set Control.minimumFitness=F",
-                                     s.control.minimum_fitness, best),
-                         file);
+    refuse_if_reached(population.population.best().fitness, s, file);
 }
 
 std::unique_ptr<PopulationCheckpoint> load_population_checkpoint(const io::Settings& s, const std::string& file) {

@@ -63,11 +63,7 @@ class ArchiveCheckpoint : public Checkpoint {
 public:
     io::ArchiveFile archive;
     void check_goes_on(const io::Settings& s) const override {
-        if (const auto* best = archive.best(); best && best->fitness >= s.control.minimum_fitness)
-            throw InputError(fmt::format("the run reached Control.minimumFitness {} (best {}); to go on, raise it "
-                                         "with --set Control.minimumFitness=F",
-                                         s.control.minimum_fitness, best->fitness),
-                             file);
+        if (const auto* best = archive.best()) refuse_if_reached(best->fitness, s, file);
         if (archive.evaluations + s.map_elites.batch > s.map_elites.evaluations)
             throw InputError(fmt::format("the run has spent {} evaluations; a budget of {} adds no batch of {} (ask "
                                          "for --set MapElites.evaluations={} or more)",

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "cic/core/error.hpp"
 #include "cic/io/population_xml.hpp"
 
 namespace cic::search {
@@ -31,6 +32,14 @@ std::string search_note(const std::string& file_digest, const io::Settings& s, c
                        "controller) is these settings', so its fitness values hold; the budget and the search's own "
                        "settings are now these",
                        from, file_digest, now);
+}
+
+void refuse_if_reached(double best, const io::Settings& s, const std::string& file) {
+    if (best >= s.control.minimum_fitness)
+        throw InputError(fmt::format("the run reached Control.minimumFitness {} (best {}); to go on, raise it with "
+                                     "--set Control.minimumFitness=F",
+                                     s.control.minimum_fitness, best),
+                         file);
 }
 
 void say_checkpoint_notes(const Checkpoint& c, const Services& services) {

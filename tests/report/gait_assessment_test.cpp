@@ -42,7 +42,7 @@ TEST(GaitAssessment, HeldPoseHasNoFrequency) {
 
 TEST(GaitAssessment, UpsideDownAtTheEndIsFlipped) {
     ReplayItem item;
-    for (int s = 0; s < 3; ++s) item.trace.push_back({0.1 * s, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0, 0.05}});
+    for (int s = 0; s < 3; ++s) item.trace.push_back({0.1 * s, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0, 0.05}, {}});
     item.recording.frames = {{sim::Pose{}}, {sim::Pose{{0, 0, 0.05}, {0, 1, 0, 0}}}};   // 180 degrees about x
     const GaitAssessment a = assess_gait(item);
     EXPECT_NEAR(a.final_up, -1.0, 1e-12);

@@ -181,8 +181,9 @@ TEST(Resume, ARunKilledBeforeItsFirstCheckpointGoesOn) {
             << name << ": " << read_text(dir / (name + "-resume.log"));
         EXPECT_EQ(file_hash(killed / "population.xml"), file_hash(straight / "population.xml")) << name;
         EXPECT_HAS(read_text(killed / "run.log"), "killed before its first checkpoint");
-        if (name == "gp")   // class 7: why a generation's evaluations differ from its population, said in run.log
+        if (name == "gp") {   // class 7: why a generation's evaluations differ from its population, said in run.log
             EXPECT_HAS(read_text(killed / "run.log"), "under Dynamic Limits also each child bred past the depth limit");
+        }
     }
     fs::remove_all(dir);
 }

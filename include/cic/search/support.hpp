@@ -22,6 +22,10 @@ std::string eq71_line(double distance, double elevation);
 // Empty when the digests match.
 std::string search_note(const std::string& file_digest, const io::Settings& s, const std::string& from);
 
+// Throws cic::InputError naming `file` when `best` has reached
+// Control.minimumFitness: a resume would stop at once (Checkpoint::check_goes_on).
+void refuse_if_reached(double best, const io::Settings& s, const std::string& file);
+
 // Says a checkpoint's notes (origin_note, search_note) through `services`.
 void say_checkpoint_notes(const Checkpoint& c, const Services& services);
 
