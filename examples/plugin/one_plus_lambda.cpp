@@ -38,6 +38,49 @@ constexpr const char* kSection = "OnePlusLambda";
 constexpr const char* kFormat = "cic-one-plus-lambda";
 constexpr int kVersion = 1;
 
+// The checkpoint's schema: the run validates a file against it before
+// read_checkpoint reads it (search::load_checkpoint), which then checks what an
+// XSD cannot (the parent's length, the origin's digest).
+constexpr const char* kSchema = R"(<?xml version="1.0" encoding="UTF-8"?>
+<xs:schema xmlns:xs="http://www.w3.org/2001/XMLSchema">
+  <xs:simpleType name="Numbers"><xs:list itemType="xs:double"/></xs:simpleType>
+  <xs:element name="one-plus-lambda">
+    <xs:complexType>
+      <xs:sequence>
+        <xs:element name="origin">
+          <xs:complexType>
+            <xs:sequence>
+              <xs:element name="part" minOccurs="0" maxOccurs="unbounded">
+                <xs:complexType>
+                  <xs:simpleContent>
+                    <xs:extension base="xs:string"><xs:attribute name="name" type="xs:string" use="required"/></xs:extension>
+                  </xs:simpleContent>
+                </xs:complexType>
+              </xs:element>
+            </xs:sequence>
+            <xs:attribute name="digest" type="xs:string" use="required"/>
+          </xs:complexType>
+        </xs:element>
+        <xs:element name="parent">
+          <xs:complexType>
+            <xs:simpleContent>
+              <xs:extension base="Numbers"><xs:attribute name="fitness" type="xs:double" use="required"/></xs:extension>
+            </xs:simpleContent>
+          </xs:complexType>
+        </xs:element>
+      </xs:sequence>
+      <xs:attribute name="format" type="xs:string" fixed="cic-one-plus-lambda" use="required"/>
+      <xs:attribute name="version" type="xs:integer" use="required"/>
+      <xs:attribute name="settingsDigest" type="xs:string" use="required"/>
+      <xs:attribute name="generation" type="xs:nonNegativeInteger" use="required"/>
+      <xs:attribute name="evaluations" type="xs:positiveInteger" use="required"/>
+      <xs:attribute name="sigma" type="xs:double" use="required"/>
+      <xs:attribute name="rng" type="xs:string" use="required"/>
+    </xs:complexType>
+  </xs:element>
+</xs:schema>
+)";
+
 // The search's whole state: with the settings, it fixes the rest of the run.
 struct State {
     std::vector<double> parent;   // in the unit box
@@ -305,6 +348,7 @@ const search::Registrar registrar{search::SearchKind{
         c->generations = c->state.generation + 1;
         return c;
     },
+    .checkpoint_schema = kSchema,
     .make = [](const search::Services& services, std::unique_ptr<search::Checkpoint> resume)
         -> std::unique_ptr<search::Search> {
         return std::make_unique<OnePlusLambda>(

@@ -56,7 +56,7 @@ void check_budget_goes_on(const ResumeRequest& r, const io::Settings& ran, io::S
                                          kind.budget_unit, kind.budget_key, kind.budget_key));
         return;   // the step check needs the checkpoint's state: after prepare_run
     }
-    const int done = checkpoint ? kind.load(ran, checkpoint->string())->generations : 0;
+    const int done = checkpoint ? search::load_checkpoint(kind, ran, checkpoint->string())->generations : 0;
     if (r.until) asked.control.maximum_iterations = *r.until;
     if (r.generations) asked.control.maximum_iterations = done + *r.generations;
     if (asked.control.maximum_iterations <= done)

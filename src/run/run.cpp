@@ -29,11 +29,10 @@ PreparedRun prepare_run(io::Settings s) {
     }
     if (const std::string from = s.control.population_load_from; !from.empty()) {   // absolute: resolved when read
         try {
-            p.resume = p.search->load(s, from);
+            p.resume = search::load_checkpoint(*p.search, s, from);
         } catch (const InputError& e) {
             throw InputError("<Control> populationXmlLoadFrom: " + e.message(), e.file(), e.line());
         }
-        p.resume->file = from;
         p.resume->search_note = search::search_note(p.resume->settings_digest, s, from);
     }
     p.settings = std::move(s);

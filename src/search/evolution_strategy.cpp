@@ -250,6 +250,7 @@ const Registrar registrar{SearchKind{
     .load = [](const io::Settings& s, const std::string& file) -> std::unique_ptr<Checkpoint> {
         return load_gait_checkpoint(s, file);
     },
+    .checkpoint_schema = {},   // its io reader checks the shipped settings/cic-gait.xsd
     .make = [](const Services& services, std::unique_ptr<Checkpoint> resume) -> std::unique_ptr<Search> {
         return std::make_unique<EvolutionStrategy>(
             services, std::unique_ptr<GaitCheckpoint>(static_cast<GaitCheckpoint*>(resume.release())));

@@ -215,6 +215,7 @@ const Registrar registrar{SearchKind{
     .load = [](const io::Settings& s, const std::string& file) -> std::unique_ptr<Checkpoint> {
         return load_population_checkpoint(s, file);
     },
+    .checkpoint_schema = {},   // its io reader checks the shipped settings/cic-population.xsd
     .make = [](const Services& services, std::unique_ptr<Checkpoint> resume) -> std::unique_ptr<Search> {
         return std::make_unique<Generational>(
             services, std::unique_ptr<PopulationCheckpoint>(static_cast<PopulationCheckpoint*>(resume.release())));

@@ -351,6 +351,7 @@ const Registrar registrar{SearchKind{
     .claimed_by = "MapElites.enabled = 1",
     .fallback = false,
     .load = load_archive_checkpoint,
+    .checkpoint_schema = {},   // its io reader checks the shipped settings/cic-archive.xsd
     .make = [](const Services& services, std::unique_ptr<Checkpoint> resume) -> std::unique_ptr<Search> {
         std::unique_ptr<ArchiveCheckpoint> archive(static_cast<ArchiveCheckpoint*>(resume.release()));
         if (io::genotype_form(services.settings) == io::GenotypeForm::Vector)

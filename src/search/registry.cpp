@@ -8,6 +8,7 @@
 #include "cic/io/did_you_mean.hpp"
 #include "cic/io/search_names.hpp"
 #include "cic/io/settings_extension.hpp"
+#include "cic/io/xml.hpp"
 #include "cic/search/search.hpp"
 
 namespace cic::search {
@@ -90,6 +91,19 @@ const SearchKind& search_of(const io::Settings& s) {
                                      asked, claimer->claimed_by, claimer->name),
                          s.source_file);
     return *it;
+}
+
+std::unique_ptr<Checkpoint> load_checkpoint(const SearchKind& kind, const io::Settings& s, const std::string& file) {
+    if (!kind.checkpoint_schema.empty()) {
+        const io::xml::Schema schema(kind.checkpoint_schema, "the " + kind.name + " checkpoint schema");
+        const auto doc = io::xml::Document::load_file(file);
+        if (const auto problem = schema.first_problem(doc))
+            throw InputError("does not match the " + kind.name + " search's checkpoint schema: " + problem->message,
+                             file, problem->line);
+    }
+    auto c = kind.load(s, file);
+    c->file = file;
+    return c;
 }
 
 std::vector<std::string> budget_keys() {

@@ -192,6 +192,7 @@ const Registrar registrar{SearchKind{
         static_cast<PopulationCheckpoint&>(*c) = std::move(*loaded);
         return c;
     },
+    .checkpoint_schema = {},   // its io reader checks the shipped settings/cic-population.xsd and cic-gait.xsd
     .make = [](const Services& services, std::unique_ptr<Checkpoint> resume) -> std::unique_ptr<Search> {
         return std::make_unique<SwitchHybrid>(services, std::move(resume));
     },

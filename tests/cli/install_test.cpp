@@ -333,6 +333,16 @@ TEST(Install, PluginTypeBuildsAndRunsThroughCicsCommandLine) {
                            " ]; do sleep 0.02; done; kill -9 $p; wait $p; true");
     ASSERT_TRUE(fs::exists(killed / "population.xml")) << kill9.out;
     ASSERT_FALSE(fs::exists(killed / "summary.txt")) << "the run ended before it was killed";
+    // Its checkpoint schema is checked before its reader runs: an unknown attribute, exit 2, nothing written.
+    const std::string saved = read_text(killed / "population.xml");
+    std::string broken = saved;
+    broken.replace(broken.find(" sigma=\""), 1, " sigmaX=\"0\" ");
+    cic::testing::write_text(scratch.path / "broken.xml", broken);
+    const Shell refused = sh(cic + " --quiet --settings " + q(ol) + long_run + " --output " + q(scratch.path / "ol-broken") +
+                             " --set Control.populationXmlLoadFrom=" + q(scratch.path / "broken.xml"));
+    EXPECT_EQ(refused.rc, 2) << refused.out;
+    EXPECT_HAS(refused.out, "does not match the one-plus-lambda search's checkpoint schema");
+    EXPECT_FALSE(fs::exists(scratch.path / "ol-broken")) << "a refusal wrote a run folder";
     const Shell resumed = sh(cic + " --quiet resume " + q(killed));
     ASSERT_EQ(resumed.rc, 0) << resumed.out;
     EXPECT_EQ(read_text(killed / "population.xml"), read_text(scratch.path / "ol-whole" / "one_plus_lambda_r1-001" / "population.xml"));

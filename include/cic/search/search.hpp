@@ -138,6 +138,10 @@ struct SearchKind {
     // it against the settings (origin, shape, values); throws cic::InputError
     // with file and line. Writes nothing.
     std::function<std::unique_ptr<Checkpoint>(const io::Settings&, const std::string& file)> load;
+    // The XSD of its checkpoint file, if it has one of its own: load_checkpoint
+    // validates the file against it before `load` reads it. (The built-ins'
+    // files are checked against the shipped settings/cic-*.xsd by their io readers.)
+    std::string checkpoint_schema;
     // The search of a run: fresh, or from `resume` (this kind's own checkpoint).
     std::function<std::unique_ptr<Search>(const Services&, std::unique_ptr<Checkpoint> resume)> make;
 };
@@ -152,6 +156,9 @@ const std::vector<SearchKind>& search_kinds();
 // named search does not vary the type's genotypes or another key asks for
 // another search.
 const SearchKind& search_of(const io::Settings& s);
+// The kind's checkpoint at `file`: validated against its checkpoint_schema (if
+// any), then read by its `load`. Throws cic::InputError with file and line.
+std::unique_ptr<Checkpoint> load_checkpoint(const SearchKind& kind, const io::Settings& s, const std::string& file);
 // Every budget key of the registered searches, and Control.minimumFitness.
 std::vector<std::string> budget_keys();
 
