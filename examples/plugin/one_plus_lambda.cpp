@@ -27,7 +27,7 @@
 #include "cic/io/population_xml.hpp"   // io::settings_digest
 #include "cic/io/settings_extension.hpp"
 #include "cic/io/xml.hpp"
-#include "cic/search/search.hpp"
+#include "cic/search/ask_tell.hpp"
 #include "cic/search/support.hpp"
 
 namespace {
@@ -203,46 +203,47 @@ double reflect(double x) {
     return x > 1.0 ? 2.0 - x : x;
 }
 
-class OnePlusLambda : public search::Search {
+// Written as ask and tell (search::VectorAskTell): each step asks for lambda
+// children and is told their fitness; the base evaluates them in the run's workers.
+class OnePlusLambda : public search::VectorAskTell {
 public:
     OnePlusLambda(const search::Services& services, std::unique_ptr<OnePlusLambdaCheckpoint> resume)
-        : services_(services), resume_(std::move(resume)), setup_(gait::Setup::from_settings(services.settings)),
-          origin_(io::origin_of(services.settings, setup_.robot)),
+        : VectorAskTell(services), resume_(std::move(resume)),
+          origin_(io::origin_of(services.settings, setup().robot)),
           lambda_(static_cast<int>(io::extra_integer(services.settings, kSection, "lambda"))),
           budget_(io::extra_integer(services.settings, kSection, "evaluations")) {}
 
     search::StatsLayout stats_layout() const override {
         search::StatsLayout l{"sigma", std::nullopt};
-        if (resume_ && services_.continue_in_place) l.continue_after = resume_->state.generation;
+        if (resume_ && services().continue_in_place) l.continue_after = resume_->state.generation;
         return l;
     }
 
     std::optional<search::Row> start() override {
-        const io::Settings& s = services_.settings;
-        evaluator_ = std::make_unique<gait::Evaluator>(services_.context, setup_);
-        services_.say(fmt::format("one-plus-lambda: (1+{})-ES over {} gait parameters, sigma {:g}, budget {} "
+        const io::Settings& s = services().settings;
+        services().say(fmt::format("one-plus-lambda: (1+{})-ES over {} gait parameters, sigma {:g}, budget {} "
                                   "evaluations, seed {}, {} worker{}",
-                                  lambda_, setup_.dimension(), io::extra_number(s, kSection, "sigma"), budget_,
-                                  s.experiment.seed, services_.context.workers,
-                                  services_.context.workers == 1 ? "" : "s"));
+                                  lambda_, setup().dimension(), io::extra_number(s, kSection, "sigma"), budget_,
+                                  s.experiment.seed, services().context.workers,
+                                  services().context.workers == 1 ? "" : "s"));
         if (resume_) {
-            search::say_checkpoint_notes(*resume_, services_);
+            search::say_checkpoint_notes(*resume_, services());
             state_ = resume_->state;
             rng_.set_state(state_.rng);
-            services_.say(fmt::format("resuming from {} at generation {}", resume_->file, state_.generation));
+            services().say(fmt::format("resuming from {} at generation {}", resume_->file, state_.generation));
             return std::nullopt;
         }
         rng_ = Rng(s.experiment.seed);
         state_.sigma = io::extra_number(s, kSection, "sigma");
-        for (std::size_t i = 0; i < setup_.dimension(); ++i) state_.parent.push_back(rng_.uniform());
-        const auto t0 = std::chrono::steady_clock::now();
-        state_.fitness = (*evaluator_)({state_.parent}).front();
+        for (std::size_t i = 0; i < setup().dimension(); ++i) state_.parent.push_back(rng_.uniform());
+        step_started_ = std::chrono::steady_clock::now();
+        state_.fitness = evaluate({state_.parent}).front().fitness;
         state_.evaluations = 1;
-        return row({state_.fitness}, t0);
+        return row({state_.fitness});
     }
 
     search::Stop stop(bool signal) override {
-        if (state_.fitness >= services_.settings.control.minimum_fitness) return {"minimum fitness reached", false};
+        if (state_.fitness >= services().settings.control.minimum_fitness) return {"minimum fitness reached", false};
         if (signal) return {"interrupted", true};
         if (state_.evaluations + lambda_ > budget_) return {"evaluation budget", false};
         return {};
@@ -250,53 +251,60 @@ public:
 
     bool checkpoint_due(const search::Stop& stop) override {
         const bool stepped = std::exchange(stepped_, false);
-        const int interval = std::max(1, services_.settings.experiment.checkpoint_interval);
+        const int interval = std::max(1, services().settings.experiment.checkpoint_interval);
         return stop.done() || (stepped && (state_.generation + 1) % interval == 0);
     }
 
     search::CheckpointText checkpoint() const override {
         State st = state_;
         st.rng = rng_.state();
-        return {st.generation, to_xml(st, services_.settings, origin_)};
+        return {st.generation, to_xml(st, services().settings, origin_)};
     }
 
-    search::Row step() override {
-        const auto t0 = std::chrono::steady_clock::now();
+    // Lambda children: the parent plus sigma N(0, I), mirrored into the unit box.
+    std::vector<std::vector<double>> ask() override {
+        step_started_ = std::chrono::steady_clock::now();
         std::vector<std::vector<double>> children(static_cast<std::size_t>(lambda_), state_.parent);
         for (auto& child : children)
             for (double& x : child) x = reflect(x + state_.sigma * rng_.normal());
-        const std::vector<double> f = (*evaluator_)(children);
-        // The first best child replaces the parent when it is at least as good;
-        // the 1/5th rule: sigma grows on a success, shrinks four times slower otherwise.
-        const auto best = std::max_element(f.begin(), f.end()) - f.begin();
-        const bool success = f[static_cast<std::size_t>(best)] > state_.fitness;
-        if (f[static_cast<std::size_t>(best)] >= state_.fitness) {
-            state_.parent = children[static_cast<std::size_t>(best)];
-            state_.fitness = f[static_cast<std::size_t>(best)];
+        return children;
+    }
+
+    // The first best child replaces the parent when it is at least as good;
+    // the 1/5th rule: sigma grows on a success, shrinks four times slower otherwise.
+    search::Row tell(const std::vector<std::vector<double>>& children,
+                     const std::vector<gp::Evaluation>& evaluations) override {
+        std::vector<double> f;
+        for (const auto& e : evaluations) f.push_back(e.fitness);
+        const auto best = static_cast<std::size_t>(std::max_element(f.begin(), f.end()) - f.begin());
+        const bool success = f[best] > state_.fitness;
+        if (f[best] >= state_.fitness) {
+            state_.parent = children[best];
+            state_.fitness = f[best];
         }
         state_.sigma = std::clamp(state_.sigma * std::exp(success ? 0.8 : -0.2), 1e-6, 1.0);
         state_.evaluations += lambda_;
         ++state_.generation;
-        return row(f, t0);
+        return row(f);
     }
 
     std::string summary(const search::Stop& stop) override {
         return fmt::format("stopped: {} at generation {}\nbest: fitness {:.17g} ((1+{})-ES; robot {})\n"
                            "evaluations: {}\nbest gait: {}\n",
-                           stop.reason, state_.generation, state_.fitness, lambda_, setup_.robot.name,
-                           state_.evaluations, setup_.describe(state_.parent));
+                           stop.reason, state_.generation, state_.fitness, lambda_, setup().robot.name,
+                           state_.evaluations, setup().describe(state_.parent));
     }
 
 private:
-    search::Row row(const std::vector<double>& fitness, std::chrono::steady_clock::time_point t0) {
+    search::Row row(const std::vector<double>& fitness) {
         search::Row r;
         r.record.generation = state_.generation;
         search::fill_fitness_stats(r.record, fitness);
         r.record.best = state_.fitness;   // the parent: the best so far
         r.record.evaluations = state_.evaluations;
-        r.record.failed = static_cast<int>(evaluator_->failed() - failed_before_);
-        failed_before_ = evaluator_->failed();
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        r.record.failed = static_cast<int>(failed() - failed_before_);
+        failed_before_ = failed();
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - step_started_).count();
         r.record.generation_seconds = seconds;
         r.record.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
         r.extra = fmt::format("{:.17g}", state_.sigma);
@@ -312,18 +320,15 @@ private:
         return r;
     }
 
-    search::Services services_;
     std::unique_ptr<OnePlusLambdaCheckpoint> resume_;
-    gait::Setup setup_;
     io::CheckpointOrigin origin_;
     int lambda_;
     long budget_;
-    std::unique_ptr<gait::Evaluator> evaluator_;
     State state_;
     Rng rng_;
     long failed_before_ = 0;
     bool stepped_ = false;
-    std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+    std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now(), step_started_ = started_;
 };
 
 const search::Registrar registrar{search::SearchKind{
