@@ -108,6 +108,22 @@ TEST_F(Mpi, ThreeRanksGiveTheGoldenMapElitesHash) {
     EXPECT_EQ(cic::testing::file_hash(only_run("mpi") / "population.xml"), cic::testing::kGoldenMapElitesHypergp);
 }
 
+// Switch-HybrID through the one run loop on 3 ranks: both phases (HyperGP's
+// trees, then CMA-ES's gait vectors) go to the worker ranks, and the run ends in
+// the bytes of one worker process.
+TEST_F(Mpi, SwitchHybridOnThreeRanksGivesTheBytesOfOneWorker) {
+    const fs::path settings = fs::path(CIC_SOURCE_DIR) / "settings" / "r1_switch_hybrid.xml";
+    const std::string sets = " --set GP.generatedPopulationSize=6 --set Gait.evaluations=60"
+                             " --set Simulator.sample_to=2 --set Simulator.delayed_start=0.5 --set Experiment.workers=1";
+    ASSERT_EQ(run("one", kPlain, job(settings, "one") + sets), 0) << log("one");
+    ASSERT_EQ(run("mpi", kMpirun + "-np 3 ", job(settings, "mpi") + sets), 0) << log("mpi");
+    const fs::path one = only_run("one"), mpi = only_run("mpi");
+    EXPECT_EQ(read_text(one / "population.xml"), read_text(mpi / "population.xml"));
+    const std::string ran = read_text(mpi / "run.log");
+    EXPECT_NE(ran.find("switch: HyperGP hands over"), std::string::npos) << ran;
+    EXPECT_NE(ran.find("MPI: 3 ranks"), std::string::npos) << ran;
+}
+
 TEST_F(Mpi, BadSettingsEndEveryRankWithExitCode2AndWriteNothing) {
     const auto settings = write("bad.xml", "<settings><Experiment><type>bogus</type></Experiment></settings>\n");
     EXPECT_EQ(run("bad", kMpirun + "-np 3 ", job(settings, "out")), 2) << log("bad");
