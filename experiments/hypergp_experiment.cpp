@@ -62,18 +62,12 @@ public:
                 for (const auto& t : r.trouble)
                     warn_(fmt::format("warning: individual {}: {}{}", ind.id, t,
                                       r.ok || &t != &r.trouble.back() ? ", job retried" : ""));
-            if (r.ok) {
-                const sim::EvalReply reply = sim::parse_eval_reply(r.output);
-                apply(ind, reply);
-                if (first) cache_.emplace(bodies[i], reply);
-            } else {
-                ind.fitness = model_.sim.failure_fitness;
-                ind.failed = true;
-                ind.failure = "worker: " + r.error;
-                ind.evaluated = true;
+            const sim::EvalReply reply = sim::reply_of(r, model_.sim.failure_fitness);
+            apply(ind, reply);
+            if (r.ok && first) cache_.emplace(bodies[i], reply);   // worker failures are not the genotype's doing
+            if (!r.ok)
                 warn_(fmt::format("warning: individual {} scored as failed (fitness {}): {}", ind.id, ind.fitness,
                                   r.error));
-            }
         }
         simulated_ += static_cast<long>(jobs.size());
     }

@@ -99,14 +99,10 @@ std::vector<sim::EvalReply> Evaluator::replies(const std::vector<std::vector<dou
     for (std::size_t i = 0; i < xs.size(); ++i) {
         const JobResult& r = results[i];
         for (const auto& t : r.trouble) warn_(fmt::format("warning: candidate {}: {}", i, t));
-        if (r.ok) {
-            replies[i] = sim::parse_eval_reply(r.output);
-            if (replies[i].failed) ++failed_;
-        } else {
-            replies[i] = sim::EvalReply{setup_.sim.failure_fitness, {}, true, r.error};
-            ++failed_;
+        replies[i] = sim::reply_of(r, setup_.sim.failure_fitness);
+        if (replies[i].failed) ++failed_;
+        if (!r.ok)
             warn_(fmt::format("warning: candidate {} scored as failed (fitness {}): {}", i, replies[i].fitness, r.error));
-        }
     }
     return replies;
 }

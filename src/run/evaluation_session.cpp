@@ -208,13 +208,10 @@ Scores EvaluationSession::evaluate(const std::vector<Genotype>& batch) {
         for (std::size_t i = 0; i < results.size(); ++i) {
             const JobResult& r = results[i];
             for (const auto& t : r.trouble) im.opt.warn(fmt::format("warning: genotype {}: {}", i, t));
-            if (r.ok) {
-                replies.push_back(sim::parse_eval_reply(r.output));
-            } else {   // as a run scores it (experiments/hypergp_experiment.cpp)
-                replies.push_back(sim::EvalReply{im.model->sim.failure_fitness, {}, true, "worker: " + r.error});
+            replies.push_back(sim::reply_of(r, im.model->sim.failure_fitness));   // as a run scores it
+            if (!r.ok)
                 im.opt.warn(fmt::format("warning: genotype {} scored as failed (fitness {}): {}", i,
                                         im.model->sim.failure_fitness, r.error));
-            }
         }
     }
     for (sim::EvalReply& r : replies) {

@@ -146,6 +146,15 @@ EvalReply reply_of(const RobotSpec& robot, const EvalResult& r, std::vector<doub
     return reply;
 }
 
+EvalReply reply_of(const JobResult& result, double failure_fitness) {
+    if (result.ok) return parse_eval_reply(result.output);
+    EvalReply failed;
+    failed.fitness = failure_fitness;
+    failed.failed = true;
+    failed.failure = "worker: " + result.error;
+    return failed;
+}
+
 EvalReply parse_eval_reply(const std::string& text) {
     std::istringstream in(text);
     EvalReply e;

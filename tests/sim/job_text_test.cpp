@@ -169,3 +169,22 @@ TEST(JobText, AGaitJobAsksForEachFootsDutyFactor) {
 
 } // namespace
 } // namespace cic::sim
+
+// A job's reply as every evaluator scores it: the worker's when it ran, else a
+// failed evaluation with the failure fitness and why.
+TEST(JobText, ReplyOfAJobThatRanOrNot) {
+    cic::JobResult ran;
+    ran.ok = true;
+    ran.output = cic::sim::format_eval_reply({2.5, {0.25, 0.75}, false, "", 2.0, 0.5});
+    const cic::sim::EvalReply a = cic::sim::reply_of(ran, -1000);
+    EXPECT_EQ(a.fitness, 2.5);
+    EXPECT_FALSE(a.failed);
+    EXPECT_EQ(a.descriptor, (std::vector<double>{0.25, 0.75}));
+    cic::JobResult lost;
+    lost.error = "worker hung twice";
+    const cic::sim::EvalReply b = cic::sim::reply_of(lost, -1000);
+    EXPECT_EQ(b.fitness, -1000);
+    EXPECT_TRUE(b.failed);
+    EXPECT_EQ(b.failure, "worker: worker hung twice");
+    EXPECT_TRUE(b.descriptor.empty());
+}

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cic/core/job_runner.hpp"
 #include "cic/sim/config.hpp"
 #include "cic/sim/controller.hpp"
 #include "cic/sim/cpg.hpp"
@@ -41,6 +42,10 @@ std::string format_eval_reply(const EvalReply& r);
 // The reply of an evaluation of `robot`: its fitness, eq. 7.1's terms and `descriptor`.
 EvalReply reply_of(const RobotSpec& robot, const EvalResult& r, std::vector<double> descriptor = {});
 EvalReply parse_eval_reply(const std::string& text);
+// A job's reply as a run scores it: the worker's reply when the job ran, else
+// (its worker crashed or hung twice) a failed evaluation with `failure_fitness`
+// and "worker: WHY". One rule for every evaluator (gait, HyperGP, Python's).
+EvalReply reply_of(const JobResult& result, double failure_fitness);
 
 // Job kind "sine": the first line is "sine", then robot, config and joints.
 std::string make_sine_job(const RobotSpec& robot, const SimConfig& cfg,
