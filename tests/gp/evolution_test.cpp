@@ -343,6 +343,42 @@ TEST(Evolve, ContinuingFromAGenerationGivesTheSameRun) {
     EXPECT_EQ(rest.state.bloat.limit, whole.state.bloat.limit);
 }
 
+// Generations, the loop a caller drives one generation at a time (the run's
+// one loop, search/generational.cpp): stepped by hand it is evolve(), with
+// bloat control on; a resumed one records the generation it was given.
+TEST(Generations, SteppedByHandIsEvolve) {
+    GpConfig c = small_gp_config();
+    BloatConfig bloat;
+    bloat.enabled = true;
+    const tree::PrimitiveSet ps(c.primitives);
+    QuadraticEvaluator a_eval, b_eval;
+    const auto whole = evolve(c, bloat, StopConditions{5, 1e9}, ps, a_eval, state(8), std::nullopt, {});
+    Generations g(c, bloat, ps, b_eval, state(8), std::nullopt);
+    EXPECT_EQ(g.record(5).generation, 0);
+    for (int i = 1; i < 5; ++i) {
+        g.step();
+        const GenerationRecord r = g.record(5);
+        EXPECT_EQ(r.generation, i);
+        EXPECT_EQ(r.max_generations, 5);
+        EXPECT_EQ(r.evaluations, g.state().evaluations);
+    }
+    const EvolutionResult stepped = g.finish(StopReason::MaximumIterations);
+    EXPECT_EQ(texts(stepped.population), texts(whole.population));
+    EXPECT_EQ(stepped.state.rng.state(), whole.state.rng.state());
+    EXPECT_EQ(stepped.state.bloat.limit, whole.state.bloat.limit);
+    EXPECT_EQ(b_eval.calls, a_eval.calls);
+    // From a saved generation: nothing evaluated again, and its record is that generation's.
+    Population start;
+    start.generation = stepped.population.generation;
+    for (const auto& ind : stepped.population) start.individuals.push_back(std::make_shared<Individual>(*ind));
+    QuadraticEvaluator c_eval;
+    Generations resumed(c, bloat, ps, c_eval, stepped.state, std::move(start));
+    EXPECT_EQ(c_eval.calls, 0);
+    const GenerationRecord r = resumed.record(5);
+    EXPECT_EQ(r.generation, 4);
+    EXPECT_EQ(r.best, whole.population.best().fitness);
+}
+
 TEST(Evolve, StopsAtTheMinimumFitnessOrWhenAsked) {
     const auto reached = run(small_gp_config(), 50, 8, nullptr, nullptr, -1e9);
     EXPECT_EQ(reached.reason, StopReason::MinimumFitness);
