@@ -354,6 +354,14 @@ const search::Registrar registrar{search::SearchKind{
         return c;
     },
     .checkpoint_schema = kSchema,
+    // view, assess, trace and render replay its parent: the best gait of the run.
+    .checkpoint_root = "one-plus-lambda",
+    .best = [](const io::Settings& s, const std::string& file) {
+        std::string note, digest;
+        const State st = read_checkpoint(file, s, gait::Setup::from_settings(s).dimension(), note, digest);
+        return report::CheckpointBest{st.parent, st.fitness, st.generation,
+                                      fmt::format("best (1+{})-ES gait", io::extra_integer(s, kSection, "lambda"))};
+    },
     .make = [](const search::Services& services, std::unique_ptr<search::Checkpoint> resume)
         -> std::unique_ptr<search::Search> {
         return std::make_unique<OnePlusLambda>(

@@ -7,12 +7,14 @@
 #include <cmath>
 #include <tuple>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
 
 #include "cic/core/error.hpp"
+#include "cic/io/xml.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/sim/layout.hpp"
@@ -63,6 +65,56 @@ int centre_body_of(const sim::RobotSpec& robot) {
     return layout.geoms[static_cast<std::size_t>(layout.chassis_geom[static_cast<std::size_t>(robot.centre)])].body;
 }
 
+// One gait vector of the settings' gait, walked and recorded.
+ReplayItem replay_point(const gait::Setup& setup, const std::vector<double>& x, double fps, bool trace) {
+    const std::unique_ptr<sim::Controller> controller = setup.controller(x);
+    sim::EvalOptions opt;
+    opt.record_fps = fps;
+    opt.record_trace = trace;
+    opt.record_ground = trace;
+    sim::EvalResult r = sim::evaluate(setup.robot, *controller, setup.sim, opt);
+    ReplayItem item;
+    if (r.recording) item.recording = *r.recording;
+    item.trace = r.trace;
+    if (trace)
+        for (const auto& row : item.trace) item.raw_outputs.push_back(row.desired);   // open loop: the commands
+    item.replayed_fitness = r.fitness;
+    item.raw_fitness = r.fitness;   // no penalty on a gait
+    item.centre_body = centre_body_of(setup.robot);
+    item.joint_names = sim::joint_names(setup.robot);
+    fill_walk(item, setup.robot, r);
+    return item;
+}
+
+std::map<std::string, CheckpointBestReader>& checkpoint_readers() {
+    static std::map<std::string, CheckpointBestReader> r;
+    return r;
+}
+
+// The root element of a checkpoint file, to find a registered reader.
+std::string root_of(const fs::path& file) {
+    try {
+        return std::string(io::xml::Document::load_file(file).root().name());
+    } catch (const InputError&) {
+        return {};   // the built-in readers say what is wrong with it
+    }
+}
+
+// A checkpoint of a search registered from outside: its reader gives the best gait.
+std::vector<ReplayItem> replay_foreign(const Source& src, const io::Settings& settings, const std::string& individual,
+                                       const CheckpointBestReader& reader, double fps, bool trace) {
+    if (individual != "best")
+        throw InputError("this run's checkpoint keeps one gait to replay: use --individual best",
+                         src.population.string());
+    const CheckpointBest best = reader(settings, src.population.string());
+    ReplayItem item = replay_point(gait::Setup::from_settings(settings), best.x, fps, trace);
+    item.label = fmt::format("{}, found in generation {}", best.who, best.generation);
+    item.who = best.who;
+    item.stored_fitness = best.fitness;
+    item.generation = best.generation;
+    return {std::move(item)};
+}
+
 // A gait run: its best gait so far (the checkpoint's champion) is the one replay.
 std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& settings, const std::string& individual,
                                     double fps, bool trace) {
@@ -71,13 +123,7 @@ std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& setti
     const gait::Setup setup = gait::Setup::from_settings(settings);
     const io::GaitFile g = io::load_gait(src.population);
     io::check_compatible(g, settings, setup.dimension(), src.population.string());
-    const std::unique_ptr<sim::Controller> controller = setup.controller(g.champion.x);
-    sim::EvalOptions opt;
-    opt.record_fps = fps;
-    opt.record_trace = trace;
-    opt.record_ground = trace;
-    sim::EvalResult r = sim::evaluate(setup.robot, *controller, setup.sim, opt);
-    ReplayItem item;
+    ReplayItem item = replay_point(setup, g.champion.x, fps, trace);
     // The champion was found in the first generation whose best so far reached it.
     int found = -1;
     try {
@@ -95,15 +141,6 @@ std::vector<ReplayItem> replay_gait(const Source& src, const io::Settings& setti
     item.who = fmt::format("best {} gait", g.optimizer);
     item.stored_fitness = g.champion.fitness;
     item.generation = found >= 0 ? found : g.generation;
-    if (r.recording) item.recording = *r.recording;
-    item.trace = r.trace;
-    if (trace)
-        for (const auto& row : item.trace) item.raw_outputs.push_back(row.desired);   // open loop: the commands
-    item.replayed_fitness = r.fitness;
-    item.raw_fitness = r.fitness;   // no penalty in the gait experiment
-    item.centre_body = centre_body_of(setup.robot);
-    item.joint_names = sim::joint_names(setup.robot);
-    fill_walk(item, setup.robot, r);
     return {std::move(item)};
 }
 
@@ -241,10 +278,21 @@ void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalRes
     item.foot_names = sim::foot_names(robot);
 }
 
+void register_checkpoint_reader(std::string root, CheckpointBestReader reader) {
+    for (const char* own : {"population", "gaitRun", "archive"})
+        if (root == own) throw std::invalid_argument("checkpoint root <" + root + "> is cic's own");
+    if (root.empty() || !reader) throw std::invalid_argument("a checkpoint reader needs a root element and a reader");
+    if (!checkpoint_readers().emplace(root, std::move(reader)).second)
+        throw std::invalid_argument("checkpoint root <" + root + "> has a reader already");
+}
+
 std::vector<ReplayItem> replay(const std::string& source, const std::string& individual, int count, double fps,
                                bool trace) {
     const Source src = locate(source);
     const io::Settings settings = io::read_settings(src.settings);
+    if (!checkpoint_readers().empty())   // a registered search's own checkpoint
+        if (const auto it = checkpoint_readers().find(root_of(src.population)); it != checkpoint_readers().end())
+            return replay_foreign(src, settings, individual, it->second, fps, trace);
     if (settings.map_elites.enabled) return replay_archive(src, settings, individual, count, fps, trace);
     if (individual.rfind("cell:", 0) == 0)
         throw InputError("--cell picks an elite of a MAP-Elites run (MapElites.enabled); this run has no archive",

@@ -251,6 +251,8 @@ const Registrar registrar{SearchKind{
         return load_gait_checkpoint(s, file);
     },
     .checkpoint_schema = {},   // its io reader checks the shipped settings/cic-gait.xsd
+    .checkpoint_root = {},
+    .best = {},
     .make = [](const Services& services, std::unique_ptr<Checkpoint> resume) -> std::unique_ptr<Search> {
         return std::make_unique<EvolutionStrategy>(
             services, std::unique_ptr<GaitCheckpoint>(static_cast<GaitCheckpoint*>(resume.release())));

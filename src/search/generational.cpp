@@ -216,6 +216,8 @@ const Registrar registrar{SearchKind{
         return load_population_checkpoint(s, file);
     },
     .checkpoint_schema = {},   // its io reader checks the shipped settings/cic-population.xsd
+    .checkpoint_root = {},
+    .best = {},
     .make = [](const Services& services, std::unique_ptr<Checkpoint> resume) -> std::unique_ptr<Search> {
         return std::make_unique<Generational>(
             services, std::unique_ptr<PopulationCheckpoint>(static_cast<PopulationCheckpoint*>(resume.release())));

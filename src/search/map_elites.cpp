@@ -352,6 +352,8 @@ const Registrar registrar{SearchKind{
     .fallback = false,
     .load = load_archive_checkpoint,
     .checkpoint_schema = {},   // its io reader checks the shipped settings/cic-archive.xsd
+    .checkpoint_root = {},
+    .best = {},
     .make = [](const Services& services, std::unique_ptr<Checkpoint> resume) -> std::unique_ptr<Search> {
         std::unique_ptr<ArchiveCheckpoint> archive(static_cast<ArchiveCheckpoint*>(resume.release()));
         if (io::genotype_form(services.settings) == io::GenotypeForm::Vector)

@@ -43,6 +43,7 @@ void register_search(SearchKind kind) {
     // checked before anything else changes.
     if (!io::is_builtin_search_name(kind.name)) io::register_search_name({kind.name, kind.doc, kind.forms});
     if (!kind.keys.empty()) io::register_settings_keys(kind.keys);
+    if (!kind.checkpoint_root.empty() || kind.best) report::register_checkpoint_reader(kind.checkpoint_root, kind.best);
     kinds().push_back(std::move(kind));
 }
 

@@ -193,6 +193,8 @@ const Registrar registrar{SearchKind{
         return c;
     },
     .checkpoint_schema = {},   // its io reader checks the shipped settings/cic-population.xsd and cic-gait.xsd
+    .checkpoint_root = {},
+    .best = {},
     .make = [](const Services& services, std::unique_ptr<Checkpoint> resume) -> std::unique_ptr<Search> {
         return std::make_unique<SwitchHybrid>(services, std::move(resume));
     },

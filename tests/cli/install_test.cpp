@@ -209,6 +209,12 @@ TEST(Install, LibraryPackageBuildsAnOutOfTreeProject) {
 // examples/plugin: an experiment type of its own (`straight`, with a settings
 // section of its own), built against the installed package, run through cic's
 // command line; its stored fitness is its own score of the replayed genotype.
+// The parent's fitness of a one-plus-lambda checkpoint (<parent fitness="F">).
+std::string killed_parent_fitness(const std::string& xml) {
+    const std::size_t at = xml.find("<parent fitness=\"") + 17;
+    return xml.substr(at, xml.find('"', at) - at);
+}
+
 TEST(Install, PluginTypeBuildsAndRunsThroughCicsCommandLine) {
     const fs::path& p = installed_prefix();
     const ScratchDir scratch("install-plugin");
@@ -346,6 +352,13 @@ TEST(Install, PluginTypeBuildsAndRunsThroughCicsCommandLine) {
     const Shell resumed = sh(cic + " --quiet resume " + q(killed));
     ASSERT_EQ(resumed.rc, 0) << resumed.out;
     EXPECT_EQ(read_text(killed / "population.xml"), read_text(scratch.path / "ol-whole" / "one_plus_lambda_r1-001" / "population.xml"));
+    // `assess` replays its best (the search's SearchKind::best) to the fitness the run stored.
+    const Shell ol_assessed = sh(cic + " --quiet assess " + q(killed) + " --out " + q(scratch.path / "ol.csv"));
+    ASSERT_EQ(ol_assessed.rc, 0) << ol_assessed.out;
+    const std::string ol_csv = read_text(scratch.path / "ol.csv");
+    const std::string ol_row = ol_csv.substr(ol_csv.find('\n') + 1);
+    const std::string stored = killed_parent_fitness(read_text(killed / "population.xml"));
+    EXPECT_EQ(std::stod(ol_row.substr(ol_row.find(',') + 1)), std::stod(stored)) << ol_csv;
 }
 
 // The Python package (docs/python.md) from an installed prefix: found with

@@ -3,11 +3,13 @@
 // simulation is re-run with the same simulator and settings the evaluation
 // used, so the motion shown is the one that earned the fitness.
 #include <array>
+#include <functional>
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "cic/io/settings.hpp"
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/recording.hpp"
 
@@ -54,5 +56,19 @@ void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalRes
 // Implemented by the HyperGP experiment wiring (src/report/replay.cpp).
 std::vector<ReplayItem> replay(const std::string& run_dir_or_population, const std::string& individual, int count,
                                double fps, bool trace);
+
+// The best gait a search's own checkpoint holds (a search registered from
+// outside cic's three checkpoint files: search/search.hpp, SearchKind::best).
+struct CheckpointBest {
+    std::vector<double> x;   // a gait vector in the unit box
+    double fitness = 0;      // as the run stored it
+    int generation = 0;      // where the run found it (or its last generation)
+    std::string who;         // "best (1+8)-ES gait"
+};
+using CheckpointBestReader = std::function<CheckpointBest(const io::Settings&, const std::string& file)>;
+// replay() (view, assess, trace, render, export's terms) reads checkpoints
+// whose root element is `root` with `reader` and replays the gait it gives.
+// Throws std::invalid_argument for a root of cic's own files or one taken.
+void register_checkpoint_reader(std::string root, CheckpointBestReader reader);
 
 } // namespace cic::report

@@ -40,6 +40,7 @@
 #include "cic/io/experiment_types.hpp"
 #include "cic/io/settings.hpp"
 #include "cic/io/settings_table.hpp"
+#include "cic/report/replay.hpp"
 #include "cic/search/progress_line.hpp"
 
 namespace cic::search {
@@ -142,6 +143,11 @@ struct SearchKind {
     // validates the file against it before `load` reads it. (The built-ins'
     // files are checked against the shipped settings/cic-*.xsd by their io readers.)
     std::string checkpoint_schema;
+    // For view, assess, trace and render (report::replay): the root element of
+    // its checkpoint file and the best gait one holds. A search of gait vectors
+    // with a file of its own gives both; cic's three files are read by report itself.
+    std::string checkpoint_root;
+    report::CheckpointBestReader best;
     // The search of a run: fresh, or from `resume` (this kind's own checkpoint).
     std::function<std::unique_ptr<Search>(const Services&, std::unique_ptr<Checkpoint> resume)> make;
 };
