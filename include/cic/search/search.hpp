@@ -8,9 +8,10 @@
 //   start()                  the first evaluation (a fresh run's generation 0)
 //   loop: stop(signal)       the search's stop rule: budget, minimum fitness, a signal
 //         checkpoint_due()   -> checkpoint(): the text the loop writes atomically
-//         step()             one generation or batch: it asks the Evaluate
-//                            service for each batch of genotypes and is told
-//                            their fitness (and descriptors)
+//         step()             one generation or batch: each batch of genotypes
+//                            goes through the run's evaluation context
+//                            (Services::context: worker processes or MPI
+//                            ranks), which tells their fitness (and descriptors)
 //   summary()                summary.txt's text
 //
 // Each start() and step() returns a Row: stats.csv's columns (the search's
@@ -21,12 +22,13 @@
 // so does a search built outside cic against the installed package
 // (examples/plugin/one_plus_lambda.cpp, docs/extending.md).
 //
-// Why a step asks the service rather than returning one batch (pyribs's ask
-// and tell): generational GP evaluates inside a generation (Dynamic Limits'
-// filter, duplicates bred again) and pagmo2's algorithms call their problem
-// from inside evolve(). A step may ask any number of batches; each is
-// evaluated in the run's worker processes or MPI ranks, the same bytes for 1
-// or N of them. This is pagmo2's evolve() with the problem as a service.
+// Why a step evaluates rather than returning one batch: generational GP
+// evaluates inside a generation (Dynamic Limits' filter, duplicates bred
+// again) and pagmo2's algorithms call their problem from inside evolve(). A
+// step may evaluate any number of batches, the same bytes for 1 or N workers:
+// pagmo2's evolve() with the problem as a service. A search that asks for one
+// batch per step, as pyribs's schedulers do, derives from VectorAskTell
+// (ask_tell.hpp) and writes only ask() and tell().
 #include <filesystem>
 #include <functional>
 #include <memory>
