@@ -25,9 +25,17 @@
       RESULTS/compare.md and the figure (default docs/img/scaling-ratio.svg) from
       the ledger's compare rows, each run scored by `cic assess` (raw eq. 7.1,
       cached in RESULTS/compare-raw.csv); scipy, matplotlib (Debian's python3)
+  scaling-report.py strips --results DIR --studies DIR --cic CIC
+                    [--out-images DIR] [--robots R,R] [--at "T T ..."] [--no-strips]
+      RESULTS/strips.md: per robot (default centipede-16,centipede-16-irregular)
+      and method the finished compare run with the highest raw eq. 7.1 in
+      RESULTS/compare-raw.csv, its `cic assess` verdicts and a strip by
+      scripts/screenshot-strip.sh (OUT-IMAGES, default docs/img:
+      scaling-strip-<robot>-<method>.png; frames at --at, default "2 5 8 11 14")
 Standard library only, but for results."""
 import csv
 import os
+import shlex
 import statistics
 import sys
 
@@ -175,13 +183,14 @@ def main(argv):
         estimate(argv[3])
     elif len(argv) == 4 and argv[1] == "summary" and argv[2] == "--results":
         summary(argv[3])
-    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results"):
-        flags = {"--provisional"}
+    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results", "strips"):
+        flags = {"compare-sweeps": {"--provisional"}, "results": set(), "strips": {"--no-strips"}}[argv[1]]
         known = {"compare-sweeps": {"--results", "--out", "--tuning", "--cic"},
-                 "results": {"--results", "--studies", "--cic", "--figure", "--baselines"}}[argv[1]]
+                 "results": {"--results", "--studies", "--cic", "--figure", "--baselines"},
+                 "strips": {"--results", "--studies", "--cic", "--out-images", "--robots", "--at"}}[argv[1]]
         args, i = {}, 2
         while i < len(argv):
-            if argv[1] == "compare-sweeps" and argv[i] in flags:
+            if argv[i] in flags:
                 args[argv[i]] = True
                 i += 1
             elif argv[i] in known and i + 1 < len(argv):
@@ -189,8 +198,9 @@ def main(argv):
                 i += 2
             else:
                 usage(f"scaling-report.py {argv[1]}: unknown or incomplete option '{argv[i]}' (allowed: "
-                      f"{', '.join(sorted(known | (flags if argv[1] == 'compare-sweeps' else set())))})")
-        need = {"compare-sweeps": ("--results", "--out"), "results": ("--results", "--studies", "--cic")}[argv[1]]
+                      f"{', '.join(sorted(known | flags))})")
+        need = {"compare-sweeps": ("--results", "--out"), "results": ("--results", "--studies", "--cic"),
+                "strips": ("--results", "--studies", "--cic")}[argv[1]]
         for n in need:
             if n not in args:
                 usage(f"scaling-report.py {argv[1]}: {n} is required")
@@ -201,6 +211,18 @@ def main(argv):
                                            args.get("--cic", os.path.join(sc.ROOT, "build", "cic")),
                                            args.get("--provisional", False)):
                     print(p)
+            elif argv[1] == "strips":
+                import scaling_strips
+                robots = args.get("--robots", ",".join(scaling_strips.LARGEST)).split(",")
+                command = " ".join(shlex.quote(a) for a in ["scripts/scaling-report.py"] + argv[1:])
+                try:
+                    scaling_strips.strips(args["--results"], args["--studies"], args["--cic"],
+                                          args.get("--out-images", os.path.join(sc.ROOT, "docs", "img")), robots,
+                                          args.get("--at", scaling_strips.STRIP_TIMES), command,
+                                          draw=not args.get("--no-strips", False))
+                except scaling_strips.StripFailed as e:
+                    print(f"scaling-report.py: {e}", file=sys.stderr)
+                    sys.exit(1)
             else:
                 import scaling_results
                 scaling_results.results(args["--results"], args["--studies"], args["--cic"],
