@@ -61,13 +61,7 @@ def ledger(studies, results, names):
             if r["status"] != "done" and old and old["status"] == "done":
                 continue   # a finished run of an earlier sitting whose folder is gone
             rows[key] = {"study": name, **{f: r.get(f, "") for f in FIELDS if f != "study"}}
-    tmp = path + ".tmp"
-    with open(tmp, "w", newline="") as out:
-        w = csv.DictWriter(out, FIELDS, lineterminator="\n")
-        w.writeheader()
-        for key in sorted(rows, key=lambda k: (k[0], k[1], int(k[2]))):
-            w.writerow(rows[key])
-    os.replace(tmp, path)
+    sc.write_rows_atomically(path, FIELDS, rows)
     return sum(r["status"] == "done" for r in rows.values())
 
 

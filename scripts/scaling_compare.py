@@ -200,6 +200,17 @@ def write_atomically(path, text):
     os.replace(tmp, path)
 
 
+def write_rows_atomically(path, fields, rows):
+    """{(study, config, seed, ...): row} as a CSV sorted by study, config and seed (a number), atomically."""
+    tmp = path + ".tmp"
+    with open(tmp, "w", newline="") as out:
+        w = csv.DictWriter(out, fields, lineterminator="\n")
+        w.writeheader()
+        for key in sorted(rows, key=lambda k: (k[0], k[1], int(k[2]))):
+            w.writerow(rows[key])
+    os.replace(tmp, path)
+
+
 def compare_sweeps(results, out, tuning_dir, cic, provisional):
     """Write OUT/compare-<robot>.xml for the 8 centipedes, R1 and R2; returns the paths."""
     ledger_path = os.path.join(results, "scaling-runs.csv")

@@ -57,13 +57,7 @@ def read_cache(path):
 
 
 def write_cache(path, cache):
-    tmp = path + ".tmp"
-    with open(tmp, "w", newline="") as f:
-        w = csv.DictWriter(f, CACHE_FIELDS, lineterminator="\n")
-        w.writeheader()
-        for k in sorted(cache, key=lambda k: (k[0], k[1], int(k[2]))):
-            w.writerow(cache[k])
-    os.replace(tmp, path)
+    sc.write_rows_atomically(path, CACHE_FIELDS, cache)
 
 
 def assess(cic, run_dirs, out_csv):
