@@ -17,6 +17,8 @@
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/report/replay.hpp"
+#include "cic/core/error.hpp"
+#include "support/files.hpp"
 #include "support/run_helpers.hpp"
 
 namespace cic {
@@ -144,6 +146,45 @@ TEST(OffsetHybrid, ResumeIsExactAndReplaysUseTheOffsets) {
             differ += hypergp::run(model, ind->genotype).fitness != ind->fitness;
         }
     EXPECT_GT(differ, 0);
+    fs::remove_all(dir);
+}
+
+// A search of trees registered from outside names its checkpoint's root and gives
+// its best trees (report::CheckpointBest::trees, with their direct genes in x):
+// view, assess, trace and render then replay them as the run's type scores them.
+TEST(OffsetHybrid, ARegisteredReaderOfTreesReplaysThemAsTheRunDid) {
+    const auto dir = temp_dir("offset-foreign");
+    const auto run = run_settings(dir, "run", offset_settings(2, 1));
+    ASSERT_EQ(run.rc, 0) << run.log;
+    // The "search's own file": a pointer to the population whose best it keeps.
+    report::register_checkpoint_reader("treeProbe", [](const io::Settings&, const std::string& file) {
+        const std::string text = read_text(file);
+        const auto from = text.find("from=\"") + 6;
+        const auto pop = io::load_population(text.substr(from, text.find('"', from) - from));
+        auto best = *std::max_element(pop.population.begin(), pop.population.end(),
+                                      [](const auto& a, const auto& b) { return a->fitness < b->fitness; });
+        report::CheckpointBest out;
+        out.trees = best->genotype;
+        out.x = best->direct;
+        out.fitness = best->fitness;
+        out.generation = pop.population.generation;
+        out.who = "best probed trees";
+        return out;
+    });
+    const fs::path probe = run.run / "probe.xml";
+    write_text(probe, "<treeProbe from=\"" + (run.run / "population.xml").string() + "\"/>\n");
+    const auto foreign = report::replay(probe.string(), "best", 1, 0.0, true);
+    const auto own = report::replay(run.run.string(), "best", 1, 0.0, true);
+    ASSERT_EQ(foreign.size(), 1u);
+    EXPECT_EQ(foreign[0].replayed_fitness, foreign[0].stored_fitness);
+    EXPECT_EQ(foreign[0].replayed_fitness, own[0].replayed_fitness);
+    EXPECT_EQ(foreign[0].raw_fitness, own[0].raw_fitness);
+    EXPECT_EQ(foreign[0].distance, own[0].distance);
+    EXPECT_EQ(foreign[0].raw_outputs, own[0].raw_outputs);
+    EXPECT_EQ(foreign[0].duty_factors, own[0].duty_factors);
+    EXPECT_NE(foreign[0].label.find("best probed trees"), std::string::npos) << foreign[0].label;
+    // One individual is all such a file keeps.
+    EXPECT_THROW(report::replay(probe.string(), "3", 1, 0.0, false), InputError);
     fs::remove_all(dir);
 }
 

@@ -12,6 +12,7 @@
 #include "cic/io/settings.hpp"
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/recording.hpp"
+#include "cic/tree/tree.hpp"
 
 namespace cic::report {
 
@@ -57,13 +58,15 @@ void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalRes
 std::vector<ReplayItem> replay(const std::string& run_dir_or_population, const std::string& individual, int count,
                                double fps, bool trace);
 
-// The best gait a search's own checkpoint holds (a search registered from
-// outside cic's three checkpoint files: search/search.hpp, SearchKind::best).
+// The best individual a search's own checkpoint holds (a search registered from
+// outside cic's three checkpoint files: search/search.hpp, SearchKind::best):
+// a gait vector, or for a search of trees its trees.
 struct CheckpointBest {
-    std::vector<double> x;   // a gait vector in the unit box
+    std::vector<double> x;   // a gait vector in the unit box; beside trees, their direct genes (Neural.directOffsets)
     double fitness = 0;      // as the run stored it
     int generation = 0;      // where the run found it (or its last generation)
     std::string who;         // "best (1+8)-ES gait"
+    tree::Forest trees;      // a search of trees: the genotype, replayed as the run's type scores it
 };
 using CheckpointBestReader = std::function<CheckpointBest(const io::Settings&, const std::string& file)>;
 // replay() (view, assess, trace, render, export's terms) reads checkpoints
