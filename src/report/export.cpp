@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include <fmt/format.h>
@@ -77,6 +78,42 @@ void export_elites(const fs::path& run, const io::Settings& s, const std::string
     }
 }
 
+// A search registered from outside keeps its own checkpoint files: each saved
+// one gives the individual its reader names (its best), numbered as the file is.
+void export_foreign(const std::vector<fs::path>& files, const io::Settings& s, const CheckpointBestReader& reader,
+                    const std::string& prefix, bool terms, std::string& csv) {
+    std::optional<gait::Setup> setup;
+    std::optional<hypergp::Model> model;
+    for (const fs::path& file : files) {
+        const CheckpointBest best = reader(s, file.string());
+        const std::string number_text = file.stem().string().substr(4);   // gen-NNNN
+        if (number_text.empty() || number_text.find_first_not_of("0123456789") != std::string::npos)
+            throw InputError("a saved generation is named gen-NUMBER.xml", file.string());
+        std::string solution, depth, size;
+        std::optional<std::pair<double, double>> walk;
+        if (best.trees.empty()) {
+            for (double x : best.x) solution += (solution.empty() ? "" : " ") + number(x);
+            if (terms) {
+                if (!setup) setup.emplace(gait::Setup::from_settings(s));
+                const auto controller = setup->controller(best.x);
+                walk = eq71_terms(setup->robot, sim::evaluate(setup->robot, *controller, setup->sim));
+            }
+        } else {
+            for (const auto& t : best.trees) solution += (solution.empty() ? "" : " | ") + t.to_string();
+            depth = std::to_string(s.gp.forest_depth == gp::ForestDepth::Sum ? tree::total_depth(best.trees)
+                                                                             : tree::max_depth(best.trees));
+            size = std::to_string(tree::total_size(best.trees));
+            if (terms) {
+                if (!model) model.emplace(hypergp::Model::from_settings(s));
+                walk = eq71_terms(model->robot, hypergp::run(*model, best.trees, best.x).result);
+            }
+        }
+        csv += prefix + fmt::format("{},0,{},{},{},{},{},0,{},,\n", std::stoi(number_text), number(best.fitness),
+                                    walk ? number(walk->first) : "", walk ? number(walk->second) : "", depth, size,
+                                    cell(solution));
+    }
+}
+
 void export_run(const fs::path& run, const std::string& label, const std::string& config, const std::string& seed,
                 bool terms, std::string& csv) {
     if (!fs::is_regular_file(run / "settings.xml"))
@@ -85,6 +122,10 @@ void export_run(const fs::path& run, const std::string& label, const std::string
     const std::string prefix = cell(label) + "," + cell(config) + "," + seed + ",";
     const io::ExperimentFamily family = io::family_of(s);
     std::map<std::string, std::pair<double, double>> seen;   // genotype -> terms, once per run
+    const std::vector<fs::path> saved = saved_generations(run);
+    if (!saved.empty())
+        if (const CheckpointBestReader* reader = checkpoint_reader_for(saved.front().string()))
+            return export_foreign(saved, s, *reader, prefix, terms, csv);
     if (s.map_elites.enabled) return export_elites(run, s, prefix, terms, csv);
 
     // A gait run's checkpoints, and a Switch-HybrID run's after its hand-over
@@ -112,12 +153,12 @@ void export_run(const fs::path& run, const std::string& label, const std::string
         }
     };
     if (family == io::ExperimentFamily::Gait) {
-        for (const fs::path& file : saved_generations(run)) export_gait(file);
+        for (const fs::path& file : saved) export_gait(file);
         return;
     }
     std::optional<hypergp::Model> model;
     if (terms && family == io::ExperimentFamily::HyperGP) model = hypergp::Model::from_settings(s);
-    for (const fs::path& file : saved_generations(run)) {
+    for (const fs::path& file : saved) {
         if (s.neural.switches() && io::is_gait_file(file)) {
             export_gait(file);
             continue;

@@ -294,13 +294,18 @@ void register_checkpoint_reader(std::string root, CheckpointBestReader reader) {
         throw std::invalid_argument("checkpoint root <" + root + "> has a reader already");
 }
 
+const CheckpointBestReader* checkpoint_reader_for(const std::string& file) {
+    if (checkpoint_readers().empty()) return nullptr;
+    const auto it = checkpoint_readers().find(root_of(file));
+    return it == checkpoint_readers().end() ? nullptr : &it->second;
+}
+
 std::vector<ReplayItem> replay(const std::string& source, const std::string& individual, int count, double fps,
                                bool trace) {
     const Source src = locate(source);
     const io::Settings settings = io::read_settings(src.settings);
-    if (!checkpoint_readers().empty())   // a registered search's own checkpoint
-        if (const auto it = checkpoint_readers().find(root_of(src.population)); it != checkpoint_readers().end())
-            return replay_foreign(src, settings, individual, it->second, fps, trace);
+    if (const CheckpointBestReader* reader = checkpoint_reader_for(src.population.string()))
+        return replay_foreign(src, settings, individual, *reader, fps, trace);   // a registered search's own file
     if (settings.map_elites.enabled) return replay_archive(src, settings, individual, count, fps, trace);
     if (individual.rfind("cell:", 0) == 0)
         throw InputError("--cell picks an elite of a MAP-Elites run (MapElites.enabled); this run has no archive",

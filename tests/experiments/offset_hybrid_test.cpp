@@ -3,6 +3,7 @@
 // the formula says; a run carries them through workers, population files,
 // resumes and replays bit for bit; settings and files that do not fit are refused.
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "cic/experiments/hypergp/queries.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
+#include "cic/report/export.hpp"
 #include "cic/report/replay.hpp"
 #include "cic/core/error.hpp"
 #include "support/files.hpp"
@@ -185,6 +187,24 @@ TEST(OffsetHybrid, ARegisteredReaderOfTreesReplaysThemAsTheRunDid) {
     EXPECT_NE(foreign[0].label.find("best probed trees"), std::string::npos) << foreign[0].label;
     // One individual is all such a file keeps.
     EXPECT_THROW(report::replay(probe.string(), "3", 1, 0.0, false), InputError);
+
+    // cic export of a run whose saved generations are such files: a row per file, its best.
+    const fs::path foreign_run = dir / "foreign-run";
+    fs::create_directories(foreign_run / "populations");
+    fs::copy_file(run.run / "settings.xml", foreign_run / "settings.xml");
+    for (const char* name : {"gen-0000.xml", "gen-0001.xml"}) fs::copy_file(probe, foreign_run / "populations" / name);
+    const std::string csv = report::export_individuals({{foreign_run}, true});
+    const auto pop = io::load_population(run.run / "population.xml");
+    const auto best = *std::max_element(pop.population.begin(), pop.population.end(),
+                                        [](const auto& a, const auto& b) { return a->fitness < b->fitness; });
+    std::string trees;
+    for (const auto& t : best->genotype) trees += (trees.empty() ? "" : " | ") + t.to_string();
+    const std::string row = fmt::format(",0,{},{},{},{},{},0,{},,\n", best->fitness, own[0].distance,
+                                        own[0].elevation, best->depth(io::load_settings(run.run / "settings.xml", {}).gp.forest_depth), best->size(),
+                                        trees);
+    EXPECT_NE(csv.find(",0" + row), std::string::npos) << csv;   // generation 0
+    EXPECT_NE(csv.find(",1" + row), std::string::npos) << csv;   // generation 1
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3) << csv;
     fs::remove_all(dir);
 }
 

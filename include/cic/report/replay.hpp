@@ -73,5 +73,8 @@ using CheckpointBestReader = std::function<CheckpointBest(const io::Settings&, c
 // whose root element is `root` with `reader` and replays the gait it gives.
 // Throws std::invalid_argument for a root of cic's own files or one taken.
 void register_checkpoint_reader(std::string root, CheckpointBestReader reader);
+// The reader registered for the root element of `file`, or nullptr (no such
+// registration, or not an XML file: cic's own readers then say what is wrong).
+const CheckpointBestReader* checkpoint_reader_for(const std::string& file);
 
 } // namespace cic::report
