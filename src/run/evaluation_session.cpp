@@ -17,6 +17,7 @@
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 #include "cic/experiments/registry.hpp"
+#include "cic/gp/config.hpp"
 #include "cic/gp/individual.hpp"
 #include "cic/io/archive_xml.hpp"
 #include "cic/io/experiment_types.hpp"
@@ -62,6 +63,7 @@ struct EvaluationSession::Impl {
     std::optional<gait::Setup> setup;      // gait family
     std::optional<hypergp::Model> model;   // HyperGP family
     std::optional<tree::PrimitiveSet> primitives;
+    gp::DirectGenes offsets;               // Offset-HybrID's, count 0 without them
     std::string job_kind;
     std::unique_ptr<experiments::Context> ctx;
     std::unique_ptr<gait::Evaluator> gait_evaluator;
@@ -73,6 +75,7 @@ struct EvaluationSession::Impl {
     // Throws InputError naming the genotype's place in the batch.
     void check(const Genotype& g, std::size_t index) const {
         const std::string who = fmt::format("genotype {}", index);
+        check_offsets(g, who);
         if (form == GenotypeForm::Vector) {
             if (!g.trees.empty())
                 throw InputError(who + ": these settings evolve " + settings.experiment.type +
@@ -92,6 +95,23 @@ struct EvaluationSession::Impl {
         if (g.trees.size() != dimension())
             throw InputError(fmt::format("{}: {} tree{}, but GP.numberOfTreesInForestGenotype is {}", who,
                                          g.trees.size(), g.trees.size() == 1 ? "" : "s", dimension()));
+    }
+
+    void check_offsets(const Genotype& g, const std::string& who) const {
+        if (offsets.count == 0) {
+            if (!g.offsets.empty())
+                throw InputError(who + ": offsets are Offset-HybrID's direct genes beside HyperGP trees; these "
+                                       "settings have none (Neural.directOffsets = 0)");
+            return;
+        }
+        if (g.offsets.size() != offsets.count)
+            throw InputError(fmt::format("{}: {} offsets, but these settings' Offset-HybrID (Neural.directOffsets) "
+                                         "has one per hinge of robot {}: {}",
+                                         who, g.offsets.size(), model->robot.name, offsets.count));
+        for (std::size_t i = 0; i < g.offsets.size(); ++i)
+            if (!std::isfinite(g.offsets[i]) || std::abs(g.offsets[i]) > offsets.limit)
+                throw InputError(fmt::format("{}: offset {} is {}, outside [-{}, {}] (units of pi/2)", who, i,
+                                             g.offsets[i], offsets.limit, offsets.limit));
     }
 
     tree::Forest forest_of(const Genotype& g, std::size_t index) const {
@@ -123,10 +143,6 @@ EvaluationSession::EvaluationSession(SessionOptions options) : impl_(std::make_u
         throw InputError("scores robot experiments (HyperGP, gait, CPG and their types); these settings are symbolic "
                          "regression (Experiment.type " + s.experiment.type + ")", im.found.string());
     experiments::check_inputs(s);   // the robot and every input a run of them reads
-    if (s.neural.direct_offsets)   // its genotype is trees plus per-hinge offsets: not one of the forms below yet
-        throw InputError("Offset-HybrID (Neural.directOffsets = 1) genotypes, trees with per-hinge offsets, cannot be "
-                         "evaluated from outside a run yet; use settings without it",
-                         im.found.string());
     if (s.map_elites.enabled) im.descriptor = s.map_elites.descriptor;
     if (io::genotype_form(s) == io::GenotypeForm::Vector) {
         im.form = GenotypeForm::Vector;
@@ -134,6 +150,7 @@ EvaluationSession::EvaluationSession(SessionOptions options) : impl_(std::make_u
     } else {
         im.form = GenotypeForm::Forest;
         im.model.emplace(hypergp::Model::from_settings(s));
+        if (s.neural.direct_offsets) im.offsets = hypergp::direct_offset_genes(*im.model);
         im.primitives.emplace(s.gp.primitives);
         im.job_kind = job_kind_of(s);
     }
@@ -174,6 +191,7 @@ const io::Settings& EvaluationSession::settings() const { return impl_->settings
 fs::path EvaluationSession::settings_file() const { return impl_->found; }
 GenotypeForm EvaluationSession::form() const { return impl_->form; }
 std::size_t EvaluationSession::dimension() const { return impl_->dimension(); }
+std::size_t EvaluationSession::offsets() const { return impl_->offsets.count; }
 int EvaluationSession::workers() const { return impl_->opt.workers; }
 
 void EvaluationSession::check(const Genotype& g, std::size_t index) const {
@@ -202,7 +220,8 @@ Scores EvaluationSession::evaluate(const std::vector<Genotype>& batch) {
         // The run's own job texts (hypergp::job_body), parsed first so a bad tree fails the batch before it runs.
         std::vector<std::string> jobs;
         for (std::size_t i = 0; i < batch.size(); ++i)
-            jobs.push_back(im.job_kind + "\n" + hypergp::job_body(im.forest_of(batch[i], i), im.descriptor));
+            jobs.push_back(im.job_kind + "\n" +
+                           hypergp::job_body(im.forest_of(batch[i], i), im.descriptor, batch[i].offsets));
         const std::vector<JobResult> results = im.runner->run(jobs);
         for (const auto& note : im.runner->take_notes()) im.opt.warn("warning: " + note);
         for (std::size_t i = 0; i < results.size(); ++i) {
@@ -238,7 +257,8 @@ Walk EvaluationSession::simulate(const Genotype& g, bool trace) const {
         r = sim::evaluate(im.setup->robot, *controller, im.setup->sim, options);
         w.fitness = r.fitness;
     } else {
-        hypergp::Outcome o = experiments::evaluate_as_type(*im.model, im.settings, im.forest_of(g, 0), options);
+        hypergp::Outcome o =
+            experiments::evaluate_as_type(*im.model, im.settings, im.forest_of(g, 0), options, false, g.offsets);
         w.fitness = o.fitness;   // as the run scores it: the penalty, or a registered type's own score
         r = std::move(o.result);
     }
@@ -296,6 +316,7 @@ RunBest read_run_best(const fs::path& run_dir) {
     if (!top) throw InputError("the population is empty", population.string());
     best.form = GenotypeForm::Forest;
     for (const auto& t : (*top)->genotype) best.genotype.trees.push_back(t.to_string());
+    best.genotype.offsets = (*top)->direct;   // Offset-HybrID's, empty otherwise
     best.fitness = (*top)->fitness;
     best.generation = p.population.generation;
     return best;

@@ -94,6 +94,33 @@ def test_simulate_a_hypergp_forest(runs):
     assert walk.angles.shape[1] == 8   # R0: four legs of two hinges
 
 
+def test_an_offset_hybrid_genotype_scores_its_stored_fitness_with_its_offsets(runs):
+    run = cic.read_run(runs["offset"])
+    assert run.best_offsets.shape == (8,) and np.any(run.best_offsets != 0)   # R0's eight hinges
+    with cic.Evaluator(run.settings, workers=2) as ev:
+        assert ev.offsets == 8
+        scores = ev.evaluate([run.best_genotype], offsets=[run.best_offsets])
+        assert bits(scores.fitness[0]) == bits(run.best_fitness)
+        # The same trees without their offsets walk otherwise: the offsets are not ignored.
+        zero = ev.evaluate([run.best_genotype], offsets=[np.zeros(8)])
+        assert bits(zero.fitness[0]) != bits(run.best_fitness)
+        walk = ev.simulate(run.best_genotype, offsets=run.best_offsets)
+        assert bits(walk.fitness) == bits(run.best_fitness)
+        with pytest.raises(ValueError, match="pass offsets="):
+            ev.evaluate([run.best_genotype])
+        with pytest.raises(ValueError, match="7 offsets, but .* 8"):
+            ev.evaluate([run.best_genotype], offsets=[np.zeros(7)])
+        with pytest.raises(ValueError, match="one row per genotype"):
+            ev.evaluate([run.best_genotype], offsets=np.zeros(8))
+        with pytest.raises(ValueError, match="offset 0 is 9"):
+            ev.evaluate([run.best_genotype], offsets=[[9.0] + [0.0] * 7])
+    with cic.Evaluator(cic.read_run(runs["hypergp"]).settings) as plain:
+        assert plain.offsets == 0
+        with pytest.raises(ValueError, match="Neural.directOffsets = 0"):
+            plain.evaluate(["x0"], offsets=[[0.1]])
+    assert cic.read_run(runs["hypergp"]).best_offsets.shape == (0,)
+
+
 # --- bad input: a Python exception, never a dead interpreter --------------------------
 
 @pytest.fixture(scope="module")
