@@ -98,14 +98,26 @@ def raw_scores(results, studies, cic):
                                                       ["raw_fitness"])) for r in rows]
 
 
-def groups(scores, baselines):
+def planned_methods(results):
+    """{robot: {method}} of every compare run in the ledger, finished or not: what each robot's
+    compare sweep runs."""
+    out = {}
+    for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv"))):
+        if r["study"].startswith("compare-"):
+            out.setdefault(robot_of(r["study"]), set()).add(method_of(r["config"]))
+    return out
+
+
+def groups(scores, baselines, planned=None):
     """({robot: {method: [raw]}}, {robot: [method taken from issue 21]}): R1 and R2 get issue 21's
     direct and HyperGP-gait runs for the methods their compare sweeps do not run (compare-sweeps
-    runs the direct method there when R1's tuning winner is not issue 21's configuration)."""
+    runs the direct method there when R1's tuning winner is not issue 21's configuration). A
+    method a sweep runs (`planned`, finished or not) is never borrowed: until its runs finish,
+    its cells wait."""
     out = {}
     for study, config, _, raw in scores:
         out.setdefault(robot_of(study), {}).setdefault(method_of(config), []).append(raw)
-    own = {robot: set(methods) for robot, methods in out.items()}
+    own = {robot: set(methods) | (planned or {}).get(robot, set()) for robot, methods in out.items()}
     borrowed = {}
     if os.path.exists(baselines):
         for r in csv.DictReader(open(baselines)):
@@ -216,7 +228,8 @@ def results(results_dir, studies, cic, figure_path, baselines):
         import scipy.stats  # noqa: F401
     except ImportError as e:
         raise sc.Refusal(f"results needs scipy and matplotlib ({e}): run it with Debian's /usr/bin/python3")
-    g, borrowed = groups(raw_scores(results_dir, studies, cic), baselines)
+    planned = planned_methods(results_dir)
+    g, borrowed = groups(raw_scores(results_dir, studies, cic), baselines, planned)
     if not g:
         raise sc.Refusal(f"results: no finished compare run in {os.path.join(results_dir, 'scaling-runs.csv')}")
     s = score(g)
@@ -226,6 +239,11 @@ def results(results_dir, studies, cic, figure_path, baselines):
            "HyperGP method faces the best direct method on the same robot: two-sided Mann-Whitney U, Holm over",
            f"all {len(s)} cells of the table, A12 (the chance that the HyperGP method's run beats the direct one's)",
            "and the ratio of medians with bootstrap 95 % intervals."]
+    for robot in sorted(g):
+        waiting = sorted(m for m in planned.get(robot, set()) if m not in g[robot])
+        if waiting:
+            out.append(f"{robot}: {' and '.join(LABELS[m] for m in waiting)} "
+                       f"{'has' if len(waiting) == 1 else 'have'} no finished run yet.")
     for robot, methods in sorted(borrowed.items()):
         out.append(f"{robot.upper() if robot in sc.R_ROBOTS else robot}: "
                    f"{' and '.join(LABELS[m] for m in methods)} {'is' if len(methods) == 1 else 'are'} issue 21's "

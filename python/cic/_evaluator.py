@@ -118,7 +118,7 @@ class Evaluator:
         self._session = _core.Session(str(settings_path), int(workers), _overrides(set), _paths.executable())
         self.form = self._session.form                  # 'vector' (gait, CPG) or 'forest' (HyperGP trees)
         self.dimension = self._session.dimension        # a vector's length, or the trees of a forest
-        self.offsets = self._session.offsets            # Offset-HybrID's direct offsets per forest (0: none)
+        self.offset_count = self._session.offset_count  # Offset-HybrID's direct offsets per forest (0: none)
         self.workers = self._session.workers
         self.settings_file = self._session.settings_file   # the file found
         self.experiment = self._session.experiment      # Experiment.type
@@ -153,7 +153,7 @@ class Evaluator:
     def evaluate(self, batch, offsets=None):
         """Scores a batch: a 2-D array or list of unit-box vectors (gait, CPG), or a list of
         S-expression strings / lists of strings (HyperGP trees, one list per forest). With
-        Offset-HybrID settings (Evaluator.offsets > 0) `offsets` gives each forest's direct
+        Offset-HybrID settings (Evaluator.offset_count > 0) `offsets` gives each forest's direct
         offsets, one row per genotype (units of pi/2, as Run.best_offsets). Returns an Evaluation."""
         if self._closed:
             raise ValueError("this Evaluator is closed")
@@ -163,7 +163,7 @@ class Evaluator:
             result = self._session.evaluate_vectors(_vector_batch(batch, self.dimension))
         else:
             forests = _forest_batch(batch)
-            result = self._session.evaluate_forests(forests, _offset_rows(offsets, len(forests), self.offsets))
+            result = self._session.evaluate_forests(forests, _offset_rows(offsets, len(forests), self.offset_count))
         for line in self._session.take_warnings():
             warnings.warn(line, CicWarning, stacklevel=2)
         return Evaluation(result)
@@ -212,7 +212,7 @@ def _forest_batch(batch):
 def _offset_rows(offsets, count, per_genotype):
     """Offset-HybrID's offsets as one list of floats per genotype, or [] for none."""
     if offsets is None:
-        if per_genotype:
+        if per_genotype and count:
             raise ValueError(f"these settings are Offset-HybrID's (Neural.directOffsets): pass offsets=, "
                              f"{per_genotype} per genotype (Run.best_offsets)")
         return []
@@ -240,8 +240,16 @@ def _simulate(session, form, genotype, trace, offsets=None):
             raise ValueError(f"a gait genotype is a 1-D sequence of numbers; got dtype {arr.dtype}, shape {arr.shape}")
         return Simulation(session.simulate(arr.astype(np.float64).tolist(), [], bool(trace), []))
     trees = _forest_batch([genotype])[0]
-    rows = _offset_rows(None if offsets is None else [offsets], 1, session.offsets)
-    return Simulation(session.simulate([], trees, bool(trace), rows[0] if rows else []))
+    if offsets is None:
+        if session.offset_count:
+            raise ValueError(f"these settings are Offset-HybrID's (Neural.directOffsets): pass offsets=, "
+                             f"{session.offset_count} numbers (Run.best_offsets)")
+        return Simulation(session.simulate([], trees, bool(trace), []))
+    arr = np.asarray(offsets) if not isinstance(offsets, (str, bytes)) else np.asarray([])
+    if arr.dtype.kind not in "fiu" or arr.ndim != 1:
+        raise ValueError(f"one genotype's offsets are a 1-D sequence of numbers; got dtype {arr.dtype}, "
+                         f"shape {arr.shape}")
+    return Simulation(session.simulate([], trees, bool(trace), arr.astype(np.float64).tolist()))
 
 
 def simulate(settings_path, genotype, trace=True, set=None, offsets=None):

@@ -82,7 +82,7 @@ public:
 
     std::string form() const { return form_name(session_->form()); }
     std::size_t dimension() const { return session_->dimension(); }
-    std::size_t offsets() const { return session_->offsets(); }
+    std::size_t offset_count() const { return session_->offsets(); }
     int workers() const { return session_->workers(); }
     std::string settings_file() const { return session_->settings_file().string(); }
     std::string experiment() const { return session_->settings().experiment.type; }
@@ -214,7 +214,7 @@ PYBIND11_MODULE(_core, m) {
              py::arg("settings"), py::arg("workers"), py::arg("overrides"), py::arg("worker_executable"))
         .def_property_readonly("form", &Session::form)
         .def_property_readonly("dimension", &Session::dimension)
-        .def_property_readonly("offsets", &Session::offsets)
+        .def_property_readonly("offset_count", &Session::offset_count)
         .def_property_readonly("workers", &Session::workers)
         .def_property_readonly("settings_file", &Session::settings_file)
         .def_property_readonly("experiment", &Session::experiment)

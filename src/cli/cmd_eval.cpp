@@ -124,7 +124,7 @@ json info_of(const run::EvaluationSession& session) {
     j["experiment"] = s.experiment.type;
     j["form"] = session.form() == run::GenotypeForm::Vector ? "vector" : "forest";
     j["dimension"] = session.dimension();
-    j["offsets"] = session.offsets();
+    j["offset_count"] = session.offsets();
     j["descriptor"] = s.map_elites.enabled ? sim::to_string(s.map_elites.descriptor) : "none";
     j["workers"] = session.workers();
     return j;

@@ -11,6 +11,7 @@
 #include "cic/core/error.hpp"
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
+#include "cic/gp/individual.hpp"
 #include "cic/io/experiment_types.hpp"
 #include "cic/io/archive_xml.hpp"
 #include "cic/io/gait_xml.hpp"
@@ -69,8 +70,7 @@ void export_elites(const fs::path& run, const io::Settings& s, const std::string
             dist = number(d), elev = number(z);
         }
         if (!gait) {
-            depth = std::to_string(s.gp.forest_depth == gp::ForestDepth::Sum ? tree::total_depth(e.genotype)
-                                                                             : tree::max_depth(e.genotype));
+            depth = std::to_string(gp::forest_depth(e.genotype, s.gp.forest_depth));
             size = std::to_string(tree::total_size(e.genotype));
         }
         csv += prefix + fmt::format("{},{},{},{},{},{},{},0,{},{},{}\n", a.batches - 1, e.cell, number(e.fitness), dist,
@@ -80,37 +80,41 @@ void export_elites(const fs::path& run, const io::Settings& s, const std::string
 
 // A search registered from outside keeps its own checkpoint files: each saved
 // one gives the individual its reader names (its best), numbered as the file is.
+// `seen`: eq. 7.1's terms of each genotype already replayed in this run.
 void export_foreign(const std::vector<fs::path>& files, const io::Settings& s, const CheckpointBestReader& reader,
-                    const std::string& prefix, bool terms, std::string& csv) {
+                    const std::string& prefix, bool terms, std::map<std::string, std::pair<double, double>>& seen,
+                    std::string& csv) {
     std::optional<gait::Setup> setup;
     std::optional<hypergp::Model> model;
     for (const fs::path& file : files) {
-        const CheckpointBest best = reader(s, file.string());
-        const std::string number_text = file.stem().string().substr(4);   // gen-NNNN
-        if (number_text.empty() || number_text.find_first_not_of("0123456789") != std::string::npos)
+        const CheckpointBest best = read_checkpoint_best(reader, s, file.string());
+        const std::string digits = file.stem().string().substr(4);   // gen-NNNN
+        if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
             throw InputError("a saved generation is named gen-NUMBER.xml", file.string());
         std::string solution, depth, size;
-        std::optional<std::pair<double, double>> walk;
-        if (best.trees.empty()) {
-            for (double x : best.x) solution += (solution.empty() ? "" : " ") + number(x);
-            if (terms) {
+        for (const auto& t : best.trees) solution += (solution.empty() ? "" : " | ") + t.to_string();
+        if (!best.trees.empty()) {
+            depth = std::to_string(gp::forest_depth(best.trees, s.gp.forest_depth));
+            size = std::to_string(tree::total_size(best.trees));
+        }
+        std::string key = solution;   // the genotype: a gait, or trees and their direct offsets
+        for (double x : best.x) key += " " + number(x);
+        if (best.trees.empty()) solution = key.substr(key.empty() ? 0 : 1);
+        std::string dist, elev;
+        if (terms) {
+            auto [it, fresh] = seen.try_emplace(key);
+            if (fresh && best.trees.empty()) {
                 if (!setup) setup.emplace(gait::Setup::from_settings(s));
                 const auto controller = setup->controller(best.x);
-                walk = eq71_terms(setup->robot, sim::evaluate(setup->robot, *controller, setup->sim));
-            }
-        } else {
-            for (const auto& t : best.trees) solution += (solution.empty() ? "" : " | ") + t.to_string();
-            depth = std::to_string(s.gp.forest_depth == gp::ForestDepth::Sum ? tree::total_depth(best.trees)
-                                                                             : tree::max_depth(best.trees));
-            size = std::to_string(tree::total_size(best.trees));
-            if (terms) {
+                it->second = eq71_terms(setup->robot, sim::evaluate(setup->robot, *controller, setup->sim));
+            } else if (fresh) {
                 if (!model) model.emplace(hypergp::Model::from_settings(s));
-                walk = eq71_terms(model->robot, hypergp::run(*model, best.trees, best.x).result);
+                it->second = eq71_terms(model->robot, hypergp::run(*model, best.trees, best.x).result);
             }
+            dist = number(it->second.first), elev = number(it->second.second);
         }
-        csv += prefix + fmt::format("{},0,{},{},{},{},{},0,{},,\n", std::stoi(number_text), number(best.fitness),
-                                    walk ? number(walk->first) : "", walk ? number(walk->second) : "", depth, size,
-                                    cell(solution));
+        csv += prefix + fmt::format("{},0,{},{},{},{},{},0,{},,\n", std::stoi(digits), number(best.fitness), dist,
+                                    elev, depth, size, cell(solution));
     }
 }
 
@@ -125,7 +129,7 @@ void export_run(const fs::path& run, const std::string& label, const std::string
     const std::vector<fs::path> saved = saved_generations(run);
     if (!saved.empty())
         if (const CheckpointBestReader* reader = checkpoint_reader_for(saved.front().string()))
-            return export_foreign(saved, s, *reader, prefix, terms, csv);
+            return export_foreign(saved, s, *reader, prefix, terms, seen, csv);
     if (s.map_elites.enabled) return export_elites(run, s, prefix, terms, csv);
 
     // A gait run's checkpoints, and a Switch-HybrID run's after its hand-over

@@ -134,15 +134,11 @@ std::vector<ReplayItem> replay_foreign(const Source& src, const io::Settings& se
     if (individual != "best")
         throw InputError("this run's checkpoint keeps one individual to replay: use --individual best",
                          src.population.string());
-    const CheckpointBest best = reader(settings, src.population.string());
-    const bool trees = !best.trees.empty();
-    if (trees && io::family_of(settings) != io::ExperimentFamily::HyperGP)
-        throw InputError("the checkpoint's reader gave trees, but these settings' type does not walk a HyperGP "
-                         "genotype",
-                         src.population.string());
-    ReplayItem item = trees ? replay_trees(hypergp::Model::from_settings(settings), settings, best.trees, best.x, fps,
-                                           trace)
-                            : replay_point(gait::Setup::from_settings(settings), best.x, fps, trace);
+    const CheckpointBest best = read_checkpoint_best(reader, settings, src.population.string());
+    ReplayItem item = best.trees.empty()
+                          ? replay_point(gait::Setup::from_settings(settings), best.x, fps, trace)
+                          : replay_trees(hypergp::Model::from_settings(settings), settings, best.trees, best.x, fps,
+                                         trace);
     item.label = fmt::format("{}, found in generation {}", best.who, best.generation);
     item.who = best.who;
     item.stored_fitness = best.fitness;
@@ -292,6 +288,35 @@ void register_checkpoint_reader(std::string root, CheckpointBestReader reader) {
     if (root.empty() || !reader) throw std::invalid_argument("a checkpoint reader needs a root element and a reader");
     if (!checkpoint_readers().emplace(root, std::move(reader)).second)
         throw std::invalid_argument("checkpoint root <" + root + "> has a reader already");
+}
+
+CheckpointBest read_checkpoint_best(const CheckpointBestReader& reader, const io::Settings& s, const std::string& file) {
+    CheckpointBest best = reader(s, file);
+    if (best.trees.empty()) {
+        if (io::genotype_form(s) != io::GenotypeForm::Vector)
+            throw InputError(fmt::format("the checkpoint's reader gave a gait vector, but Experiment.type {} evolves "
+                                         "HyperGP trees",
+                                         s.experiment.type),
+                             file);
+        const std::size_t want = gait::Setup::from_settings(s).dimension();
+        if (best.x.size() != want)
+            throw InputError(fmt::format("the checkpoint's reader gave a gait of {} numbers, but these settings' gait "
+                                         "has {}",
+                                         best.x.size(), want),
+                             file);
+        return best;
+    }
+    if (io::family_of(s) != io::ExperimentFamily::HyperGP)
+        throw InputError(fmt::format("the checkpoint's reader gave trees, but Experiment.type {} does not walk a "
+                                     "HyperGP genotype",
+                                     s.experiment.type),
+                         file);
+    if (best.trees.size() != static_cast<std::size_t>(s.gp.trees_per_genotype))
+        throw InputError(fmt::format("the checkpoint's reader gave {} trees, but GP.numberOfTreesInForestGenotype is {}",
+                                     best.trees.size(), s.gp.trees_per_genotype),
+                         file);
+    hypergp::check_offsets(hypergp::Model::from_settings(s), best.x, "the checkpoint's best", file);
+    return best;
 }
 
 const CheckpointBestReader* checkpoint_reader_for(const std::string& file) {

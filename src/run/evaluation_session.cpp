@@ -17,7 +17,6 @@
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 #include "cic/experiments/registry.hpp"
-#include "cic/gp/config.hpp"
 #include "cic/gp/individual.hpp"
 #include "cic/io/archive_xml.hpp"
 #include "cic/io/experiment_types.hpp"
@@ -63,7 +62,7 @@ struct EvaluationSession::Impl {
     std::optional<gait::Setup> setup;      // gait family
     std::optional<hypergp::Model> model;   // HyperGP family
     std::optional<tree::PrimitiveSet> primitives;
-    gp::DirectGenes offsets;               // Offset-HybrID's, count 0 without them
+    std::size_t offsets = 0;               // Offset-HybrID's per genotype, 0 without them
     std::string job_kind;
     std::unique_ptr<experiments::Context> ctx;
     std::unique_ptr<gait::Evaluator> gait_evaluator;
@@ -98,20 +97,11 @@ struct EvaluationSession::Impl {
     }
 
     void check_offsets(const Genotype& g, const std::string& who) const {
-        if (offsets.count == 0) {
-            if (!g.offsets.empty())
-                throw InputError(who + ": offsets are Offset-HybrID's direct genes beside HyperGP trees; these "
-                                       "settings have none (Neural.directOffsets = 0)");
-            return;
-        }
-        if (g.offsets.size() != offsets.count)
-            throw InputError(fmt::format("{}: {} offsets, but these settings' Offset-HybrID (Neural.directOffsets) "
-                                         "has one per hinge of robot {}: {}",
-                                         who, g.offsets.size(), model->robot.name, offsets.count));
-        for (std::size_t i = 0; i < g.offsets.size(); ++i)
-            if (!std::isfinite(g.offsets[i]) || std::abs(g.offsets[i]) > offsets.limit)
-                throw InputError(fmt::format("{}: offset {} is {}, outside [-{}, {}] (units of pi/2)", who, i,
-                                             g.offsets[i], offsets.limit, offsets.limit));
+        if (model)
+            hypergp::check_offsets(*model, g.offsets, who);
+        else if (!g.offsets.empty())
+            throw InputError(who + ": offsets are Offset-HybrID's direct genes beside HyperGP trees; these settings "
+                                   "evolve vectors");
     }
 
     tree::Forest forest_of(const Genotype& g, std::size_t index) const {
@@ -150,7 +140,7 @@ EvaluationSession::EvaluationSession(SessionOptions options) : impl_(std::make_u
     } else {
         im.form = GenotypeForm::Forest;
         im.model.emplace(hypergp::Model::from_settings(s));
-        if (s.neural.direct_offsets) im.offsets = hypergp::direct_offset_genes(*im.model);
+        im.offsets = hypergp::direct_offset_genes(*im.model).count;
         im.primitives.emplace(s.gp.primitives);
         im.job_kind = job_kind_of(s);
     }
@@ -191,7 +181,7 @@ const io::Settings& EvaluationSession::settings() const { return impl_->settings
 fs::path EvaluationSession::settings_file() const { return impl_->found; }
 GenotypeForm EvaluationSession::form() const { return impl_->form; }
 std::size_t EvaluationSession::dimension() const { return impl_->dimension(); }
-std::size_t EvaluationSession::offsets() const { return impl_->offsets.count; }
+std::size_t EvaluationSession::offsets() const { return impl_->offsets; }
 int EvaluationSession::workers() const { return impl_->opt.workers; }
 
 void EvaluationSession::check(const Genotype& g, std::size_t index) const {

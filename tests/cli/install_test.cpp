@@ -18,6 +18,7 @@
 #include "cic/core/error.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_table.hpp"
+#include "support/expect_has.hpp"
 #include "support/run_helpers.hpp"
 
 namespace fs = std::filesystem;
@@ -36,7 +37,6 @@ namespace {
 #define CIC_EXAMPLE_CXX_FLAGS ""
 #endif
 
-#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << "no '" << (part) << "' in:\n" << (text)
 
 std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 

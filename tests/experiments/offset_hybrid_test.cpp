@@ -20,6 +20,7 @@
 #include "cic/report/export.hpp"
 #include "cic/report/replay.hpp"
 #include "cic/core/error.hpp"
+#include "support/expect_has.hpp"
 #include "support/files.hpp"
 #include "support/run_helpers.hpp"
 
@@ -205,6 +206,38 @@ TEST(OffsetHybrid, ARegisteredReaderOfTreesReplaysThemAsTheRunDid) {
     EXPECT_NE(csv.find(",0" + row), std::string::npos) << csv;   // generation 0
     EXPECT_NE(csv.find(",1" + row), std::string::npos) << csv;   // generation 1
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3) << csv;
+
+    // What a reader gives is checked against the settings, as cic's own files are.
+    report::register_checkpoint_reader("treeProbeWrong", [](const io::Settings&, const std::string& file) {
+        const std::string text = read_text(file);
+        report::CheckpointBest out;
+        if (text.find("gait") != std::string::npos) {
+            out.x = {0.5, 0.5};
+        } else if (text.find("three") != std::string::npos) {
+            out.trees = {tree::Tree::parse("x0"), tree::Tree::parse("x1"), tree::Tree::parse("x2")};
+        } else {
+            out.trees = {tree::Tree::parse("(add x0 x1)")};
+            out.x.assign(text.find("short") != std::string::npos ? 7 : 8, text.find("far") != std::string::npos ? 5.0 : 0.0);
+        }
+        return out;
+    });
+    auto refusal = [&](const std::string& what) {
+        write_text(probe, "<treeProbeWrong kind=\"" + what + "\"/>\n");
+        try {
+            (void)report::replay(probe.string(), "best", 1, 0.0, false);
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.file(), probe.string());
+            return e.message();
+        }
+        return std::string("(accepted)");
+    };
+    EXPECT_HAS(refusal("short"), "7 offsets, but these settings' Offset-HybrID");
+    EXPECT_HAS(refusal("far"), "offset 0 is 5, outside [-2, 2]");
+    EXPECT_HAS(refusal("gait"), "gave a gait vector, but Experiment.type hypergp evolves HyperGP trees");
+    EXPECT_HAS(refusal("three"), "gave 3 trees, but GP.numberOfTreesInForestGenotype is 1");
+    write_text(probe, "<treeProbeWrong kind=\"short\"/>\n");
+    fs::copy_file(probe, foreign_run / "populations" / "gen-0000.xml", fs::copy_options::overwrite_existing);
+    EXPECT_THROW((void)report::export_individuals({{foreign_run}, false}), InputError);
     fs::remove_all(dir);
 }
 

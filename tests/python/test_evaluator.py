@@ -98,7 +98,7 @@ def test_an_offset_hybrid_genotype_scores_its_stored_fitness_with_its_offsets(ru
     run = cic.read_run(runs["offset"])
     assert run.best_offsets.shape == (8,) and np.any(run.best_offsets != 0)   # R0's eight hinges
     with cic.Evaluator(run.settings, workers=2) as ev:
-        assert ev.offsets == 8
+        assert ev.offset_count == 8
         scores = ev.evaluate([run.best_genotype], offsets=[run.best_offsets])
         assert bits(scores.fitness[0]) == bits(run.best_fitness)
         # The same trees without their offsets walk otherwise: the offsets are not ignored.
@@ -114,8 +114,13 @@ def test_an_offset_hybrid_genotype_scores_its_stored_fitness_with_its_offsets(ru
             ev.evaluate([run.best_genotype], offsets=np.zeros(8))
         with pytest.raises(ValueError, match="offset 0 is 9"):
             ev.evaluate([run.best_genotype], offsets=[[9.0] + [0.0] * 7])
+        with pytest.raises(ValueError, match="1-D sequence"):
+            ev.simulate(run.best_genotype, offsets=[run.best_offsets])
+        with pytest.raises(ValueError, match="pass offsets="):
+            ev.simulate(run.best_genotype)
+        assert len(ev.evaluate([])) == 0   # an empty batch needs no offsets
     with cic.Evaluator(cic.read_run(runs["hypergp"]).settings) as plain:
-        assert plain.offsets == 0
+        assert plain.offset_count == 0
         with pytest.raises(ValueError, match="Neural.directOffsets = 0"):
             plain.evaluate(["x0"], offsets=[[0.1]])
     assert cic.read_run(runs["hypergp"]).best_offsets.shape == (0,)

@@ -46,7 +46,7 @@ def test_an_offset_hybrid_line_carries_its_offsets(runs):
     assert "error" in bare and "offsets" in bare["error"]   # settings with offsets need them
     info = json.loads(subprocess.run([CIC, "eval", "--settings", run.settings, "--info"], capture_output=True,
                                      text=True).stdout)
-    assert info["offsets"] == 8
+    assert info["offset_count"] == 8
 
 
 def test_a_bare_vector_is_a_genotype_too():

@@ -195,6 +195,10 @@ check(grouped["r1"] == {"direct": [9.0], "offset-hybrid": [3.0], "hypergp-gait":
 grouped, borrowed = sr.groups([("compare-r1", "offset-hybrid.offset-s0.3", "1", 3.0)], str(base_csv))
 check(grouped["r1"]["direct"] == [5.0, 5.0] and borrowed == {"r1": ["direct", "hypergp-gait"]},
       f"and the direct method where the compare runs none: {grouped} {borrowed}")
+grouped, borrowed = sr.groups([("compare-r1", "offset-hybrid.offset-s0.3", "1", 3.0)], str(base_csv),
+                              {"r1": {"direct", "offset-hybrid"}})
+check("direct" not in grouped["r1"] and borrowed == {"r1": ["hypergp-gait"]},
+      f"a direct method the sweep runs, unfinished, is not replaced by issue 21's: {grouped} {borrowed}")
 
 # ---- statistics on known data ----
 check(holm([0.01, 0.04, 0.03, 0.5]) == [0.04, 0.09, 0.09, 0.5], f"Holm: {holm([0.01, 0.04, 0.03, 0.5])}")

@@ -76,5 +76,9 @@ void register_checkpoint_reader(std::string root, CheckpointBestReader reader);
 // The reader registered for the root element of `file`, or nullptr (no such
 // registration, or not an XML file: cic's own readers then say what is wrong).
 const CheckpointBestReader* checkpoint_reader_for(const std::string& file);
+// What `reader` gives for `file`, checked against the settings: a gait vector of
+// their gait's length, or (a HyperGP-family type) their number of trees with the
+// offsets Neural.directOffsets asks for. Throws cic::InputError naming the file.
+CheckpointBest read_checkpoint_best(const CheckpointBestReader& reader, const io::Settings& s, const std::string& file);
 
 } // namespace cic::report
