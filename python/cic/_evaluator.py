@@ -119,6 +119,9 @@ class Evaluator:
         self.form = self._session.form                  # 'vector' (gait, CPG) or 'forest' (HyperGP trees)
         self.dimension = self._session.dimension        # a vector's length, or the trees of a forest
         self.offset_count = self._session.offset_count  # Offset-HybrID's direct offsets per forest (0: none)
+        # The gait vector's length when gait vectors are taken: the gait family's, or beside trees a
+        # Switch-HybrID run's genotype after its hand-over (Run.form 'vector'); else 0.
+        self.vector_dimension = self._session.vector_dimension
         self.workers = self._session.workers
         self.settings_file = self._session.settings_file   # the file found
         self.experiment = self._session.experiment      # Experiment.type
@@ -157,10 +160,10 @@ class Evaluator:
         offsets, one row per genotype (units of pi/2, as Run.best_offsets). Returns an Evaluation."""
         if self._closed:
             raise ValueError("this Evaluator is closed")
-        if self.form == "vector":
+        if self.form == "vector" or (self.vector_dimension and _numbers(batch)):
             if offsets is not None:
-                raise ValueError("offsets go beside HyperGP trees (Offset-HybrID); these settings evolve vectors")
-            result = self._session.evaluate_vectors(_vector_batch(batch, self.dimension))
+                raise ValueError("offsets go beside HyperGP trees (Offset-HybrID), not gait vectors")
+            result = self._session.evaluate_vectors(_vector_batch(batch, self.vector_dimension))
         else:
             forests = _forest_batch(batch)
             result = self._session.evaluate_forests(forests, _offset_rows(offsets, len(forests), self.offset_count))
@@ -209,6 +212,17 @@ def _forest_batch(batch):
     return forests
 
 
+def _numbers(batch):
+    """Whether a batch (or one genotype) is numbers: gait vectors, not S-expressions."""
+    if isinstance(batch, (str, bytes)):
+        return False
+    try:
+        arr = np.asarray(batch)
+    except ValueError:
+        return False
+    return arr.size > 0 and arr.dtype.kind in "fiu"
+
+
 def _offset_rows(offsets, count, per_genotype):
     """Offset-HybrID's offsets as one list of floats per genotype, or [] for none."""
     if offsets is None:
@@ -230,9 +244,9 @@ def _offset_rows(offsets, count, per_genotype):
 
 
 def _simulate(session, form, genotype, trace, offsets=None):
-    if form == "vector":
+    if form == "vector" or (session.vector_dimension and _numbers(genotype)):
         if offsets is not None:
-            raise ValueError("offsets go beside HyperGP trees (Offset-HybrID); these settings evolve vectors")
+            raise ValueError("offsets go beside HyperGP trees (Offset-HybrID), not gait vectors")
         if isinstance(genotype, (str, bytes)):
             raise ValueError("these settings evolve gait vectors: a genotype is a sequence of numbers")
         arr = np.asarray(genotype)

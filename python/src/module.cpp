@@ -83,6 +83,7 @@ public:
     std::string form() const { return form_name(session_->form()); }
     std::size_t dimension() const { return session_->dimension(); }
     std::size_t offset_count() const { return session_->offsets(); }
+    std::size_t vector_dimension() const { return session_->vector_dimension(); }
     int workers() const { return session_->workers(); }
     std::string settings_file() const { return session_->settings_file().string(); }
     std::string experiment() const { return session_->settings().experiment.type; }
@@ -215,6 +216,7 @@ PYBIND11_MODULE(_core, m) {
         .def_property_readonly("form", &Session::form)
         .def_property_readonly("dimension", &Session::dimension)
         .def_property_readonly("offset_count", &Session::offset_count)
+        .def_property_readonly("vector_dimension", &Session::vector_dimension)
         .def_property_readonly("workers", &Session::workers)
         .def_property_readonly("settings_file", &Session::settings_file)
         .def_property_readonly("experiment", &Session::experiment)

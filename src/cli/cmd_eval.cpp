@@ -125,6 +125,7 @@ json info_of(const run::EvaluationSession& session) {
     j["form"] = session.form() == run::GenotypeForm::Vector ? "vector" : "forest";
     j["dimension"] = session.dimension();
     j["offset_count"] = session.offsets();
+    j["vector_dimension"] = session.vector_dimension();
     j["descriptor"] = s.map_elites.enabled ? sim::to_string(s.map_elites.descriptor) : "none";
     j["workers"] = session.workers();
     return j;

@@ -71,11 +71,16 @@ struct EvaluationSession::Impl {
 
     const sim::RobotSpec& robot() const { return setup ? setup->robot : model->robot; }
 
+    // A gait vector: the gait family's genotype, or a Switch-HybrID run's after its hand-over.
+    bool is_vector(const Genotype& g) const {
+        return form == GenotypeForm::Vector || (setup && g.trees.empty() && !g.vector.empty());
+    }
+
     // Throws InputError naming the genotype's place in the batch.
     void check(const Genotype& g, std::size_t index) const {
         const std::string who = fmt::format("genotype {}", index);
         check_offsets(g, who);
-        if (form == GenotypeForm::Vector) {
+        if (is_vector(g)) {
             if (!g.trees.empty())
                 throw InputError(who + ": these settings evolve " + settings.experiment.type +
                                  " vectors of numbers, not trees (S-expressions)");
@@ -83,10 +88,13 @@ struct EvaluationSession::Impl {
                 throw InputError(fmt::format("{}: {} values, but these settings' {} has {} (robot {})", who,
                                              g.vector.size(), setup->cpg ? "CPG" : "gait", setup->dimension(),
                                              setup->robot.name));
+            // The unit box; Switch-HybrID's centred gait has its phases and offsets in [-1/2, 1/2] (encoding.hpp).
+            const std::vector<double> low =
+                setup->cpg ? std::vector<double>(g.vector.size(), 0.0) : setup->encoding.lower();
             for (std::size_t i = 0; i < g.vector.size(); ++i)
-                if (!std::isfinite(g.vector[i]) || g.vector[i] < 0.0 || g.vector[i] > 1.0)
-                    throw InputError(fmt::format("{}: value {} is {}, outside the unit box [0, 1] the gait family "
-                                                 "searches", who, i, g.vector[i]));
+                if (!std::isfinite(g.vector[i]) || g.vector[i] < low[i] || g.vector[i] > low[i] + 1.0)
+                    throw InputError(fmt::format("{}: value {} is {}, outside the unit box [{}, {}] the gait family "
+                                                 "searches", who, i, g.vector[i], low[i], low[i] + 1.0));
             return;
         }
         if (!g.vector.empty())
@@ -140,6 +148,8 @@ EvaluationSession::EvaluationSession(SessionOptions options) : impl_(std::make_u
     } else {
         im.form = GenotypeForm::Forest;
         im.model.emplace(hypergp::Model::from_settings(s));
+        // Switch-HybrID: its trees hand over to IPOP-CMA-ES on the gait vector, so both are its genotypes.
+        if (s.neural.switches()) im.setup.emplace(gait::Setup::from_settings(s));
         im.offsets = hypergp::direct_offset_genes(*im.model).count;
         im.primitives.emplace(s.gp.primitives);
         im.job_kind = job_kind_of(s);
@@ -182,6 +192,7 @@ fs::path EvaluationSession::settings_file() const { return impl_->found; }
 GenotypeForm EvaluationSession::form() const { return impl_->form; }
 std::size_t EvaluationSession::dimension() const { return impl_->dimension(); }
 std::size_t EvaluationSession::offsets() const { return impl_->offsets; }
+std::size_t EvaluationSession::vector_dimension() const { return impl_->setup ? impl_->setup->dimension() : 0; }
 int EvaluationSession::workers() const { return impl_->opt.workers; }
 
 void EvaluationSession::check(const Genotype& g, std::size_t index) const {
@@ -195,29 +206,30 @@ Scores EvaluationSession::evaluate(const std::vector<Genotype>& batch) {
     for (std::size_t i = 0; i < batch.size(); ++i) check(batch[i], i);
     Scores out;
     if (batch.empty()) return out;
-    if (!im.gait_evaluator && !im.runner) {
-        if (im.setup)
-            im.gait_evaluator = std::make_unique<gait::Evaluator>(*im.ctx, *im.setup);
-        else
-            im.runner = experiments::make_job_runner(*im.ctx);
-    }
-    std::vector<sim::EvalReply> replies;
-    if (im.form == GenotypeForm::Vector) {
+    std::vector<std::size_t> vectors, forests;   // places in the batch
+    for (std::size_t i = 0; i < batch.size(); ++i) (im.is_vector(batch[i]) ? vectors : forests).push_back(i);
+    std::vector<sim::EvalReply> replies(batch.size());
+    if (!vectors.empty()) {
+        if (!im.gait_evaluator) im.gait_evaluator = std::make_unique<gait::Evaluator>(*im.ctx, *im.setup);
         std::vector<std::vector<double>> xs;
-        for (const Genotype& g : batch) xs.push_back(g.vector);
-        replies = im.gait_evaluator->replies(xs, im.descriptor);
-    } else {
+        for (const std::size_t i : vectors) xs.push_back(batch[i].vector);
+        std::vector<sim::EvalReply> got = im.gait_evaluator->replies(xs, im.descriptor);
+        for (std::size_t k = 0; k < vectors.size(); ++k) replies[vectors[k]] = std::move(got[k]);
+    }
+    if (!forests.empty()) {
+        if (!im.runner) im.runner = experiments::make_job_runner(*im.ctx);
         // The run's own job texts (hypergp::job_body), parsed first so a bad tree fails the batch before it runs.
         std::vector<std::string> jobs;
-        for (std::size_t i = 0; i < batch.size(); ++i)
+        for (const std::size_t i : forests)
             jobs.push_back(im.job_kind + "\n" +
                            hypergp::job_body(im.forest_of(batch[i], i), im.descriptor, batch[i].offsets));
         const std::vector<JobResult> results = im.runner->run(jobs);
         for (const auto& note : im.runner->take_notes()) im.opt.warn("warning: " + note);
-        for (std::size_t i = 0; i < results.size(); ++i) {
-            const JobResult& r = results[i];
+        for (std::size_t k = 0; k < results.size(); ++k) {
+            const JobResult& r = results[k];
+            const std::size_t i = forests[k];
             for (const auto& t : r.trouble) im.opt.warn(fmt::format("warning: genotype {}: {}", i, t));
-            replies.push_back(sim::reply_of(r, im.model->sim.failure_fitness));   // as a run scores it
+            replies[i] = sim::reply_of(r, im.model->sim.failure_fitness);   // as a run scores it
             if (!r.ok)
                 im.opt.warn(fmt::format("warning: genotype {} scored as failed (fitness {}): {}", i,
                                         im.model->sim.failure_fitness, r.error));
@@ -242,7 +254,7 @@ Walk EvaluationSession::simulate(const Genotype& g, bool trace) const {
     options.record_ground = trace || sim::needs_ground(im.descriptor);
     Walk w;
     sim::EvalResult r;
-    if (im.form == GenotypeForm::Vector) {
+    if (im.is_vector(g)) {
         const auto controller = im.setup->controller(g.vector);
         r = sim::evaluate(im.setup->robot, *controller, im.setup->sim, options);
         w.fitness = r.fitness;
@@ -290,12 +302,13 @@ RunBest read_run_best(const fs::path& run_dir) {
         for (const auto& t : e->genotype) best.genotype.trees.push_back(t.to_string());
         return best;
     }
-    if (io::genotype_form(s) == io::GenotypeForm::Vector) {
+    // A gait run's champion, or a Switch-HybrID run's past its hand-over (a gait checkpoint).
+    if (io::genotype_form(s) == io::GenotypeForm::Vector || (s.neural.switches() && io::is_gait_file(population))) {
         const io::GaitFile g = io::load_gait(population);
         best.form = GenotypeForm::Vector;
         best.genotype.vector = gait::Setup::from_settings(s).in_box(g.champion.x);
         best.fitness = g.champion.fitness;
-        best.generation = g.generation;
+        best.generation = g.generation + (g.handover ? g.handover->generation + 1 : 0);   // as stats.csv counts
         return best;
     }
     const io::PopulationFile p = io::load_population(population);

@@ -126,6 +126,24 @@ def test_an_offset_hybrid_genotype_scores_its_stored_fitness_with_its_offsets(ru
     assert cic.read_run(runs["hypergp"]).best_offsets.shape == (0,)
 
 
+def test_a_switch_hybrid_run_past_its_hand_over_scores_its_gait_and_its_trees(runs):
+    run = cic.read_run(runs["switch"])
+    assert run.form == "vector" and run.best_genotype.shape == (37,)
+    with cic.Evaluator(run.settings, workers=2) as ev:
+        assert (ev.form, ev.vector_dimension) == ("forest", 37)   # trees first, the gait after the hand-over
+        scores = ev.evaluate([run.best_genotype])
+        assert bits(scores.fitness[0]) == bits(run.best_fitness)
+        assert bits(ev.simulate(run.best_genotype).fitness) == bits(run.best_fitness)
+        trees = ev.evaluate([["x0"] * ev.dimension])
+        assert np.isfinite(trees.fitness[0])
+        with pytest.raises(ValueError, match="36 values"):
+            ev.evaluate([np.full(36, 0.5)])
+    with cic.Evaluator(cic.read_run(runs["hypergp"]).settings) as plain:
+        assert plain.vector_dimension == 0
+        with pytest.raises(ValueError, match="S-expression"):
+            plain.evaluate([[0.5, 0.5]])
+
+
 # --- bad input: a Python exception, never a dead interpreter --------------------------
 
 @pytest.fixture(scope="module")

@@ -49,6 +49,19 @@ def test_an_offset_hybrid_line_carries_its_offsets(runs):
     assert info["offset_count"] == 8
 
 
+def test_a_switch_hybrid_stream_takes_its_gait_and_its_trees(runs):
+    run = cic.read_run(runs["switch"])
+    info = json.loads(subprocess.run([CIC, "eval", "--settings", run.settings, "--info"], capture_output=True,
+                                     text=True).stdout)
+    assert (info["form"], info["vector_dimension"]) == ("forest", 37)
+    lines = [json.dumps(list(run.best_genotype)), json.dumps(["x0"] * info["dimension"])]
+    p = subprocess.run([CIC, "eval", "--settings", run.settings], input="\n".join(lines) + "\n",
+                       capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    gait, trees = [json.loads(l) for l in p.stdout.splitlines()]
+    assert gait["fitness"] == run.best_fitness and "fitness" in trees
+
+
 def test_a_bare_vector_is_a_genotype_too():
     rc, replies, _ = stream([json.dumps([0.5] * 37)])
     assert rc == 0 and "fitness" in replies[0] and "id" not in replies[0]

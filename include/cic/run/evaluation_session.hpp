@@ -19,7 +19,8 @@
 namespace cic::run {
 
 // One genotype: a point of the gait family's unit box (gait or CPG vector), or
-// a HyperGP forest as S-expressions (one per tree).
+// a HyperGP forest as S-expressions (one per tree). Switch-HybrID settings take
+// both: trees, and after the hand-over the gait vector.
 struct Genotype {
     std::vector<double> vector;
     std::vector<std::string> trees;
@@ -82,6 +83,10 @@ public:
     // The direct offsets a forest carries beside its trees (Offset-HybrID: one
     // per hinge), or 0 when the settings have none.
     std::size_t offsets() const;
+    // The gait vector's length when the session takes gait vectors: the gait
+    // family's (then dimension()), or a Switch-HybrID run's after its hand-over
+    // beside its trees; else 0.
+    std::size_t vector_dimension() const;
     int workers() const;
 
     // Throws cic::InputError for a genotype these settings cannot take: the wrong
