@@ -216,6 +216,8 @@ def _numbers(batch):
     """Whether a batch (or one genotype) is numbers: gait vectors, not S-expressions."""
     if isinstance(batch, (str, bytes)):
         return False
+    if isinstance(batch, np.ndarray):
+        return batch.dtype.kind in "fiu"   # an empty float batch too
     try:
         arr = np.asarray(batch)
     except ValueError:
@@ -259,7 +261,9 @@ def _simulate(session, form, genotype, trace, offsets=None):
             raise ValueError(f"these settings are Offset-HybrID's (Neural.directOffsets): pass offsets=, "
                              f"{session.offset_count} numbers (Run.best_offsets)")
         return Simulation(session.simulate([], trees, bool(trace), []))
-    arr = np.asarray(offsets) if not isinstance(offsets, (str, bytes)) else np.asarray([])
+    if isinstance(offsets, (str, bytes)):
+        raise ValueError("one genotype's offsets are a 1-D sequence of numbers, not a string")
+    arr = np.asarray(offsets)
     if arr.dtype.kind not in "fiu" or arr.ndim != 1:
         raise ValueError(f"one genotype's offsets are a 1-D sequence of numbers; got dtype {arr.dtype}, "
                          f"shape {arr.shape}")

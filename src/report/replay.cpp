@@ -293,7 +293,8 @@ void register_checkpoint_reader(std::string root, CheckpointBestReader reader) {
 CheckpointBest read_checkpoint_best(const CheckpointBestReader& reader, const io::Settings& s, const std::string& file) {
     CheckpointBest best = reader(s, file);
     if (best.trees.empty()) {
-        if (io::genotype_form(s) != io::GenotypeForm::Vector)
+        // Switch-HybrID's genotypes are gait vectors after its hand-over.
+        if (io::genotype_form(s) != io::GenotypeForm::Vector && !s.neural.switches())
             throw InputError(fmt::format("the checkpoint's reader gave a gait vector, but Experiment.type {} evolves "
                                          "HyperGP trees",
                                          s.experiment.type),

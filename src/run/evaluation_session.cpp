@@ -65,7 +65,6 @@ struct EvaluationSession::Impl {
     std::size_t offsets = 0;               // Offset-HybrID's per genotype, 0 without them
     std::string job_kind;
     std::unique_ptr<experiments::Context> ctx;
-    std::unique_ptr<gait::Evaluator> gait_evaluator;
     std::unique_ptr<JobRunner> runner;
     bool closed = false;
 
@@ -79,8 +78,10 @@ struct EvaluationSession::Impl {
     // Throws InputError naming the genotype's place in the batch.
     void check(const Genotype& g, std::size_t index) const {
         const std::string who = fmt::format("genotype {}", index);
-        check_offsets(g, who);
         if (is_vector(g)) {
+            if (!g.offsets.empty())
+                throw InputError(who + ": offsets are Offset-HybrID's direct genes beside HyperGP trees, not beside "
+                                       "a gait vector");
             if (!g.trees.empty())
                 throw InputError(who + ": these settings evolve " + settings.experiment.type +
                                  " vectors of numbers, not trees (S-expressions)");
@@ -99,17 +100,10 @@ struct EvaluationSession::Impl {
         }
         if (!g.vector.empty())
             throw InputError(who + ": these settings evolve HyperGP trees (S-expressions), not vectors of numbers");
+        hypergp::check_offsets(*model, g.offsets, who);
         if (g.trees.size() != dimension())
             throw InputError(fmt::format("{}: {} tree{}, but GP.numberOfTreesInForestGenotype is {}", who,
                                          g.trees.size(), g.trees.size() == 1 ? "" : "s", dimension()));
-    }
-
-    void check_offsets(const Genotype& g, const std::string& who) const {
-        if (model)
-            hypergp::check_offsets(*model, g.offsets, who);
-        else if (!g.offsets.empty())
-            throw InputError(who + ": offsets are Offset-HybrID's direct genes beside HyperGP trees; these settings "
-                                   "evolve vectors");
     }
 
     tree::Forest forest_of(const Genotype& g, std::size_t index) const {
@@ -181,8 +175,7 @@ void EvaluationSession::close() {
     Impl& im = *impl_;
     if (im.closed) return;
     im.closed = true;
-    im.gait_evaluator.reset();   // ends the workers
-    im.runner.reset();
+    im.runner.reset();   // ends the workers
     std::error_code ec;
     fs::remove_all(im.folder, ec);
 }
@@ -206,34 +199,31 @@ Scores EvaluationSession::evaluate(const std::vector<Genotype>& batch) {
     for (std::size_t i = 0; i < batch.size(); ++i) check(batch[i], i);
     Scores out;
     if (batch.empty()) return out;
-    std::vector<std::size_t> vectors, forests;   // places in the batch
-    for (std::size_t i = 0; i < batch.size(); ++i) (im.is_vector(batch[i]) ? vectors : forests).push_back(i);
-    std::vector<sim::EvalReply> replies(batch.size());
-    if (!vectors.empty()) {
-        if (!im.gait_evaluator) im.gait_evaluator = std::make_unique<gait::Evaluator>(*im.ctx, *im.setup);
-        std::vector<std::vector<double>> xs;
-        for (const std::size_t i : vectors) xs.push_back(batch[i].vector);
-        std::vector<sim::EvalReply> got = im.gait_evaluator->replies(xs, im.descriptor);
-        for (std::size_t k = 0; k < vectors.size(); ++k) replies[vectors[k]] = std::move(got[k]);
-    }
-    if (!forests.empty()) {
-        if (!im.runner) im.runner = experiments::make_job_runner(*im.ctx);
-        // The run's own job texts (hypergp::job_body), parsed first so a bad tree fails the batch before it runs.
-        std::vector<std::string> jobs;
-        for (const std::size_t i : forests)
+    // One job per genotype, as a run writes it (gait::make_job, hypergp::job_body), all
+    // parsed first so a bad tree fails the batch before it runs, then one pass of the workers.
+    std::vector<std::string> jobs;
+    std::vector<double> failure_fitness;
+    for (std::size_t i = 0; i < batch.size(); ++i) {
+        if (im.is_vector(batch[i])) {
+            jobs.push_back(gait::make_job(*im.setup, batch[i].vector, im.descriptor));
+            failure_fitness.push_back(im.setup->sim.failure_fitness);
+        } else {
             jobs.push_back(im.job_kind + "\n" +
                            hypergp::job_body(im.forest_of(batch[i], i), im.descriptor, batch[i].offsets));
-        const std::vector<JobResult> results = im.runner->run(jobs);
-        for (const auto& note : im.runner->take_notes()) im.opt.warn("warning: " + note);
-        for (std::size_t k = 0; k < results.size(); ++k) {
-            const JobResult& r = results[k];
-            const std::size_t i = forests[k];
-            for (const auto& t : r.trouble) im.opt.warn(fmt::format("warning: genotype {}: {}", i, t));
-            replies[i] = sim::reply_of(r, im.model->sim.failure_fitness);   // as a run scores it
-            if (!r.ok)
-                im.opt.warn(fmt::format("warning: genotype {} scored as failed (fitness {}): {}", i,
-                                        im.model->sim.failure_fitness, r.error));
+            failure_fitness.push_back(im.model->sim.failure_fitness);
         }
+    }
+    if (!im.runner) im.runner = experiments::make_job_runner(*im.ctx);
+    const std::vector<JobResult> results = im.runner->run(jobs);
+    for (const auto& note : im.runner->take_notes()) im.opt.warn("warning: " + note);
+    std::vector<sim::EvalReply> replies;
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        const JobResult& r = results[i];
+        for (const auto& t : r.trouble) im.opt.warn(fmt::format("warning: genotype {}: {}", i, t));
+        replies.push_back(sim::reply_of(r, failure_fitness[i]));   // as a run scores it
+        if (!r.ok)
+            im.opt.warn(fmt::format("warning: genotype {} scored as failed (fitness {}): {}", i, failure_fitness[i],
+                                    r.error));
     }
     for (sim::EvalReply& r : replies) {
         out.fitness.push_back(r.fitness);

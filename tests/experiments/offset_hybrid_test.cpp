@@ -237,7 +237,13 @@ TEST(OffsetHybrid, ARegisteredReaderOfTreesReplaysThemAsTheRunDid) {
     EXPECT_HAS(refusal("three"), "gave 3 trees, but GP.numberOfTreesInForestGenotype is 1");
     write_text(probe, "<treeProbeWrong kind=\"short\"/>\n");
     fs::copy_file(probe, foreign_run / "populations" / "gen-0000.xml", fs::copy_options::overwrite_existing);
-    EXPECT_THROW((void)report::export_individuals({{foreign_run}, false}), InputError);
+    try {
+        (void)report::export_individuals({{foreign_run}, false});
+        ADD_FAILURE() << "export took 7 offsets for 8 hinges";
+    } catch (const InputError& e) {
+        EXPECT_HAS(e.message(), "7 offsets, but these settings' Offset-HybrID");
+        EXPECT_EQ(e.file(), (foreign_run / "populations" / "gen-0000.xml").string());
+    }
     fs::remove_all(dir);
 }
 

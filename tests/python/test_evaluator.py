@@ -138,6 +138,9 @@ def test_a_switch_hybrid_run_past_its_hand_over_scores_its_gait_and_its_trees(ru
         assert np.isfinite(trees.fitness[0])
         with pytest.raises(ValueError, match="36 values"):
             ev.evaluate([np.full(36, 0.5)])
+        assert len(ev.evaluate(np.zeros((0, 37)))) == 0
+        two = ev.evaluate([np.clip(run.best_genotype, 0, 1), run.best_genotype])   # replies in batch order
+        assert bits(two.fitness[1]) == bits(run.best_fitness)
     with cic.Evaluator(cic.read_run(runs["hypergp"]).settings) as plain:
         assert plain.vector_dimension == 0
         with pytest.raises(ValueError, match="S-expression"):

@@ -60,6 +60,11 @@ def test_a_switch_hybrid_stream_takes_its_gait_and_its_trees(runs):
     assert p.returncode == 0, p.stderr
     gait, trees = [json.loads(l) for l in p.stdout.splitlines()]
     assert gait["fitness"] == run.best_fitness and "fitness" in trees
+    # Offsets go beside trees only.
+    line = json.dumps({"genotype": list(run.best_genotype), "offsets": [0.0] * 12})
+    p = subprocess.run([CIC, "eval", "--settings", run.settings], input=line + "\n", capture_output=True, text=True,
+                       timeout=300)
+    assert "not beside a gait vector" in json.loads(p.stdout)["error"]
 
 
 def test_a_bare_vector_is_a_genotype_too():
