@@ -187,6 +187,23 @@ def table(g, sc_cells):
     return out
 
 
+def evaluation_counts(results):
+    """Lines of the real evaluation counts per robot and method (finished compare runs): GP-based
+    methods count every re-bred and re-evaluated individual, so they may pass the budget a little."""
+    counts = {}
+    for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv"))):
+        if r["study"].startswith("compare-") and r["status"] == "done":
+            counts.setdefault((robot_of(r["study"]), method_of(r["config"])), []).append(int(r["evaluations"]))
+    order = sc.CENTIPEDES + list(sc.R_ROBOTS)
+    out = ["", "Evaluations per run (the real counts; median [least, most]):", "",
+           "| robot | method | evaluations |", "|---|---|---|"]
+    for (robot, m), v in sorted(counts.items(), key=lambda kv: (order.index(kv[0][0]) if kv[0][0] in order
+                                                                else len(order), sc.METHODS.index(kv[0][1])
+                                                                if kv[0][1] in sc.METHODS else 9)):
+        out.append(f"| {robot} | {LABELS.get(m, m)} | {statistics.median(v):,.0f} [{min(v):,}, {max(v):,}] |")
+    return out if counts else []
+
+
 def figure(g, sc_cells, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -250,6 +267,7 @@ def results(results_dir, studies, cic, figure_path, baselines):
                    "runs at 15,000 evaluations (experiments/baselines/results/walk-runs.csv).")
     out.append("")
     out += table(g, s)
+    out += evaluation_counts(results_dir)
     quiet = [r for r in g if any((r, m) in s for m in sc.METHODS) and
              not any(s[(r, m)]["holm"] < ALPHA for m in sc.METHODS if (r, m) in s)]
     if quiet:

@@ -273,6 +273,7 @@ check("better than best direct" in md and "worse than best direct" in md, "signi
 check("| centipede-4 | 24 | HyperGP-gait | 5 |" in md and "no difference shown at n = 5 |" in md,
       "the 5-seed robot: nothing shown\n" + md)
 check("No difference shown after Holm: centipede-4 (n = 5)." in md, "the robots with nothing significant\n" + md)
+check("| centipede-2 | HyperGP-gait | 2,500 [2,500, 2,500] |" in md, "the real evaluation counts\n" + md)
 check(svg.read_text().lstrip().startswith("<?xml") and "<svg" in svg.read_text(), "the figure is an SVG")
 first = svg.read_bytes()
 # Scored once: with the run folder gone, the cache still scores it, and the same bytes come out.
