@@ -25,7 +25,8 @@
 #   --jobs N        runs at a time (default 1), each with one worker process
 #   --output DIR    study folders (default runs/scaling); the run store is DIR/store
 #   --commit        after every run: ledger and summary, then `git commit` of
-#                   experiments/scaling/results/ only (runs go in batches of N)
+#                   experiments/scaling/results/ only (the studies' runs share
+#                   one pool of N slots, each taking the next run when its own ends)
 #   --summary-only  run nothing; ledger and summary of what is there
 #   --only ROBOT    run only the tuning studies of one robot: c8 or r1 (the
 #                   ledger still covers every study; compare ignores it)
@@ -89,31 +90,47 @@ commit_results() {   # MESSAGE
   echo "scaling.sh: could not commit the ledger (the next run's commit will carry it)" >&2
 }
 
-# One study: without --commit, one `cic sweep`; with it, its pending tasks in
-# batches of --jobs (`cic sweep --task`, each resumable), the ledger committed after each batch.
-run_study() {   # STUDY
-  local file="$HERE/$1.xml" dir="$output/$1"
-  if [ -n "$only" ] && [[ "$1" == tune-* ]] && [[ "$1" != *-"$only" ]]; then return 0; fi
-  echo "== $1" >&2
-  if [ "$commit" = 0 ]; then
-    "$CIC" sweep "$file" --output "$dir" --jobs "$jobs" --workers 1 >&2
-    return 0
-  fi
-  mapfile -t pending < <("$CIC" sweep "$file" --output "$dir" --dry-run | awk '$1 ~ /^[0-9]+$/ && $3 ~ /^runs\// && $2 != "done" {print $1 " " $3}')
-  # Every run already in the store (another study ran it): link them, so the ledger sees the study.
-  if [ ${#pending[@]} = 0 ]; then "$CIC" --quiet sweep "$file" --output "$dir" --index-only; fi
-  local i=0 batch=() item
-  while [ $i -lt ${#pending[@]} ]; do
-    batch=("${pending[@]:i:jobs}")
-    for item in "${batch[@]}"; do
-      "$CIC" --quiet sweep "$file" --output "$dir" --task "${item%% *}" --workers 1 >&2 &
+# The studies' runs: without --commit, one `cic sweep` per study (its own
+# --jobs); with it, their pending tasks (`cic sweep --task`, each resumable) in
+# one pool of --jobs slots across the studies, in order: a slot takes the next
+# task as soon as its run ends (a study's runs differ in length by method, and
+# lockstep batches left a core idle), and the ledger is committed after every
+# run. Tasks of one study running at once share its index under its lock.
+run_studies() {   # STUDY...
+  local s item tasks=()
+  for s in "$@"; do
+    if [ -n "$only" ] && [[ "$s" == tune-* ]] && [[ "$s" != *-"$only" ]]; then continue; fi
+    echo "== $s" >&2
+    if [ "$commit" = 0 ]; then
+      "$CIC" sweep "$HERE/$s.xml" --output "$output/$s" --jobs "$jobs" --workers 1 >&2
+      continue
+    fi
+    mapfile -t pending < <("$CIC" sweep "$HERE/$s.xml" --output "$output/$s" --dry-run |
+                           awk '$1 ~ /^[0-9]+$/ && $3 ~ /^runs\// && $2 != "done" {print $1 " " $3}')
+    # Every run already in the store (another study ran it): link them, so the ledger sees the study.
+    if [ ${#pending[@]} = 0 ]; then "$CIC" --quiet sweep "$HERE/$s.xml" --output "$output/$s" --index-only; fi
+    for item in "${pending[@]}"; do tasks+=("$s $item"); done   # "STUDY TASK RUN_DIR"
+  done
+  [ "$commit" = 1 ] || return 0
+  local next=0 running=0 pid study task run done_now
+  local -A what=()   # running pid -> "STUDY RUN_DIR"
+  while [ $next -lt ${#tasks[@]} ] || [ $running -gt 0 ]; do
+    while [ $running -lt "$jobs" ] && [ $next -lt ${#tasks[@]} ]; do
+      read -r study task run <<< "${tasks[next]}"
+      "$CIC" --quiet sweep "$HERE/$study.xml" --output "$output/$study" --task "$task" --workers 1 >&2 &
+      what[$!]="$study $run"
+      running=$((running + 1)) next=$((next + 1))
     done
-    wait
+    # A run that fails shows as such in the ledger; the study goes on.
+    pid=''
+    wait -n -p pid "${!what[@]}" || true
+    [ -n "$pid" ] || continue
+    read -r study run <<< "${what[$pid]}"
+    unset "what[$pid]"
+    running=$((running - 1))
     ledger
-    local done_now
-    done_now=$(awk -F, -v s="$1" '$1 == s && $4 == "done"' "$HERE/results/scaling-runs.csv" | wc -l)
-    commit_results "Ledger (issue 38): $1, $done_now runs done, the last ${batch[-1]#* }; scaling-runs.csv and tune-direct.md as of these runs"
-    i=$((i + jobs))
+    done_now=$(awk -F, -v s="$study" '$1 == s && $4 == "done"' "$HERE/results/scaling-runs.csv" | wc -l)
+    commit_results "Ledger (issue 38): $study, $done_now runs done, the last $run; scaling-runs.csv and tune-direct.md as of these runs"
   done
 }
 
@@ -125,13 +142,13 @@ main() {
     case "$stage" in
       tune-direct)
         if [ "$summary_only" = 0 ]; then
-          for s in "${tune_studies[@]}"; do run_study "$s"; done
+          run_studies "${tune_studies[@]}"
         fi
         ledger
         commit_results "Ledger (issue 38): tune-direct summary" ;;
       tune-hybrid)
         if [ "$summary_only" = 0 ]; then
-          for s in "${hybrid_studies[@]}"; do run_study "$s"; done
+          run_studies "${hybrid_studies[@]}"
         fi
         ledger
         commit_results "Ledger (issue 38): tune-hybrid summary" ;;
@@ -143,7 +160,7 @@ main() {
           fi
         done
         if [ "$summary_only" = 0 ]; then
-          for s in "${compare_studies[@]}"; do run_study "$s"; done
+          run_studies "${compare_studies[@]}"
         fi
         ledger
         commit_results "Ledger (issue 38): compare summary" ;;
