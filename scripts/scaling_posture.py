@@ -1,5 +1,5 @@
 """Why the direct gaits win, robot by robot (docs/scaling.md; scaling-report.py
-posture). Standard library only.
+posture). Standard library here; the probe needs numpy.
 
 HyperGP's trees write every hinge's posture as a function of the hinge's place
 on the body. scripts/posture-probe.py replays a direct gait with its per-hinge
@@ -18,6 +18,7 @@ import os
 import statistics
 import subprocess
 import sys
+import tempfile
 
 import scaling_compare as sc
 from scaling_results import method_of, robot_of
@@ -48,7 +49,9 @@ def direct_runs(results, studies):
 
 def probe(cic, runs):
     """{run: {variant: raw eq. 7.1}}, the original under "original", from one posture-probe.py."""
-    p = subprocess.run([sys.executable, PROBE, "--cic", cic, "--csv", *runs], capture_output=True, text=True)
+    with tempfile.TemporaryDirectory(prefix="scaling-posture-") as work:   # the probe's edited copies
+        p = subprocess.run([sys.executable, PROBE, "--cic", cic, "--csv", "--work", work, *runs],
+                           capture_output=True, text=True)
     if p.returncode != 0:
         raise sc.Refusal(f"posture: posture-probe.py failed ({p.returncode}): {p.stderr.strip()}")
     out = {}
