@@ -4,7 +4,8 @@
     scripts/posture-probe.py [--cic PATH] [--work DIR] GAIT_RUN...
 
 GAIT_RUN: a `gait` run folder (settings.xml, population.xml), e.g. a kept best
-in experiments/baselines/results/best/walk-15000-cmaes-gait/R2. Its champion
+in experiments/baselines/results/best/walk-15000-cmaes-gait/R2, on R0, R1, R2
+or a robot file (Simulator.robotFile: the centipedes of docs/scaling.md). Its champion
 (a point of the unit box, include/cic/experiments/gait/encoding.hpp) is
 decoded into per-joint amplitude, phase and offset; the offsets are then
 replaced by least-squares fits over the points HyperGP-gait's trees are asked
@@ -20,10 +21,12 @@ phases and frequency untouched):
   mirrored             o(−u, v) = −o(u, v) exactly, every value free
 
 Markdown on stdout: each variant's fitness and the share of the original kept,
-one row per variant, medians over the inputs. Needs numpy (Debian's
+one row per variant, medians over the inputs; with --csv, the rows
+run,variant,raw_fitness instead (scaling-report.py posture reads them). Needs numpy (Debian's
 python3-numpy). Writes the variants under --work (default a temporary folder).
 """
 import argparse
+import csv
 import math
 import pathlib
 import re
@@ -50,6 +53,7 @@ except ImportError:
 ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 ap.add_argument("--cic", default=str(ROOT / "build" / "cic"))
 ap.add_argument("--work", default=None)
+ap.add_argument("--csv", action="store_true", help="one CSV row per gait and variant (run,variant,raw_fitness)")
 ap.add_argument("runs", nargs="+")
 args = ap.parse_args()
 
@@ -62,9 +66,14 @@ def setting(tree, where, section, key):
 
 
 def robot_file(tree, where):
+    """The robot's module file: Simulator.robotFile (a generated robot such as the
+    centipedes of docs/scaling.md; relative to the settings file), or R0, R1, R2."""
     path = setting(tree, where, "Simulator", "robotFile")
     if path:
-        fail(f"{where}: Simulator.robotFile is set ({path}); only the shipped R0, R1, R2 are probed")
+        file = pathlib.Path(path) if pathlib.Path(path).is_absolute() else pathlib.Path(where).parent / path
+        if not file.is_file():
+            fail(f"{where}: Simulator.robotFile {path}: no such file")
+        return file
     if setting(tree, where, "Neural", "useMiddleLegs") != "0":
         fail(f"{where}: Neural.useMiddleLegs = 1; only the 4-legged robots are probed")
     kind = setting(tree, where, "Simulator", "robot_type")
@@ -158,6 +167,13 @@ lines = out.stdout.strip().splitlines()
 header = lines[0].split(",")
 scores = [float(dict(zip(header, line.split(",")))["raw_fitness"]) for line in lines[1:]]
 per_run = [scores[i:i + len(VARIANTS)] for i in range(0, len(scores), len(VARIANTS))]
+if args.csv:
+    w = csv.writer(sys.stdout, lineterminator="\n")
+    w.writerow(["run", "variant", "raw_fitness"])
+    for run, s in zip(runs, per_run):
+        for name, value in zip(VARIANTS, s):
+            w.writerow([str(run), name, repr(value)])
+    sys.exit(0)
 print(f"Posture probe (`scripts/posture-probe.py`), {len(runs)} gait(s): raw eq. 7.1 of each gait replayed with its "
       "offsets replaced, median over the gaits, and the median share of each gait's own distance kept.\n")
 print("| offsets | median fitness | share kept | " + " | ".join(f"{r.parent.name}/{r.name}" for r in runs) + " |")

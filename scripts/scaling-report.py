@@ -32,7 +32,11 @@
       RESULTS/compare-raw.csv, its `cic assess` verdicts and a strip by
       scripts/screenshot-strip.sh (OUT-IMAGES, default docs/img:
       scaling-strip-<robot>-<method>.png; frames at --at, default "2 5 8 11 14")
-Standard library only, but for results."""
+  scaling-report.py posture --results DIR --studies DIR --cic CIC
+      RESULTS/posture.md: scripts/posture-probe.py on every finished run of the
+      best direct method of the comparison, per robot the median share of its
+      own raw eq. 7.1 each posture replacement keeps (scaling_posture.py)
+Standard library only, but for results (and numpy for posture)."""
 import csv
 import os
 import shlex
@@ -177,11 +181,13 @@ def main(argv):
         estimate(argv[3])
     elif len(argv) == 4 and argv[1] == "summary" and argv[2] == "--results":
         summary(argv[3])
-    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results", "strips"):
-        flags = {"compare-sweeps": {"--provisional"}, "results": set(), "strips": {"--no-strips"}}[argv[1]]
+    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results", "strips", "posture"):
+        flags = {"compare-sweeps": {"--provisional"}, "results": set(), "strips": {"--no-strips"},
+                 "posture": set()}[argv[1]]
         known = {"compare-sweeps": {"--results", "--out", "--tuning", "--cic"},
                  "results": {"--results", "--studies", "--cic", "--figure", "--baselines"},
-                 "strips": {"--results", "--studies", "--cic", "--out-images", "--robots", "--at"}}[argv[1]]
+                 "strips": {"--results", "--studies", "--cic", "--out-images", "--robots", "--at"},
+                 "posture": {"--results", "--studies", "--cic"}}[argv[1]]
         args, i = {}, 2
         while i < len(argv):
             if argv[i] in flags:
@@ -194,7 +200,7 @@ def main(argv):
                 usage(f"scaling-report.py {argv[1]}: unknown or incomplete option '{argv[i]}' (allowed: "
                       f"{', '.join(sorted(known | flags))})")
         need = {"compare-sweeps": ("--results", "--out"), "results": ("--results", "--studies", "--cic"),
-                "strips": ("--results", "--studies", "--cic")}[argv[1]]
+                "strips": ("--results", "--studies", "--cic"), "posture": ("--results", "--studies", "--cic")}[argv[1]]
         for n in need:
             if n not in args:
                 usage(f"scaling-report.py {argv[1]}: {n} is required")
@@ -205,6 +211,10 @@ def main(argv):
                                            args.get("--cic", os.path.join(sc.ROOT, "build", "cic")),
                                            args.get("--provisional", False)):
                     print(p)
+            elif argv[1] == "posture":
+                import scaling_posture
+                scaling_posture.posture(args["--results"], args["--studies"], args["--cic"],
+                                        " ".join(shlex.quote(a) for a in ["scripts/scaling-report.py"] + argv[1:]))
             elif argv[1] == "strips":
                 import scaling_strips
                 robots = args.get("--robots", ",".join(scaling_strips.LARGEST)).split(",")

@@ -25,7 +25,8 @@
 #   --jobs N        runs at a time (default 1), each with one worker process
 #   --output DIR    study folders (default runs/scaling); the run store is DIR/store
 #   --commit        after every run: ledger and summary, then `git commit` of
-#                   experiments/scaling/results/ only (runs go in batches of N)
+#                   experiments/scaling/results/ only (the studies' runs share
+#                   one pool of N slots, each taking the next run when its own ends)
 #   --summary-only  run nothing; ledger and summary of what is there
 #   --only ROBOT    run only the tuning studies of one robot: c8 or r1 (the
 #                   ledger still covers every study; compare ignores it)
@@ -51,6 +52,10 @@ while [ $# -gt 0 ]; do
 done
 [ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, tune-hybrid, compare, ledger, estimate (see --help)" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scaling.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
+# --commit's pool waits for whichever run ends first: `wait -n -p`, bash 5.1 on.
+if [ "$commit" = 1 ] && ! (( BASH_VERSINFO[0] > 5 || (BASH_VERSINFO[0] == 5 && BASH_VERSINFO[1] >= 1) )); then
+  echo "scaling.sh: --commit needs bash 5.1 or later (wait -n -p); this is bash $BASH_VERSION" >&2; exit 2
+fi
 [ -x "$CIC" ] || { echo "scaling.sh: no cic binary at $CIC (build first, or set CIC)" >&2; exit 2; }
 mkdir -p "$HERE/results"
 
@@ -89,31 +94,57 @@ commit_results() {   # MESSAGE
   echo "scaling.sh: could not commit the ledger (the next run's commit will carry it)" >&2
 }
 
-# One study: without --commit, one `cic sweep`; with it, its pending tasks in
-# batches of --jobs (`cic sweep --task`, each resumable), the ledger committed after each batch.
-run_study() {   # STUDY
-  local file="$HERE/$1.xml" dir="$output/$1"
-  if [ -n "$only" ] && [[ "$1" == tune-* ]] && [[ "$1" != *-"$only" ]]; then return 0; fi
-  echo "== $1" >&2
-  if [ "$commit" = 0 ]; then
-    "$CIC" sweep "$file" --output "$dir" --jobs "$jobs" --workers 1 >&2
-    return 0
-  fi
-  mapfile -t pending < <("$CIC" sweep "$file" --output "$dir" --dry-run | awk '$1 ~ /^[0-9]+$/ && $3 ~ /^runs\// && $2 != "done" {print $1 " " $3}')
-  # Every run already in the store (another study ran it): link them, so the ledger sees the study.
-  if [ ${#pending[@]} = 0 ]; then "$CIC" --quiet sweep "$file" --output "$dir" --index-only; fi
-  local i=0 batch=() item
-  while [ $i -lt ${#pending[@]} ]; do
-    batch=("${pending[@]:i:jobs}")
-    for item in "${batch[@]}"; do
-      "$CIC" --quiet sweep "$file" --output "$dir" --task "${item%% *}" --workers 1 >&2 &
+# The studies' runs: without --commit, one `cic sweep` per study (its own
+# --jobs); with it, their pending tasks (`cic sweep --task`, each resumable) in
+# one pool of --jobs slots across the studies, in order: a slot takes the next
+# task as soon as its run ends (a study's runs differ in length by method, and
+# lockstep batches left a core idle), and the ledger is committed after every
+# run. Tasks of one study running at once share its index under its lock.
+run_studies() {   # STUDY...
+  local s item tasks=()
+  for s in "$@"; do
+    if [ -n "$only" ] && [[ "$s" == tune-* ]] && [[ "$s" != *-"$only" ]]; then continue; fi
+    if [ "$commit" = 0 ]; then
+      echo "== $s" >&2
+      "$CIC" sweep "$HERE/$s.xml" --output "$output/$s" --jobs "$jobs" --workers 1 >&2
+      continue
+    fi
+    mapfile -t pending < <("$CIC" sweep "$HERE/$s.xml" --output "$output/$s" --dry-run |
+                           awk '$1 ~ /^[0-9]+$/ && $3 ~ /^runs\// && $2 != "done" {print $1 " " $3}')
+    echo "== $s: ${#pending[@]} runs to go" >&2
+    # Every run already in the store (another study ran it): link them, so the ledger sees the study.
+    if [ ${#pending[@]} = 0 ]; then "$CIC" --quiet sweep "$HERE/$s.xml" --output "$output/$s" --index-only; fi
+    for item in "${pending[@]}"; do tasks+=("$s $item"); done   # "STUDY TASK RUN_DIR"
+  done
+  [ "$commit" = 1 ] || return 0
+  local next=0 running=0 pid study task run status done_now
+  local -A what=() tries=()   # running pid -> "STUDY TASK RUN_DIR"; "STUDY TASK" -> starts
+  while [ $next -lt ${#tasks[@]} ] || [ $running -gt 0 ]; do
+    while [ $running -lt "$jobs" ] && [ $next -lt ${#tasks[@]} ]; do
+      read -r study task run <<< "${tasks[next]}"
+      "$CIC" --quiet sweep "$HERE/$study.xml" --output "$output/$study" --task "$task" --workers 1 >&2 &
+      what[$!]="${tasks[next]}"
+      tries["$study $task"]=$(( ${tries["$study $task"]:-0} + 1 ))
+      running=$((running + 1)) next=$((next + 1))
     done
-    wait
-    ledger
-    local done_now
-    done_now=$(awk -F, -v s="$1" '$1 == s && $4 == "done"' "$HERE/results/scaling-runs.csv" | wc -l)
-    commit_results "Ledger (issue 38): $1, $done_now runs done, the last ${batch[-1]#* }; scaling-runs.csv and tune-direct.md as of these runs"
-    i=$((i + jobs))
+    # A run that fails shows as such in the ledger; the study goes on.
+    pid=''
+    wait -n -p pid "${!what[@]}" || true
+    [ -n "$pid" ] || { echo "scaling.sh: wait -n gave no finished run (bash ${BASH_VERSION}); stopping" >&2; exit 1; }
+    read -r study task run <<< "${what[$pid]}"
+    unset "what[$pid]"
+    running=$((running - 1))
+    # A task started while another's index write probed its lock skips itself as
+    # "running elsewhere" and ends pending: queue it again (three starts at most).
+    status=$("$CIC" sweep "$HERE/$study.xml" --output "$output/$study" --dry-run | awk -v t="$task" '$1 == t {print $2; exit}')
+    if [[ "$status" =~ ^(pending|interrupted)$ ]] && [ "${tries["$study $task"]}" -lt 3 ]; then
+      echo "scaling.sh: $study $run ended $status; queued again" >&2
+      tasks+=("$study $task $run")
+    fi
+    # The other slot's run goes on whatever the ledger does; the next run's commit retries it.
+    ledger || echo "scaling.sh: the ledger failed after $study $run (the next run's retries it)" >&2
+    done_now=$(awk -F, -v s="$study" '$1 == s && $4 == "done"' "$HERE/results/scaling-runs.csv" | wc -l)
+    commit_results "Ledger (issue 38): $study, $done_now runs done, the last $run; scaling-runs.csv and tune-direct.md as of these runs"
   done
 }
 
@@ -125,13 +156,13 @@ main() {
     case "$stage" in
       tune-direct)
         if [ "$summary_only" = 0 ]; then
-          for s in "${tune_studies[@]}"; do run_study "$s"; done
+          run_studies "${tune_studies[@]}"
         fi
         ledger
         commit_results "Ledger (issue 38): tune-direct summary" ;;
       tune-hybrid)
         if [ "$summary_only" = 0 ]; then
-          for s in "${hybrid_studies[@]}"; do run_study "$s"; done
+          run_studies "${hybrid_studies[@]}"
         fi
         ledger
         commit_results "Ledger (issue 38): tune-hybrid summary" ;;
@@ -143,7 +174,7 @@ main() {
           fi
         done
         if [ "$summary_only" = 0 ]; then
-          for s in "${compare_studies[@]}"; do run_study "$s"; done
+          run_studies "${compare_studies[@]}"
         fi
         ledger
         commit_results "Ledger (issue 38): compare summary" ;;

@@ -24,6 +24,9 @@ CENTIPEDES = ["centipede-2", "centipede-2-irregular", "centipede-4", "centipede-
 # middle sizes lose comparison seeds first (seeds 1..5), the others keep 1..10.
 MIDDLE = {"centipede-4", "centipede-8", "centipede-4-irregular", "centipede-8-irregular"}
 R_ROBOTS = {"r1": 1, "r2": 2}   # Simulator.robot_type
+# Issue 21's direct runs on R1 and R2 at 15,000 evaluations (docs/baselines.md): they stand for
+# R1's and R2's direct method when tune-direct-r1's winner has exactly their settings.
+ISSUE21_DIRECT = os.path.join(ROOT, "experiments", "baselines", "walk-15000-cmaes-gait.xml")
 CENTIPEDE_BUDGET, R_BUDGET = 2500, 15000
 ROBOT_KEYS = {"Simulator.robotFile", "Simulator.robot_type"}
 HYPERGP_GAIT = ["Neural.switchPatience=0", "Neural.switchShare=0", "Neural.directOffsets=0"]   # both hybrids off
@@ -211,21 +214,36 @@ def write_rows_atomically(path, fields, rows):
     os.replace(tmp, path)
 
 
-def compare_sweeps(results, out, tuning_dir, cic, provisional):
+def same_as_issue21(cic, direct_r1, config, issue21):
+    """Whether tune-direct-r1's winning configuration runs exactly issue 21's direct runs on R1
+    (the same effective settings, seed aside): then those runs are R1's and R2's direct method."""
+    theirs = read_sweep(issue21)
+    if "R1" not in theirs["variants"]:
+        raise Refusal(f"compare-sweeps: {issue21} has no variant R1")
+    mine = effective(cic, direct_r1["base"], absolute(direct_r1["sets"] + direct_r1["variants"][config],
+                                                      os.path.dirname(direct_r1["path"])))
+    other = effective(cic, theirs["base"], theirs["sets"] + theirs["variants"]["R1"])
+    return {k: v for k, v in mine.items() if k != "Experiment.seed"} == \
+        {k: v for k, v in other.items() if k != "Experiment.seed"}
+
+
+def compare_sweeps(results, out, tuning_dir, cic, provisional, issue21=ISSUE21_DIRECT):
     """Write OUT/compare-<robot>.xml for the 8 centipedes, R1 and R2; returns the paths."""
     ledger_path = os.path.join(results, "scaling-runs.csv")
     if not os.path.exists(ledger_path):
         raise Refusal(f"compare-sweeps: no ledger at {ledger_path} (scripts/scaling.sh ledger writes it)")
     rows = list(csv.DictReader(open(ledger_path)))
-    direct_c8 = read_sweep(os.path.join(tuning_dir, "tune-direct-c8.xml"))
+    direct = {r: read_sweep(os.path.join(tuning_dir, f"tune-direct-{r}.xml")) for r in ("c8", "r1")}
     hybrid = {r: read_sweep(os.path.join(tuning_dir, f"tune-hybrid-{r}.xml")) for r in ("c8", "r1")}
     # Every refusal before anything is written.
-    won = {"direct": tuned(rows, direct_c8, [None], provisional, ledger_path)[None]}
+    won = {}
     for r in ("c8", "r1"):
+        won[f"direct-{r}"] = tuned(rows, direct[r], [None], provisional, ledger_path)[None]
         for m, w in tuned(rows, hybrid[r], ["offset", "switch"], provisional, ledger_path).items():
             won[f"{m}-{r}"] = w
-    unfinished = [s["name"] for s in (direct_c8, hybrid["c8"], hybrid["r1"])
+    unfinished = [s["name"] for s in (direct["c8"], direct["r1"], hybrid["c8"], hybrid["r1"])
                   if sum(1 for r in rows if r["study"] == s["name"] and r["status"] == "done") < s["runs"]]
+    r1_is_issue21 = same_as_issue21(cic, direct["r1"], won["direct-r1"][0], issue21)
 
     def note(method, study, w):
         return f"{method}: {study['name']}'s winner {w[0]} (median best_ever {w[1]:.2f} over {w[2]} finished runs)"
@@ -235,11 +253,13 @@ def compare_sweeps(results, out, tuning_dir, cic, provisional):
         r = "r1" if robot in R_ROBOTS else "c8"
         top = top_sets(robot, hybrid[r], out)
         variants, notes = [], []
+        dw = won[f"direct-{r}"]
+        if r == "c8" or not r1_is_issue21:
+            sets, nbase = direct_variant(cic, robot, out, top, hybrid[r], direct[r], dw[0])
+            variants.append((f"direct.{dw[0]}", sets))
+            notes.append(note(f"direct.{dw[0]}", direct[r], dw)
+                         + f";\n         its first {nbase} sets turn the hybrids' base into {os.path.basename(direct[r]['base'])}")
         if r == "c8":
-            sets, nbase = direct_variant(cic, robot, out, top, hybrid["c8"], direct_c8, won["direct"][0])
-            variants.append((f"direct.{won['direct'][0]}", sets))
-            notes.append(note(f"direct.{won['direct'][0]}", direct_c8, won["direct"])
-                         + f";\n         its first {nbase} sets turn the hybrids' base into {os.path.basename(direct_c8['base'])}")
             variants.append(("hypergp-gait", HYPERGP_GAIT))
             notes.append(f"hypergp-gait: the base of {hybrid['c8']['name']}, switch and offsets off")
         for m in ("offset", "switch"):
@@ -249,9 +269,13 @@ def compare_sweeps(results, out, tuning_dir, cic, provisional):
         budget = R_BUDGET if r == "r1" else CENTIPEDE_BUDGET
         if not any(key_of(s) == "Gait.evaluations" and s.endswith(f"={budget}") for s in top):
             raise Refusal(f"compare-sweeps: {hybrid[r]['name']} does not set Gait.evaluations={budget}")
-        if r == "r1":
-            notes.append("the direct method and HyperGP-gait at 15,000: issue 21's runs "
-                         "(experiments/baselines/walk-15000-*.xml)")
+        if r == "r1" and r1_is_issue21:
+            notes.append(f"the direct method ({direct['r1']['name']}'s winner {dw[0]}, with exactly the settings of "
+                         f"issue 21's\n         {os.path.basename(issue21)}) and HyperGP-gait at 15,000: "
+                         "issue 21's runs")
+        elif r == "r1":
+            notes.append(f"HyperGP-gait at 15,000: issue 21's runs; its direct runs are not {direct['r1']['name']}'s "
+                         f"winner,\n         so the direct method runs here")
         texts[robot] = sweep_text(f"compare-{robot}", robot, budget, out, hybrid[r], top, variants, notes, unfinished)
     os.makedirs(out, exist_ok=True)
     paths = []

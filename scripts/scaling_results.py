@@ -8,9 +8,10 @@ HyperGP method against the best direct one by the two-sided Mann-Whitney U
 (scipy), Holm over every cell of the table, A12 with a bootstrap 95 % interval
 (study_stats.py, as walk-report.py); the ratio of medians with a bootstrap 95 %
 interval against hinge count, regular and irregular centipedes, as an SVG.
-R1 and R2 have no direct method in the comparison: their direct method and
-HyperGP-gait at 15,000 evaluations are issue 21's runs, read (raw_fitness) from
-experiments/baselines/results/walk-runs.csv."""
+R1 and R2 take HyperGP-gait at 15,000 evaluations from issue 21's runs, and
+their direct method too unless their compare sweeps run one (compare-sweeps
+does when R1's tuning winner is not issue 21's configuration), read
+(raw_fitness) from experiments/baselines/results/walk-runs.csv."""
 import csv
 import os
 import random
@@ -97,17 +98,35 @@ def raw_scores(results, studies, cic):
                                                       ["raw_fitness"])) for r in rows]
 
 
-def groups(scores, baselines):
-    """{robot: {method: [raw]}}; R1 and R2 get issue 21's direct and HyperGP-gait runs."""
+def planned_methods(results):
+    """{robot: {method}} of every compare run in the ledger, finished or not: what each robot's
+    compare sweep runs."""
+    out = {}
+    for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv"))):
+        if r["study"].startswith("compare-"):
+            out.setdefault(robot_of(r["study"]), set()).add(method_of(r["config"]))
+    return out
+
+
+def groups(scores, baselines, planned=None):
+    """({robot: {method: [raw]}}, {robot: [method taken from issue 21]}): R1 and R2 get issue 21's
+    direct and HyperGP-gait runs for the methods their compare sweeps do not run (compare-sweeps
+    runs the direct method there when R1's tuning winner is not issue 21's configuration). A
+    method a sweep runs (`planned`, finished or not) is never borrowed: until its runs finish,
+    its cells wait."""
     out = {}
     for study, config, _, raw in scores:
         out.setdefault(robot_of(study), {}).setdefault(method_of(config), []).append(raw)
+    own = {robot: set(methods) | (planned or {}).get(robot, set()) for robot, methods in out.items()}
+    borrowed = {}
     if os.path.exists(baselines):
         for r in csv.DictReader(open(baselines)):
-            robot = r["config"].lower()
-            if r["study"] in BASELINE_STUDIES and robot in out:
-                out[robot].setdefault(BASELINE_STUDIES[r["study"]], []).append(float(r["raw_fitness"]))
-    return out
+            robot, method = r["config"].lower(), BASELINE_STUDIES.get(r["study"])
+            if method and robot in out and method not in own[robot]:
+                out[robot].setdefault(method, []).append(float(r["raw_fitness"]))
+                if method not in borrowed.setdefault(robot, []):
+                    borrowed[robot].append(method)
+    return out, borrowed
 
 
 def cells(g):
@@ -168,6 +187,23 @@ def table(g, sc_cells):
     return out
 
 
+def evaluation_counts(results):
+    """Lines of the real evaluation counts per robot and method (finished compare runs): GP-based
+    methods count every re-bred and re-evaluated individual, so they may pass the budget a little."""
+    counts = {}
+    for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv"))):
+        if r["study"].startswith("compare-") and r["status"] == "done":
+            counts.setdefault((robot_of(r["study"]), method_of(r["config"])), []).append(int(r["evaluations"]))
+    order = sc.CENTIPEDES + list(sc.R_ROBOTS)
+    out = ["", "Evaluations per run (the real counts; median [least, most]):", "",
+           "| robot | method | evaluations |", "|---|---|---|"]
+    for (robot, m), v in sorted(counts.items(), key=lambda kv: (order.index(kv[0][0]) if kv[0][0] in order
+                                                                else len(order), sc.METHODS.index(kv[0][1])
+                                                                if kv[0][1] in sc.METHODS else 9)):
+        out.append(f"| {robot} | {LABELS.get(m, m)} | {statistics.median(v):,.0f} [{min(v):,}, {max(v):,}] |")
+    return out if counts else []
+
+
 def figure(g, sc_cells, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -209,7 +245,8 @@ def results(results_dir, studies, cic, figure_path, baselines):
         import scipy.stats  # noqa: F401
     except ImportError as e:
         raise sc.Refusal(f"results needs scipy and matplotlib ({e}): run it with Debian's /usr/bin/python3")
-    g = groups(raw_scores(results_dir, studies, cic), baselines)
+    planned = planned_methods(results_dir)
+    g, borrowed = groups(raw_scores(results_dir, studies, cic), baselines, planned)
     if not g:
         raise sc.Refusal(f"results: no finished compare run in {os.path.join(results_dir, 'scaling-runs.csv')}")
     s = score(g)
@@ -218,9 +255,19 @@ def results(results_dir, studies, cic, figure_path, baselines):
            "scored on the raw eq. 7.1 of its replayed best (`cic assess`, cached in `compare-raw.csv`). Each",
            "HyperGP method faces the best direct method on the same robot: two-sided Mann-Whitney U, Holm over",
            f"all {len(s)} cells of the table, A12 (the chance that the HyperGP method's run beats the direct one's)",
-           "and the ratio of medians with bootstrap 95 % intervals. R1 and R2: the direct method and HyperGP-gait",
-           "are issue 21's runs at 15,000 evaluations (experiments/baselines/results/walk-runs.csv).", ""]
+           "and the ratio of medians with bootstrap 95 % intervals."]
+    for robot in sorted(g):
+        waiting = sorted(m for m in planned.get(robot, set()) if m not in g[robot])
+        if waiting:
+            out.append(f"{robot}: {' and '.join(LABELS[m] for m in waiting)} "
+                       f"{'has' if len(waiting) == 1 else 'have'} no finished run yet.")
+    for robot, methods in sorted(borrowed.items()):
+        out.append(f"{robot.upper() if robot in sc.R_ROBOTS else robot}: "
+                   f"{' and '.join(LABELS[m] for m in methods)} {'is' if len(methods) == 1 else 'are'} issue 21's "
+                   "runs at 15,000 evaluations (experiments/baselines/results/walk-runs.csv).")
+    out.append("")
     out += table(g, s)
+    out += evaluation_counts(results_dir)
     quiet = [r for r in g if any((r, m) in s for m in sc.METHODS) and
              not any(s[(r, m)]["holm"] < ALPHA for m in sc.METHODS if (r, m) in s)]
     if quiet:

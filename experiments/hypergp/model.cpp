@@ -122,6 +122,27 @@ gp::DirectGenes direct_offset_genes(const Model& m) {
     return g;
 }
 
+void check_offsets(const Model& m, std::span<const double> offsets, const std::string& who, const std::string& file) {
+    const gp::DirectGenes genes = direct_offset_genes(m);
+    if (genes.count == 0) {
+        if (!offsets.empty())
+            throw InputError(who + ": offsets are Offset-HybrID's direct genes beside HyperGP trees; these settings "
+                                   "have none (Neural.directOffsets = 0)",
+                             file);
+        return;
+    }
+    if (offsets.size() != genes.count)
+        throw InputError(fmt::format("{}: {} offsets, but these settings' Offset-HybrID (Neural.directOffsets) has "
+                                     "one per hinge of robot {}: {}",
+                                     who, offsets.size(), m.robot.name, genes.count),
+                         file);
+    for (std::size_t i = 0; i < offsets.size(); ++i)
+        if (!std::isfinite(offsets[i]) || std::abs(offsets[i]) > genes.limit)
+            throw InputError(fmt::format("{}: offset {} is {}, outside [-{}, {}] (units of pi/2)", who, i, offsets[i],
+                                         genes.limit, genes.limit),
+                             file);
+}
+
 std::string job_body(const tree::Forest& genotype, sim::Descriptor descriptor, std::span<const double> offsets) {
     std::string body;
     for (const auto& t : genotype) body += t.to_string() + "\n";

@@ -118,6 +118,10 @@ class Evaluator:
         self._session = _core.Session(str(settings_path), int(workers), _overrides(set), _paths.executable())
         self.form = self._session.form                  # 'vector' (gait, CPG) or 'forest' (HyperGP trees)
         self.dimension = self._session.dimension        # a vector's length, or the trees of a forest
+        self.offset_count = self._session.offset_count  # Offset-HybrID's direct offsets per forest (0: none)
+        # The gait vector's length when gait vectors are taken: the gait family's, or beside trees a
+        # Switch-HybrID run's genotype after its hand-over (Run.form 'vector'); else 0.
+        self.vector_dimension = self._session.vector_dimension
         self.workers = self._session.workers
         self.settings_file = self._session.settings_file   # the file found
         self.experiment = self._session.experiment      # Experiment.type
@@ -149,24 +153,29 @@ class Evaluator:
                 f"{self.workers} worker{'s' if self.workers != 1 else ''}>")
 
     # --- scoring -------------------------------------------------------------------------
-    def evaluate(self, batch):
+    def evaluate(self, batch, offsets=None):
         """Scores a batch: a 2-D array or list of unit-box vectors (gait, CPG), or a list of
-        S-expression strings / lists of strings (HyperGP trees, one list per forest). Returns an Evaluation."""
+        S-expression strings / lists of strings (HyperGP trees, one list per forest). With
+        Offset-HybrID settings (Evaluator.offset_count > 0) `offsets` gives each forest's direct
+        offsets, one row per genotype (units of pi/2, as Run.best_offsets). Returns an Evaluation."""
         if self._closed:
             raise ValueError("this Evaluator is closed")
-        if self.form == "vector":
-            result = self._session.evaluate_vectors(_vector_batch(batch, self.dimension))
+        if self.form == "vector" or (self.vector_dimension and _numbers(batch)):
+            if offsets is not None:
+                raise ValueError("offsets go beside HyperGP trees (Offset-HybrID), not gait vectors")
+            result = self._session.evaluate_vectors(_vector_batch(batch, self.vector_dimension))
         else:
-            result = self._session.evaluate_forests(_forest_batch(batch))
+            forests = _forest_batch(batch)
+            result = self._session.evaluate_forests(forests, _offset_rows(offsets, len(forests), self.offset_count))
         for line in self._session.take_warnings():
             warnings.warn(line, CicWarning, stacklevel=2)
         return Evaluation(result)
 
-    def simulate(self, genotype, trace=True):
+    def simulate(self, genotype, trace=True, offsets=None):
         """The whole evaluation of one genotype, in this process (see cic.simulate)."""
         if self._closed:
             raise ValueError("this Evaluator is closed")
-        return _simulate(self._session, self.form, genotype, trace)
+        return _simulate(self._session, self.form, genotype, trace, offsets)
 
 
 def _vector_batch(batch, dimension):
@@ -203,25 +212,71 @@ def _forest_batch(batch):
     return forests
 
 
-def _simulate(session, form, genotype, trace):
-    if form == "vector":
+def _numbers(batch):
+    """Whether a batch (or one genotype) is numbers: gait vectors, not S-expressions."""
+    if isinstance(batch, (str, bytes)):
+        return False
+    if isinstance(batch, np.ndarray):
+        return batch.dtype.kind in "fiu"   # an empty float batch too
+    try:
+        arr = np.asarray(batch)
+    except ValueError:
+        return False
+    return arr.size > 0 and arr.dtype.kind in "fiu"
+
+
+def _offset_rows(offsets, count, per_genotype):
+    """Offset-HybrID's offsets as one list of floats per genotype, or [] for none."""
+    if offsets is None:
+        if per_genotype and count:
+            raise ValueError(f"these settings are Offset-HybrID's (Neural.directOffsets): pass offsets=, "
+                             f"{per_genotype} per genotype (Run.best_offsets)")
+        return []
+    if isinstance(offsets, (str, bytes)):
+        raise ValueError("offsets are numbers, one row per genotype")
+    try:
+        arr = np.asarray(offsets, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"offsets: a 2-D array of numbers, one row per genotype: {e}") from None
+    if count == 0 and arr.size == 0:
+        return []
+    if arr.ndim != 2 or arr.shape[0] != count:
+        raise ValueError(f"offsets: a 2-D array of numbers, one row per genotype ({count}); got shape {arr.shape}")
+    return arr.tolist()
+
+
+def _simulate(session, form, genotype, trace, offsets=None):
+    if form == "vector" or (session.vector_dimension and _numbers(genotype)):
+        if offsets is not None:
+            raise ValueError("offsets go beside HyperGP trees (Offset-HybrID), not gait vectors")
         if isinstance(genotype, (str, bytes)):
             raise ValueError("these settings evolve gait vectors: a genotype is a sequence of numbers")
         arr = np.asarray(genotype)
         if arr.dtype.kind not in "fiu" or arr.ndim != 1:
             raise ValueError(f"a gait genotype is a 1-D sequence of numbers; got dtype {arr.dtype}, shape {arr.shape}")
-        return Simulation(session.simulate(arr.astype(np.float64).tolist(), [], bool(trace)))
+        return Simulation(session.simulate(arr.astype(np.float64).tolist(), [], bool(trace), []))
     trees = _forest_batch([genotype])[0]
-    return Simulation(session.simulate([], trees, bool(trace)))
+    if offsets is None:
+        if session.offset_count:
+            raise ValueError(f"these settings are Offset-HybrID's (Neural.directOffsets): pass offsets=, "
+                             f"{session.offset_count} numbers (Run.best_offsets)")
+        return Simulation(session.simulate([], trees, bool(trace), []))
+    if isinstance(offsets, (str, bytes)):
+        raise ValueError("one genotype's offsets are a 1-D sequence of numbers, not a string")
+    arr = np.asarray(offsets)
+    if arr.dtype.kind not in "fiu" or arr.ndim != 1:
+        raise ValueError(f"one genotype's offsets are a 1-D sequence of numbers; got dtype {arr.dtype}, "
+                         f"shape {arr.shape}")
+    return Simulation(session.simulate([], trees, bool(trace), arr.astype(np.float64).tolist()))
 
 
-def simulate(settings_path, genotype, trace=True, set=None):
+def simulate(settings_path, genotype, trace=True, set=None, offsets=None):
     """The whole evaluation of one genotype for these settings, in this process: a Simulation with the
     time, the centre's path, joint angles and targets and each foot's contacts, as numpy arrays, and
     the fitness a run would give it (bit for bit). What a fitness of your own, such as walking in a
-    circle, needs."""
+    circle, needs. `offsets`: an Offset-HybrID genotype's direct offsets beside its trees."""
     session = _core.Session(str(settings_path), 1, _overrides(set), _paths.executable())
     try:
-        return _simulate(session, session.form, genotype, trace)
+        return _simulate(session, session.form, genotype, trace, offsets)
     finally:
         session.close()

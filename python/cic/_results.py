@@ -16,6 +16,8 @@ class Run:
 
     best_genotype  one element Evaluator.evaluate accepts: a 1-D array (gait, CPG), an S-expression
                    string (one tree) or a list of them (a forest)
+    best_offsets   Offset-HybrID's direct offsets beside best_genotype's trees (a 1-D array, empty
+                   without them): pass them as Evaluator.evaluate(..., offsets=[run.best_offsets])
     best_fitness   its stored fitness (float): evaluating best_genotype gives these bits
     generation     the checkpoint it was read from (a MAP-Elites run: the batch)
     settings       the run's settings.xml (pass it to cic.Evaluator)
@@ -31,6 +33,7 @@ class Run:
         else:
             trees = list(best["trees"])
             self.best_genotype = trees[0] if len(trees) == 1 else trees
+        self.best_offsets = best["offsets"]
         self.best_fitness = float(best["fitness"])
         self.generation = int(best["generation"])
         self.settings = best["settings"]

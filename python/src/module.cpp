@@ -82,6 +82,8 @@ public:
 
     std::string form() const { return form_name(session_->form()); }
     std::size_t dimension() const { return session_->dimension(); }
+    std::size_t offset_count() const { return session_->offsets(); }
+    std::size_t vector_dimension() const { return session_->vector_dimension(); }
     int workers() const { return session_->workers(); }
     std::string settings_file() const { return session_->settings_file().string(); }
     std::string experiment() const { return session_->settings().experiment.type; }
@@ -100,14 +102,22 @@ public:
         return run(batch);
     }
 
-    py::dict evaluate_forests(const std::vector<std::vector<std::string>>& forests) {
+    // `offsets`: one row per forest (Offset-HybrID), or none at all.
+    py::dict evaluate_forests(const std::vector<std::vector<std::string>>& forests,
+                              const std::vector<std::vector<double>>& offsets) {
+        if (!offsets.empty() && offsets.size() != forests.size())
+            throw InputError("offsets: one row per genotype of the batch");
         std::vector<Genotype> batch(forests.size());
-        for (std::size_t i = 0; i < forests.size(); ++i) batch[i].trees = forests[i];
+        for (std::size_t i = 0; i < forests.size(); ++i) {
+            batch[i].trees = forests[i];
+            if (!offsets.empty()) batch[i].offsets = offsets[i];
+        }
         return run(batch);
     }
 
-    py::dict simulate(const std::vector<double>& vector, const std::vector<std::string>& trees, bool trace) {
-        Genotype g{vector, trees};
+    py::dict simulate(const std::vector<double>& vector, const std::vector<std::string>& trees, bool trace,
+                      const std::vector<double>& offsets) {
+        Genotype g{vector, trees, offsets};
         run::Walk w;
         {
             py::gil_scoped_release release;
@@ -179,6 +189,7 @@ py::dict read_run_best(const std::string& folder) {
     d["form"] = form_name(b.form);
     d["vector"] = vector_array(b.genotype.vector);
     d["trees"] = b.genotype.trees;
+    d["offsets"] = vector_array(b.genotype.offsets);
     d["fitness"] = b.fitness;
     d["generation"] = b.generation;
     d["settings"] = b.settings.string();
@@ -204,14 +215,16 @@ PYBIND11_MODULE(_core, m) {
              py::arg("settings"), py::arg("workers"), py::arg("overrides"), py::arg("worker_executable"))
         .def_property_readonly("form", &Session::form)
         .def_property_readonly("dimension", &Session::dimension)
+        .def_property_readonly("offset_count", &Session::offset_count)
+        .def_property_readonly("vector_dimension", &Session::vector_dimension)
         .def_property_readonly("workers", &Session::workers)
         .def_property_readonly("settings_file", &Session::settings_file)
         .def_property_readonly("experiment", &Session::experiment)
         .def_property_readonly("descriptor", &Session::descriptor)
         .def("take_warnings", &Session::take_warnings)
         .def("evaluate_vectors", &Session::evaluate_vectors)
-        .def("evaluate_forests", &Session::evaluate_forests)
-        .def("simulate", &Session::simulate, py::arg("vector"), py::arg("trees"), py::arg("trace"))
+        .def("evaluate_forests", &Session::evaluate_forests, py::arg("forests"), py::arg("offsets"))
+        .def("simulate", &Session::simulate, py::arg("vector"), py::arg("trees"), py::arg("trace"), py::arg("offsets"))
         .def("close", &Session::close);
     m.def("read_run_best", &read_run_best, py::arg("folder"));
 }

@@ -82,12 +82,21 @@ private:
     bool eof_ = false;
 };
 
-// A line's genotype: {"genotype": G, "id": ANY} or G alone, where G is an array
-// of numbers (a gait or CPG vector), an S-expression string, or an array of them
-// (a forest). Throws InputError for anything else.
+// A line's genotype: {"genotype": G, "offsets": [D...], "id": ANY} or G alone,
+// where G is an array of numbers (a gait or CPG vector), an S-expression string,
+// or an array of them (a forest), and "offsets" Offset-HybrID's per-hinge direct
+// genes beside a forest. Throws InputError for anything else.
 run::Genotype genotype_of(const json& line) {
     const json& g = line.is_object() ? line.at("genotype") : line;
     run::Genotype out;
+    if (line.is_object() && line.contains("offsets")) {
+        const json& d = line.at("offsets");
+        if (!d.is_array()) throw InputError("\"offsets\" is an array of numbers (Offset-HybrID's, one per hinge)");
+        for (const json& v : d) {
+            if (!v.is_number()) throw InputError("\"offsets\" is an array of numbers (Offset-HybrID's, one per hinge)");
+            out.offsets.push_back(v.get<double>());
+        }
+    }
     if (g.is_string()) {
         out.trees.push_back(g.get<std::string>());
     } else if (g.is_array() && !g.empty() && g.front().is_string()) {
@@ -115,6 +124,8 @@ json info_of(const run::EvaluationSession& session) {
     j["experiment"] = s.experiment.type;
     j["form"] = session.form() == run::GenotypeForm::Vector ? "vector" : "forest";
     j["dimension"] = session.dimension();
+    j["offset_count"] = session.offsets();
+    j["vector_dimension"] = session.vector_dimension();
     j["descriptor"] = s.map_elites.enabled ? sim::to_string(s.map_elites.descriptor) : "none";
     j["workers"] = session.workers();
     return j;

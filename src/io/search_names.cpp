@@ -76,6 +76,22 @@ void register_search_name(SearchName name) {
     detail::refresh_open_choice_row("Experiment", "search", name_list(), search_doc());
 }
 
+namespace {
+AutoSearchPick& pick_function() {
+    static AutoSearchPick pick = nullptr;
+    return pick;
+}
+} // namespace
+
+void set_auto_search_pick(AutoSearchPick pick) { pick_function() = pick; }
+
+std::string auto_search_pick(const Settings& s) {
+    if (!pick_function()) return {};
+    Settings as_auto = s;
+    as_auto.experiment.search = "auto";
+    return pick_function()(as_auto);
+}
+
 namespace detail {
 
 SettingKey search_row() {

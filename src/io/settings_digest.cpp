@@ -7,6 +7,7 @@
 #include "cic/core/hash.hpp"
 #include "cic/core/rng.hpp"
 #include "cic/io/population_xml.hpp"
+#include "cic/io/search_names.hpp"
 #include "cic/io/settings_table.hpp"
 
 namespace cic::io {
@@ -28,6 +29,8 @@ std::string settings_digest(const Settings& s) {
         if (k.section == "MapElites" && !s.map_elites.enabled) continue;
         const std::string value = k.get(s);
         if (!k.digest_at_default && value == default_text(k)) continue;
+        // A search named explicitly that `auto` picks anyway computes the same run.
+        if (full == "Experiment.search" && value == auto_search_pick(s)) continue;
         lines += full + "=" + value + "\n";
     }
     return hex16(mix64(fnv1a_64(lines)));

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
+#include <span>
 #include <utility>
 
 #include <fmt/format.h>
@@ -10,6 +12,7 @@
 #include "cic/core/error.hpp"
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
+#include "cic/gp/individual.hpp"
 #include "cic/io/experiment_types.hpp"
 #include "cic/io/archive_xml.hpp"
 #include "cic/io/gait_xml.hpp"
@@ -33,6 +36,53 @@ std::string cell(const std::string& s) {
 
 std::string number(double v) { return fmt::format("{}", v); }
 
+// Eq. 7.1's terms of a run's genotypes, each distinct one replayed once (a gait
+// vector, or trees with their direct offsets), as the run's settings score it.
+// Off (`enabled` false), every cell is empty. Built on first use: a run's
+// checkpoints may hold gaits, trees or both (Switch-HybrID).
+class TermsReplay {
+public:
+    TermsReplay(const io::Settings& s, bool enabled) : settings_(s), enabled_(enabled) {}
+
+    // "distance", "elevation" of a gait vector, or two empty cells.
+    std::pair<std::string, std::string> gait(const std::vector<double>& x) {
+        if (!enabled_) return {};
+        std::string key = "gait";
+        for (double v : x) key += " " + number(v);
+        return cached(key, [&] {
+            if (!setup_) setup_.emplace(gait::Setup::from_settings(settings_));
+            const auto controller = setup_->controller(x);
+            return eq71_terms(setup_->robot, sim::evaluate(setup_->robot, *controller, setup_->sim));
+        });
+    }
+
+    // The same of trees and their direct offsets (Offset-HybrID; else empty).
+    std::pair<std::string, std::string> trees(const tree::Forest& genotype, std::span<const double> offsets) {
+        if (!enabled_) return {};
+        std::string key = "trees";
+        for (const auto& t : genotype) key += " | " + t.to_string();
+        for (double v : offsets) key += " " + number(v);
+        return cached(key, [&] {
+            if (!model_) model_.emplace(hypergp::Model::from_settings(settings_));
+            return eq71_terms(model_->robot, hypergp::run(*model_, genotype, offsets).result);
+        });
+    }
+
+private:
+    template <class Replay>
+    std::pair<std::string, std::string> cached(const std::string& key, Replay replay) {
+        auto [it, fresh] = seen_.try_emplace(key);
+        if (fresh) it->second = replay();
+        return {number(it->second.first), number(it->second.second)};
+    }
+
+    const io::Settings& settings_;
+    bool enabled_;
+    std::optional<gait::Setup> setup_;
+    std::optional<hypergp::Model> model_;
+    std::map<std::string, std::pair<double, double>> seen_;   // genotype -> terms, once per run
+};
+
 // A run's saved generations, oldest first.
 std::vector<fs::path> saved_generations(const fs::path& run) {
     std::vector<fs::path> files;
@@ -45,31 +95,20 @@ std::vector<fs::path> saved_generations(const fs::path& run) {
 }
 
 // A MAP-Elites run: the elites of its last archive, in cell order.
-void export_elites(const fs::path& run, const io::Settings& s, const std::string& prefix, bool terms, std::string& csv) {
+void export_elites(const fs::path& run, const io::Settings& s, const std::string& prefix, TermsReplay& terms,
+                   std::string& csv) {
     if (!fs::exists(run / "population.xml")) return;   // no batch finished yet
     const io::ArchiveFile a = io::load_archive(run / "population.xml");
     const bool gait = io::family_of(s) == io::ExperimentFamily::Gait;
-    std::optional<gait::Setup> setup;
-    std::optional<hypergp::Model> model;
-    if (terms && gait) setup = gait::Setup::from_settings(s);
-    if (terms && !gait) model = hypergp::Model::from_settings(s);
     for (const io::ArchiveElite& e : a.elites) {
         std::string solution, descriptor;
         for (double x : e.x) solution += (solution.empty() ? "" : " ") + number(x);
         for (const auto& t : e.genotype) solution += (solution.empty() ? "" : " | ") + t.to_string();
         for (double v : e.descriptor) descriptor += (descriptor.empty() ? "" : " ") + number(v);
-        std::string dist, elev, depth, size;
-        if (setup) {
-            const auto controller = setup->controller(e.x);
-            const auto [d, z] = eq71_terms(setup->robot, sim::evaluate(setup->robot, *controller, setup->sim));
-            dist = number(d), elev = number(z);
-        } else if (model) {
-            const auto [d, z] = eq71_terms(model->robot, hypergp::run(*model, e.genotype).result);
-            dist = number(d), elev = number(z);
-        }
+        const auto [dist, elev] = gait ? terms.gait(e.x) : terms.trees(e.genotype, {});
+        std::string depth, size;
         if (!gait) {
-            depth = std::to_string(s.gp.forest_depth == gp::ForestDepth::Sum ? tree::total_depth(e.genotype)
-                                                                             : tree::max_depth(e.genotype));
+            depth = std::to_string(gp::forest_depth(e.genotype, s.gp.forest_depth));
             size = std::to_string(tree::total_size(e.genotype));
         }
         csv += prefix + fmt::format("{},{},{},{},{},{},{},0,{},{},{}\n", a.batches - 1, e.cell, number(e.fitness), dist,
@@ -77,47 +116,62 @@ void export_elites(const fs::path& run, const io::Settings& s, const std::string
     }
 }
 
+// A search registered from outside keeps its own checkpoint files: each saved
+// one gives the individual its reader names (its best), numbered as the file is.
+void export_foreign(const std::vector<fs::path>& files, const io::Settings& s, const CheckpointBestReader& reader,
+                    const std::string& prefix, TermsReplay& terms, std::string& csv) {
+    for (const fs::path& file : files) {
+        const CheckpointBest best = read_checkpoint_best(reader, s, file.string());
+        const std::string digits = file.stem().string().substr(4);   // gen-NNNN
+        if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+            throw InputError("a saved generation is named gen-NUMBER.xml", file.string());
+        std::string solution, depth, size;
+        for (const auto& t : best.trees) solution += (solution.empty() ? "" : " | ") + t.to_string();
+        if (best.trees.empty())   // a gait; beside trees, x holds their direct offsets, not shown (as in a population's rows)
+            for (double x : best.x) solution += (solution.empty() ? "" : " ") + number(x);
+        if (!best.trees.empty()) {
+            depth = std::to_string(gp::forest_depth(best.trees, s.gp.forest_depth));
+            size = std::to_string(tree::total_size(best.trees));
+        }
+        const auto [dist, elev] = best.trees.empty() ? terms.gait(best.x) : terms.trees(best.trees, best.x);
+        csv += prefix + fmt::format("{},0,{},{},{},{},{},0,{},,\n", std::stoi(digits), number(best.fitness), dist,
+                                    elev, depth, size, cell(solution));
+    }
+}
+
 void export_run(const fs::path& run, const std::string& label, const std::string& config, const std::string& seed,
-                bool terms, std::string& csv) {
+                bool replay_terms, std::string& csv) {
     if (!fs::is_regular_file(run / "settings.xml"))
         throw InputError("not a run folder (no settings.xml) nor a study (no index.csv): " + run.string());
     const io::Settings s = io::read_settings(run / "settings.xml");
     const std::string prefix = cell(label) + "," + cell(config) + "," + seed + ",";
     const io::ExperimentFamily family = io::family_of(s);
-    std::map<std::string, std::pair<double, double>> seen;   // genotype -> terms, once per run
+    TermsReplay terms(s, replay_terms && family != io::ExperimentFamily::Symreg);
+    const std::vector<fs::path> saved = saved_generations(run);
+    if (!saved.empty())
+        if (const CheckpointBestReader* reader = checkpoint_reader_for(saved.front().string()))
+            return export_foreign(saved, s, *reader, prefix, terms, csv);
     if (s.map_elites.enabled) return export_elites(run, s, prefix, terms, csv);
 
     // A gait run's checkpoints, and a Switch-HybrID run's after its hand-over
     // (numbered on from the hand-over, as stats.csv numbers them).
-    std::optional<gait::Setup> setup;
-    if (terms && (family == io::ExperimentFamily::Gait || s.neural.switches())) setup = gait::Setup::from_settings(s);
     auto export_gait = [&](const fs::path& file) {
         const io::GaitFile g = io::load_gait(file);
         for (std::size_t i = 0; i < g.population.size(); ++i) {
             const io::GaitPoint& point = g.population[i];
             std::string params;
             for (double x : point.x) params += (params.empty() ? "" : " ") + number(x);
-            std::string dist, elev;
-            if (setup) {
-                auto [it, fresh] = seen.try_emplace(params);
-                if (fresh) {
-                    const auto controller = setup->controller(point.x);
-                    it->second = eq71_terms(setup->robot, sim::evaluate(setup->robot, *controller, setup->sim));
-                }
-                dist = number(it->second.first), elev = number(it->second.second);
-            }
+            const auto [dist, elev] = terms.gait(point.x);
             const int generation = g.generation + (g.handover ? g.handover->generation + 1 : 0);
             csv += prefix + fmt::format("{},{},{},{},{},,,0,{},,\n", generation, i, number(point.fitness), dist, elev,
                                         cell(params));
         }
     };
     if (family == io::ExperimentFamily::Gait) {
-        for (const fs::path& file : saved_generations(run)) export_gait(file);
+        for (const fs::path& file : saved) export_gait(file);
         return;
     }
-    std::optional<hypergp::Model> model;
-    if (terms && family == io::ExperimentFamily::HyperGP) model = hypergp::Model::from_settings(s);
-    for (const fs::path& file : saved_generations(run)) {
+    for (const fs::path& file : saved) {
         if (s.neural.switches() && io::is_gait_file(file)) {
             export_gait(file);
             continue;
@@ -126,15 +180,7 @@ void export_run(const fs::path& run, const std::string& label, const std::string
         for (const auto& ind : pop.population) {
             std::string trees;
             for (const auto& t : ind->genotype) trees += (trees.empty() ? "" : " | ") + t.to_string();
-            std::string dist, elev;
-            if (model) {
-                std::string key = trees;   // the genotype: trees and direct offsets (Offset-HybrID)
-                for (double d : ind->direct) key += fmt::format(" {}", d);
-                auto [it, fresh] = seen.try_emplace(key);
-                if (fresh)
-                    it->second = eq71_terms(model->robot, hypergp::run(*model, ind->genotype, ind->direct).result);
-                dist = number(it->second.first), elev = number(it->second.second);
-            }
+            const auto [dist, elev] = terms.trees(ind->genotype, ind->direct);
             csv += prefix + fmt::format("{},{},{},{},{},{},{},{},{},,\n", pop.population.generation, ind->id,
                                         number(ind->fitness), dist, elev, ind->depth(s.gp.forest_depth), ind->size(),
                                         ind->failed ? 1 : 0, cell(trees));

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <span>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -100,14 +101,44 @@ std::string root_of(const fs::path& file) {
     }
 }
 
-// A checkpoint of a search registered from outside: its reader gives the best gait.
+// One HyperGP genotype (with its direct genes, if any), scored as the run's type
+// scores it (a registered type's own fitness), eq. 7.1 beside it, and recorded.
+ReplayItem replay_trees(const hypergp::Model& model, const io::Settings& settings, const tree::Forest& genotype,
+                        std::span<const double> offsets, double fps, bool trace) {
+    sim::EvalOptions opt;
+    opt.record_fps = fps;
+    opt.record_trace = trace;
+    opt.record_ground = trace;
+    const hypergp::Outcome o = experiments::evaluate_as_type(model, settings, genotype, opt, trace, offsets);
+    ReplayItem item;
+    if (o.result.recording) item.recording = *o.result.recording;
+    item.trace = o.result.trace;
+    if (trace) {
+        const std::size_t j = o.control.joints;
+        for (std::size_t step = 0; step < o.control.steps(); ++step)
+            item.raw_outputs.emplace_back(o.control.outputs.begin() + static_cast<std::ptrdiff_t>(step * j),
+                                          o.control.outputs.begin() + static_cast<std::ptrdiff_t>((step + 1) * j));
+    }
+    item.replayed_fitness = o.fitness;
+    item.raw_fitness = o.distance_fitness;
+    item.centre_body = centre_body_of(model.robot);
+    item.joint_names = sim::joint_names(model.robot);
+    fill_walk(item, model.robot, o.result);
+    return item;
+}
+
+// A checkpoint of a search registered from outside: its reader gives the best
+// gait, or the best trees of a search of trees.
 std::vector<ReplayItem> replay_foreign(const Source& src, const io::Settings& settings, const std::string& individual,
                                        const CheckpointBestReader& reader, double fps, bool trace) {
     if (individual != "best")
-        throw InputError("this run's checkpoint keeps one gait to replay: use --individual best",
+        throw InputError("this run's checkpoint keeps one individual to replay: use --individual best",
                          src.population.string());
-    const CheckpointBest best = reader(settings, src.population.string());
-    ReplayItem item = replay_point(gait::Setup::from_settings(settings), best.x, fps, trace);
+    const CheckpointBest best = read_checkpoint_best(reader, settings, src.population.string());
+    ReplayItem item = best.trees.empty()
+                          ? replay_point(gait::Setup::from_settings(settings), best.x, fps, trace)
+                          : replay_trees(hypergp::Model::from_settings(settings), settings, best.trees, best.x, fps,
+                                         trace);
     item.label = fmt::format("{}, found in generation {}", best.who, best.generation);
     item.who = best.who;
     item.stored_fitness = best.fitness;
@@ -216,44 +247,17 @@ std::vector<ReplayItem> replay_archive(const Source& src, const io::Settings& se
     }
     std::vector<ReplayItem> items;
     for (const io::ArchiveElite* e : chosen) {
-        sim::EvalOptions opt;
-        opt.record_fps = fps;
-        opt.record_trace = trace;
-        opt.record_ground = trace;
-        ReplayItem item;
+        if (gait && e->x.size() != setup->dimension())
+            throw InputError(fmt::format("the elite of cell {} has {} parameters, these settings make {}", e->cell,
+                                         e->x.size(), setup->dimension()),
+                             src.population.string());
+        ReplayItem item = gait ? replay_point(*setup, e->x, fps, trace)
+                               : replay_trees(*model, settings, e->genotype, {}, fps, trace);
         item.label = fmt::format("cell {} ({}), batch {}", a.grid.cell_name(e->cell), e->cell, a.batches - 1);
         item.stored_fitness = e->fitness;
         item.generation = a.batches - 1;
         item.id = e->cell;
         item.elite = true;
-        sim::EvalResult r;
-        if (gait) {
-            if (e->x.size() != setup->dimension())
-                throw InputError(fmt::format("the elite of cell {} has {} parameters, these settings make {}", e->cell,
-                                             e->x.size(), setup->dimension()),
-                                 src.population.string());
-            const auto controller = setup->controller(e->x);
-            r = sim::evaluate(robot, *controller, setup->sim, opt);
-            item.replayed_fitness = item.raw_fitness = r.fitness;
-            if (trace)
-                for (const auto& row : r.trace) item.raw_outputs.push_back(row.desired);
-        } else {
-            const hypergp::Outcome o = experiments::evaluate_as_type(*model, settings, e->genotype, opt, trace);
-            r = o.result;
-            item.replayed_fitness = o.fitness;
-            item.raw_fitness = o.distance_fitness;
-            if (trace) {
-                const std::size_t j = o.control.joints;
-                for (std::size_t step = 0; step < o.control.steps(); ++step)
-                    item.raw_outputs.emplace_back(o.control.outputs.begin() + static_cast<std::ptrdiff_t>(step * j),
-                                                  o.control.outputs.begin() + static_cast<std::ptrdiff_t>((step + 1) * j));
-            }
-        }
-        if (r.recording) item.recording = *r.recording;
-        item.trace = r.trace;
-        item.centre_body = centre_body_of(robot);
-        item.joint_names = sim::joint_names(robot);
-        fill_walk(item, robot, r);
         items.push_back(std::move(item));
     }
     return items;
@@ -286,13 +290,48 @@ void register_checkpoint_reader(std::string root, CheckpointBestReader reader) {
         throw std::invalid_argument("checkpoint root <" + root + "> has a reader already");
 }
 
+CheckpointBest read_checkpoint_best(const CheckpointBestReader& reader, const io::Settings& s, const std::string& file) {
+    CheckpointBest best = reader(s, file);
+    if (best.trees.empty()) {
+        // Switch-HybrID's genotypes are gait vectors after its hand-over.
+        if (io::genotype_form(s) != io::GenotypeForm::Vector && !s.neural.switches())
+            throw InputError(fmt::format("the checkpoint's reader gave a gait vector, but Experiment.type {} evolves "
+                                         "HyperGP trees",
+                                         s.experiment.type),
+                             file);
+        const std::size_t want = gait::Setup::from_settings(s).dimension();
+        if (best.x.size() != want)
+            throw InputError(fmt::format("the checkpoint's reader gave a gait of {} numbers, but these settings' gait "
+                                         "has {}",
+                                         best.x.size(), want),
+                             file);
+        return best;
+    }
+    if (io::family_of(s) != io::ExperimentFamily::HyperGP)
+        throw InputError(fmt::format("the checkpoint's reader gave trees, but Experiment.type {} does not walk a "
+                                     "HyperGP genotype",
+                                     s.experiment.type),
+                         file);
+    if (best.trees.size() != static_cast<std::size_t>(s.gp.trees_per_genotype))
+        throw InputError(fmt::format("the checkpoint's reader gave {} trees, but GP.numberOfTreesInForestGenotype is {}",
+                                     best.trees.size(), s.gp.trees_per_genotype),
+                         file);
+    hypergp::check_offsets(hypergp::Model::from_settings(s), best.x, "the checkpoint's best", file);
+    return best;
+}
+
+const CheckpointBestReader* checkpoint_reader_for(const std::string& file) {
+    if (checkpoint_readers().empty()) return nullptr;
+    const auto it = checkpoint_readers().find(root_of(file));
+    return it == checkpoint_readers().end() ? nullptr : &it->second;
+}
+
 std::vector<ReplayItem> replay(const std::string& source, const std::string& individual, int count, double fps,
                                bool trace) {
     const Source src = locate(source);
     const io::Settings settings = io::read_settings(src.settings);
-    if (!checkpoint_readers().empty())   // a registered search's own checkpoint
-        if (const auto it = checkpoint_readers().find(root_of(src.population)); it != checkpoint_readers().end())
-            return replay_foreign(src, settings, individual, it->second, fps, trace);
+    if (const CheckpointBestReader* reader = checkpoint_reader_for(src.population.string()))
+        return replay_foreign(src, settings, individual, *reader, fps, trace);   // a registered search's own file
     if (settings.map_elites.enabled) return replay_archive(src, settings, individual, count, fps, trace);
     if (individual.rfind("cell:", 0) == 0)
         throw InputError("--cell picks an elite of a MAP-Elites run (MapElites.enabled); this run has no archive",
@@ -327,36 +366,13 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
     }
 
     const hypergp::Model model = hypergp::Model::from_settings(settings);
-    const int centre_body = centre_body_of(model.robot);
-    const std::vector<std::string> joint_names = sim::joint_names(model.robot);
-
     std::vector<ReplayItem> items;
     for (const auto& ind : chosen) {
-        sim::EvalOptions opt;
-        opt.record_fps = fps;
-        opt.record_trace = trace;
-        opt.record_ground = trace;
-        // Scored as the run's type scores it (a registered type's own fitness), eq. 7.1 beside it.
-        const hypergp::Outcome o =
-            experiments::evaluate_as_type(model, settings, ind->genotype, opt, trace, ind->direct);
-        ReplayItem item;
+        ReplayItem item = replay_trees(model, settings, ind->genotype, ind->direct, fps, trace);
         item.label = fmt::format("generation {}, individual {}", pop.population.generation, ind->id);
         item.stored_fitness = ind->fitness;
         item.generation = pop.population.generation;
         item.id = ind->id;
-        if (o.result.recording) item.recording = *o.result.recording;
-        item.trace = o.result.trace;
-        if (trace) {
-            const std::size_t j = o.control.joints;
-            for (std::size_t step = 0; step < o.control.steps(); ++step)
-                item.raw_outputs.emplace_back(o.control.outputs.begin() + static_cast<std::ptrdiff_t>(step * j),
-                                              o.control.outputs.begin() + static_cast<std::ptrdiff_t>((step + 1) * j));
-        }
-        item.replayed_fitness = o.fitness;
-        item.raw_fitness = o.distance_fitness;
-        item.centre_body = centre_body;
-        item.joint_names = joint_names;
-        fill_walk(item, model.robot, o.result);
         items.push_back(std::move(item));
     }
     return items;

@@ -62,18 +62,26 @@ struct EvaluationSession::Impl {
     std::optional<gait::Setup> setup;      // gait family
     std::optional<hypergp::Model> model;   // HyperGP family
     std::optional<tree::PrimitiveSet> primitives;
+    std::size_t offsets = 0;               // Offset-HybrID's per genotype, 0 without them
     std::string job_kind;
     std::unique_ptr<experiments::Context> ctx;
-    std::unique_ptr<gait::Evaluator> gait_evaluator;
     std::unique_ptr<JobRunner> runner;
     bool closed = false;
 
     const sim::RobotSpec& robot() const { return setup ? setup->robot : model->robot; }
 
+    // A gait vector: the gait family's genotype, or a Switch-HybrID run's after its hand-over.
+    bool is_vector(const Genotype& g) const {
+        return form == GenotypeForm::Vector || (setup && g.trees.empty() && !g.vector.empty());
+    }
+
     // Throws InputError naming the genotype's place in the batch.
     void check(const Genotype& g, std::size_t index) const {
         const std::string who = fmt::format("genotype {}", index);
-        if (form == GenotypeForm::Vector) {
+        if (is_vector(g)) {
+            if (!g.offsets.empty())
+                throw InputError(who + ": offsets are Offset-HybrID's direct genes beside HyperGP trees, not beside "
+                                       "a gait vector");
             if (!g.trees.empty())
                 throw InputError(who + ": these settings evolve " + settings.experiment.type +
                                  " vectors of numbers, not trees (S-expressions)");
@@ -81,14 +89,18 @@ struct EvaluationSession::Impl {
                 throw InputError(fmt::format("{}: {} values, but these settings' {} has {} (robot {})", who,
                                              g.vector.size(), setup->cpg ? "CPG" : "gait", setup->dimension(),
                                              setup->robot.name));
+            // The unit box; Switch-HybrID's centred gait has its phases and offsets in [-1/2, 1/2] (encoding.hpp).
+            const std::vector<double> low =
+                setup->cpg ? std::vector<double>(g.vector.size(), 0.0) : setup->encoding.lower();
             for (std::size_t i = 0; i < g.vector.size(); ++i)
-                if (!std::isfinite(g.vector[i]) || g.vector[i] < 0.0 || g.vector[i] > 1.0)
-                    throw InputError(fmt::format("{}: value {} is {}, outside the unit box [0, 1] the gait family "
-                                                 "searches", who, i, g.vector[i]));
+                if (!std::isfinite(g.vector[i]) || g.vector[i] < low[i] || g.vector[i] > low[i] + 1.0)
+                    throw InputError(fmt::format("{}: value {} is {}, outside the unit box [{}, {}] the gait family "
+                                                 "searches", who, i, g.vector[i], low[i], low[i] + 1.0));
             return;
         }
         if (!g.vector.empty())
             throw InputError(who + ": these settings evolve HyperGP trees (S-expressions), not vectors of numbers");
+        hypergp::check_offsets(*model, g.offsets, who);
         if (g.trees.size() != dimension())
             throw InputError(fmt::format("{}: {} tree{}, but GP.numberOfTreesInForestGenotype is {}", who,
                                          g.trees.size(), g.trees.size() == 1 ? "" : "s", dimension()));
@@ -123,10 +135,6 @@ EvaluationSession::EvaluationSession(SessionOptions options) : impl_(std::make_u
         throw InputError("scores robot experiments (HyperGP, gait, CPG and their types); these settings are symbolic "
                          "regression (Experiment.type " + s.experiment.type + ")", im.found.string());
     experiments::check_inputs(s);   // the robot and every input a run of them reads
-    if (s.neural.direct_offsets)   // its genotype is trees plus per-hinge offsets: not one of the forms below yet
-        throw InputError("Offset-HybrID (Neural.directOffsets = 1) genotypes, trees with per-hinge offsets, cannot be "
-                         "evaluated from outside a run yet; use settings without it",
-                         im.found.string());
     if (s.map_elites.enabled) im.descriptor = s.map_elites.descriptor;
     if (io::genotype_form(s) == io::GenotypeForm::Vector) {
         im.form = GenotypeForm::Vector;
@@ -134,6 +142,9 @@ EvaluationSession::EvaluationSession(SessionOptions options) : impl_(std::make_u
     } else {
         im.form = GenotypeForm::Forest;
         im.model.emplace(hypergp::Model::from_settings(s));
+        // Switch-HybrID: its trees hand over to IPOP-CMA-ES on the gait vector, so both are its genotypes.
+        if (s.neural.switches()) im.setup.emplace(gait::Setup::from_settings(s));
+        im.offsets = hypergp::direct_offset_genes(*im.model).count;
         im.primitives.emplace(s.gp.primitives);
         im.job_kind = job_kind_of(s);
     }
@@ -164,8 +175,7 @@ void EvaluationSession::close() {
     Impl& im = *impl_;
     if (im.closed) return;
     im.closed = true;
-    im.gait_evaluator.reset();   // ends the workers
-    im.runner.reset();
+    im.runner.reset();   // ends the workers
     std::error_code ec;
     fs::remove_all(im.folder, ec);
 }
@@ -174,6 +184,8 @@ const io::Settings& EvaluationSession::settings() const { return impl_->settings
 fs::path EvaluationSession::settings_file() const { return impl_->found; }
 GenotypeForm EvaluationSession::form() const { return impl_->form; }
 std::size_t EvaluationSession::dimension() const { return impl_->dimension(); }
+std::size_t EvaluationSession::offsets() const { return impl_->offsets; }
+std::size_t EvaluationSession::vector_dimension() const { return impl_->setup ? impl_->setup->dimension() : 0; }
 int EvaluationSession::workers() const { return impl_->opt.workers; }
 
 void EvaluationSession::check(const Genotype& g, std::size_t index) const {
@@ -187,32 +199,31 @@ Scores EvaluationSession::evaluate(const std::vector<Genotype>& batch) {
     for (std::size_t i = 0; i < batch.size(); ++i) check(batch[i], i);
     Scores out;
     if (batch.empty()) return out;
-    if (!im.gait_evaluator && !im.runner) {
-        if (im.setup)
-            im.gait_evaluator = std::make_unique<gait::Evaluator>(*im.ctx, *im.setup);
-        else
-            im.runner = experiments::make_job_runner(*im.ctx);
-    }
-    std::vector<sim::EvalReply> replies;
-    if (im.form == GenotypeForm::Vector) {
-        std::vector<std::vector<double>> xs;
-        for (const Genotype& g : batch) xs.push_back(g.vector);
-        replies = im.gait_evaluator->replies(xs, im.descriptor);
-    } else {
-        // The run's own job texts (hypergp::job_body), parsed first so a bad tree fails the batch before it runs.
-        std::vector<std::string> jobs;
-        for (std::size_t i = 0; i < batch.size(); ++i)
-            jobs.push_back(im.job_kind + "\n" + hypergp::job_body(im.forest_of(batch[i], i), im.descriptor));
-        const std::vector<JobResult> results = im.runner->run(jobs);
-        for (const auto& note : im.runner->take_notes()) im.opt.warn("warning: " + note);
-        for (std::size_t i = 0; i < results.size(); ++i) {
-            const JobResult& r = results[i];
-            for (const auto& t : r.trouble) im.opt.warn(fmt::format("warning: genotype {}: {}", i, t));
-            replies.push_back(sim::reply_of(r, im.model->sim.failure_fitness));   // as a run scores it
-            if (!r.ok)
-                im.opt.warn(fmt::format("warning: genotype {} scored as failed (fitness {}): {}", i,
-                                        im.model->sim.failure_fitness, r.error));
+    // One job per genotype, as a run writes it (gait::make_job, hypergp::job_body), all
+    // parsed first so a bad tree fails the batch before it runs, then one pass of the workers.
+    std::vector<std::string> jobs;
+    std::vector<double> failure_fitness;
+    for (std::size_t i = 0; i < batch.size(); ++i) {
+        if (im.is_vector(batch[i])) {
+            jobs.push_back(gait::make_job(*im.setup, batch[i].vector, im.descriptor));
+            failure_fitness.push_back(im.setup->sim.failure_fitness);
+        } else {
+            jobs.push_back(im.job_kind + "\n" +
+                           hypergp::job_body(im.forest_of(batch[i], i), im.descriptor, batch[i].offsets));
+            failure_fitness.push_back(im.model->sim.failure_fitness);
         }
+    }
+    if (!im.runner) im.runner = experiments::make_job_runner(*im.ctx);
+    const std::vector<JobResult> results = im.runner->run(jobs);
+    for (const auto& note : im.runner->take_notes()) im.opt.warn("warning: " + note);
+    std::vector<sim::EvalReply> replies;
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        const JobResult& r = results[i];
+        for (const auto& t : r.trouble) im.opt.warn(fmt::format("warning: genotype {}: {}", i, t));
+        replies.push_back(sim::reply_of(r, failure_fitness[i]));   // as a run scores it
+        if (!r.ok)
+            im.opt.warn(fmt::format("warning: genotype {} scored as failed (fitness {}): {}", i, failure_fitness[i],
+                                    r.error));
     }
     for (sim::EvalReply& r : replies) {
         out.fitness.push_back(r.fitness);
@@ -233,12 +244,13 @@ Walk EvaluationSession::simulate(const Genotype& g, bool trace) const {
     options.record_ground = trace || sim::needs_ground(im.descriptor);
     Walk w;
     sim::EvalResult r;
-    if (im.form == GenotypeForm::Vector) {
+    if (im.is_vector(g)) {
         const auto controller = im.setup->controller(g.vector);
         r = sim::evaluate(im.setup->robot, *controller, im.setup->sim, options);
         w.fitness = r.fitness;
     } else {
-        hypergp::Outcome o = experiments::evaluate_as_type(*im.model, im.settings, im.forest_of(g, 0), options);
+        hypergp::Outcome o =
+            experiments::evaluate_as_type(*im.model, im.settings, im.forest_of(g, 0), options, false, g.offsets);
         w.fitness = o.fitness;   // as the run scores it: the penalty, or a registered type's own score
         r = std::move(o.result);
     }
@@ -280,12 +292,13 @@ RunBest read_run_best(const fs::path& run_dir) {
         for (const auto& t : e->genotype) best.genotype.trees.push_back(t.to_string());
         return best;
     }
-    if (io::genotype_form(s) == io::GenotypeForm::Vector) {
+    // A gait run's champion, or a Switch-HybrID run's past its hand-over (a gait checkpoint).
+    if (io::genotype_form(s) == io::GenotypeForm::Vector || (s.neural.switches() && io::is_gait_file(population))) {
         const io::GaitFile g = io::load_gait(population);
         best.form = GenotypeForm::Vector;
         best.genotype.vector = gait::Setup::from_settings(s).in_box(g.champion.x);
         best.fitness = g.champion.fitness;
-        best.generation = g.generation;
+        best.generation = g.generation + (g.handover ? g.handover->generation + 1 : 0);   // as stats.csv counts
         return best;
     }
     const io::PopulationFile p = io::load_population(population);
@@ -296,6 +309,7 @@ RunBest read_run_best(const fs::path& run_dir) {
     if (!top) throw InputError("the population is empty", population.string());
     best.form = GenotypeForm::Forest;
     for (const auto& t : (*top)->genotype) best.genotype.trees.push_back(t.to_string());
+    best.genotype.offsets = (*top)->direct;   // Offset-HybrID's, empty otherwise
     best.fitness = (*top)->fitness;
     best.generation = p.population.generation;
     return best;

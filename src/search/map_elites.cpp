@@ -149,6 +149,9 @@ public:
         if (stepped && (me_->batches() % interval == 0 || last)) return true;
         if (me_->batches() == 0) return false;
         if (stop.interrupted) return true;
+        // A resume from a run's last checkpoint ends at once: the run's final state
+        // goes into this folder too, as the other searches do.
+        if (stop.done() && resume_ && me_->batches() == first_batch_) return true;
         // Stopped early (minimum fitness): the last batch's checkpoint.
         return stop.done() && me_->batches() % interval != 0 && !last;
     }

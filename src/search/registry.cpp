@@ -29,9 +29,19 @@ bool varies(const SearchKind& k, io::GenotypeForm form) {
     return std::find(k.forms.begin(), k.forms.end(), form) != k.forms.end();
 }
 
+// For the settings digest (io::auto_search_pick): "" where `auto` picks nothing.
+std::string auto_pick(const io::Settings& as_auto) {
+    try {
+        return search_of(as_auto).name;
+    } catch (const std::exception&) {
+        return {};
+    }
+}
+
 } // namespace
 
 void register_search(SearchKind kind) {
+    io::set_auto_search_pick(&auto_pick);
     if (!kind.load || !kind.make)
         throw std::invalid_argument("search '" + kind.name + "': give both load (its checkpoint's reader) and make");
     if (kind.budget_key.empty()) throw std::invalid_argument("search '" + kind.name + "': name its budget key");

@@ -11,6 +11,7 @@
 
 #include "cic/io/settings_io.hpp"
 #include "cic/io/xml.hpp"
+#include "support/expect_has.hpp"
 
 namespace fs = std::filesystem;
 
@@ -67,7 +68,6 @@ const char* kTinySymreg = R"(<settings>
 </settings>
 )";
 
-#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
 
 } // namespace
 

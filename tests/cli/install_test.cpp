@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <iterator>
 #include <algorithm>
 
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "cic/core/error.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_table.hpp"
+#include "support/expect_has.hpp"
 #include "support/run_helpers.hpp"
 
 namespace fs = std::filesystem;
@@ -35,7 +37,6 @@ namespace {
 #define CIC_EXAMPLE_CXX_FLAGS ""
 #endif
 
-#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << "no '" << (part) << "' in:\n" << (text)
 
 std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
@@ -359,6 +360,19 @@ TEST(Install, PluginTypeBuildsAndRunsThroughCicsCommandLine) {
     const std::string ol_row = ol_csv.substr(ol_csv.find('\n') + 1);
     const std::string stored = killed_parent_fitness(read_text(killed / "population.xml"));
     EXPECT_EQ(std::stod(ol_row.substr(ol_row.find(',') + 1)), std::stod(stored)) << ol_csv;
+    // `export` gives a row per saved checkpoint of its own format: the best it keeps, id 0.
+    const fs::path ol_whole = scratch.path / "ol-whole" / "one_plus_lambda_r1-001";
+    const Shell exported = sh(cic + " --quiet export " + q(ol_whole) + " --out " + q(scratch.path / "ol-export.csv"));
+    ASSERT_EQ(exported.rc, 0) << exported.out;
+    const std::string ol_export = read_text(scratch.path / "ol-export.csv");
+    const auto saved_files = std::distance(fs::directory_iterator(ol_whole / "populations"), fs::directory_iterator());
+    EXPECT_EQ(std::count(ol_export.begin(), ol_export.end(), '\n'), saved_files + 1) << ol_export;
+    std::vector<std::string> last;
+    std::istringstream last_row(ol_export.substr(ol_export.rfind('\n', ol_export.size() - 2) + 1));
+    for (std::string c; std::getline(last_row, c, ',');) last.push_back(c);
+    ASSERT_GE(last.size(), 6u) << ol_export;
+    EXPECT_EQ(last[4], "0");
+    EXPECT_EQ(std::stod(last[5]), std::stod(killed_parent_fitness(read_text(ol_whole / "population.xml")))) << ol_export;
 }
 
 // The Python package (docs/python.md) from an installed prefix: found with

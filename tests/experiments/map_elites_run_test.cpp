@@ -12,9 +12,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "support/expect_has.hpp"
 #include "support/run_helpers.hpp"
 
-#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
 
 namespace cic {
 namespace {
@@ -54,6 +54,26 @@ TEST(MapElitesRun, KilledAtRandomMomentsAndResumedGivesTheSameArchive) {
         ASSERT_TRUE(kill_then_resume(dir, dir / "run.xml", k, at, true, resumed, from)) << read_text(dir / "resumed.log");
         EXPECT_EQ(read_text(resumed / "population.xml"), want)
             << (from.empty() ? "started again" : "resumed from " + from.string());
+    }
+    fs::remove_all(dir);
+}
+
+// A resume from a finished run's last archive ends at once, and its folder holds the
+// run's final archive too, as every other search's does (the crash test above meets
+// this case when its kill comes after the last batch).
+TEST(MapElitesRun, AResumeFromTheLastArchiveEndsAtOnceWithItsBytes) {
+    const auto dir = temp_dir("me-end");
+    for (const std::string type : {"gait", "hypergp"}) {
+        SCOPED_TRACE(type);
+        const auto whole = run_settings(dir, type + "-whole", settings(type, 36, 1));
+        ASSERT_EQ(whole.rc, 0) << whole.log;
+        std::string again = settings(type, 36, 2);
+        again.replace(again.find("</settings>"), 0,
+                      "  <Control><populationXmlLoadFrom>" + (whole.run / "population.xml").string() +
+                          "</populationXmlLoadFrom></Control>\n");
+        const auto resumed = run_settings(dir, type + "-resumed", again);
+        ASSERT_EQ(resumed.rc, 0) << resumed.log;
+        EXPECT_EQ(read_text(resumed.run / "population.xml"), read_text(whole.run / "population.xml"));
     }
     fs::remove_all(dir);
 }

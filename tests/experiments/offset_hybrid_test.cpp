@@ -3,6 +3,7 @@
 // the formula says; a run carries them through workers, population files,
 // resumes and replays bit for bit; settings and files that do not fit are refused.
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +17,11 @@
 #include "cic/experiments/hypergp/queries.hpp"
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
+#include "cic/report/export.hpp"
 #include "cic/report/replay.hpp"
+#include "cic/core/error.hpp"
+#include "support/expect_has.hpp"
+#include "support/files.hpp"
 #include "support/run_helpers.hpp"
 
 namespace cic {
@@ -144,6 +149,101 @@ TEST(OffsetHybrid, ResumeIsExactAndReplaysUseTheOffsets) {
             differ += hypergp::run(model, ind->genotype).fitness != ind->fitness;
         }
     EXPECT_GT(differ, 0);
+    fs::remove_all(dir);
+}
+
+// A search of trees registered from outside names its checkpoint's root and gives
+// its best trees (report::CheckpointBest::trees, with their direct genes in x):
+// view, assess, trace and render then replay them as the run's type scores them.
+TEST(OffsetHybrid, ARegisteredReaderOfTreesReplaysThemAsTheRunDid) {
+    const auto dir = temp_dir("offset-foreign");
+    const auto run = run_settings(dir, "run", offset_settings(2, 1));
+    ASSERT_EQ(run.rc, 0) << run.log;
+    // The "search's own file": a pointer to the population whose best it keeps.
+    report::register_checkpoint_reader("treeProbe", [](const io::Settings&, const std::string& file) {
+        const std::string text = read_text(file);
+        const auto from = text.find("from=\"") + 6;
+        const auto pop = io::load_population(text.substr(from, text.find('"', from) - from));
+        auto best = *std::max_element(pop.population.begin(), pop.population.end(),
+                                      [](const auto& a, const auto& b) { return a->fitness < b->fitness; });
+        report::CheckpointBest out;
+        out.trees = best->genotype;
+        out.x = best->direct;
+        out.fitness = best->fitness;
+        out.generation = pop.population.generation;
+        out.who = "best probed trees";
+        return out;
+    });
+    const fs::path probe = run.run / "probe.xml";
+    write_text(probe, "<treeProbe from=\"" + (run.run / "population.xml").string() + "\"/>\n");
+    const auto foreign = report::replay(probe.string(), "best", 1, 0.0, true);
+    const auto own = report::replay(run.run.string(), "best", 1, 0.0, true);
+    ASSERT_EQ(foreign.size(), 1u);
+    EXPECT_EQ(foreign[0].replayed_fitness, foreign[0].stored_fitness);
+    EXPECT_EQ(foreign[0].replayed_fitness, own[0].replayed_fitness);
+    EXPECT_EQ(foreign[0].raw_fitness, own[0].raw_fitness);
+    EXPECT_EQ(foreign[0].distance, own[0].distance);
+    EXPECT_EQ(foreign[0].raw_outputs, own[0].raw_outputs);
+    EXPECT_EQ(foreign[0].duty_factors, own[0].duty_factors);
+    EXPECT_NE(foreign[0].label.find("best probed trees"), std::string::npos) << foreign[0].label;
+    // One individual is all such a file keeps.
+    EXPECT_THROW(report::replay(probe.string(), "3", 1, 0.0, false), InputError);
+
+    // cic export of a run whose saved generations are such files: a row per file, its best.
+    const fs::path foreign_run = dir / "foreign-run";
+    fs::create_directories(foreign_run / "populations");
+    fs::copy_file(run.run / "settings.xml", foreign_run / "settings.xml");
+    for (const char* name : {"gen-0000.xml", "gen-0001.xml"}) fs::copy_file(probe, foreign_run / "populations" / name);
+    const std::string csv = report::export_individuals({{foreign_run}, true});
+    const auto pop = io::load_population(run.run / "population.xml");
+    const auto best = *std::max_element(pop.population.begin(), pop.population.end(),
+                                        [](const auto& a, const auto& b) { return a->fitness < b->fitness; });
+    std::string trees;
+    for (const auto& t : best->genotype) trees += (trees.empty() ? "" : " | ") + t.to_string();
+    const std::string row = fmt::format(",0,{},{},{},{},{},0,{},,\n", best->fitness, own[0].distance,
+                                        own[0].elevation, best->depth(io::load_settings(run.run / "settings.xml", {}).gp.forest_depth), best->size(),
+                                        trees);
+    EXPECT_NE(csv.find(",0" + row), std::string::npos) << csv;   // generation 0
+    EXPECT_NE(csv.find(",1" + row), std::string::npos) << csv;   // generation 1
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3) << csv;
+
+    // What a reader gives is checked against the settings, as cic's own files are.
+    report::register_checkpoint_reader("treeProbeWrong", [](const io::Settings&, const std::string& file) {
+        const std::string text = read_text(file);
+        report::CheckpointBest out;
+        if (text.find("gait") != std::string::npos) {
+            out.x = {0.5, 0.5};
+        } else if (text.find("three") != std::string::npos) {
+            out.trees = {tree::Tree::parse("x0"), tree::Tree::parse("x1"), tree::Tree::parse("x2")};
+        } else {
+            out.trees = {tree::Tree::parse("(add x0 x1)")};
+            out.x.assign(text.find("short") != std::string::npos ? 7 : 8, text.find("far") != std::string::npos ? 5.0 : 0.0);
+        }
+        return out;
+    });
+    auto refusal = [&](const std::string& what) {
+        write_text(probe, "<treeProbeWrong kind=\"" + what + "\"/>\n");
+        try {
+            (void)report::replay(probe.string(), "best", 1, 0.0, false);
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.file(), probe.string());
+            return e.message();
+        }
+        return std::string("(accepted)");
+    };
+    EXPECT_HAS(refusal("short"), "7 offsets, but these settings' Offset-HybrID");
+    EXPECT_HAS(refusal("far"), "offset 0 is 5, outside [-2, 2]");
+    EXPECT_HAS(refusal("gait"), "gave a gait vector, but Experiment.type hypergp evolves HyperGP trees");
+    EXPECT_HAS(refusal("three"), "gave 3 trees, but GP.numberOfTreesInForestGenotype is 1");
+    write_text(probe, "<treeProbeWrong kind=\"short\"/>\n");
+    fs::copy_file(probe, foreign_run / "populations" / "gen-0000.xml", fs::copy_options::overwrite_existing);
+    try {
+        (void)report::export_individuals({{foreign_run}, false});
+        ADD_FAILURE() << "export took 7 offsets for 8 hinges";
+    } catch (const InputError& e) {
+        EXPECT_HAS(e.message(), "7 offsets, but these settings' Offset-HybrID");
+        EXPECT_EQ(e.file(), (foreign_run / "populations" / "gen-0000.xml").string());
+    }
     fs::remove_all(dir);
 }
 

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "cic/io/settings_io.hpp"
+#include "support/expect_has.hpp"
 
 using namespace cic::io;
 
@@ -31,7 +32,6 @@ std::string override_error(const std::vector<std::string>& sets) {
 
 std::string gp(const std::string& body) { return "<settings>\n<GP>\n" + body + "\n</GP>\n</settings>\n"; }
 
-#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
 
 } // namespace
 

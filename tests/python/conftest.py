@@ -49,7 +49,8 @@ def gait_sets(evaluations=40):
 @pytest.fixture(scope="session")
 def runs(tmp_path_factory):
     """One finished run of each family: gait (CMA-ES), CPG (CMA-ES), HyperGP (a forest of 2
-    CPG trees) and a gait MAP-Elites archive."""
+    CPG trees), Offset-HybrID (trees plus offsets), Switch-HybrID past its hand-over and a gait
+    MAP-Elites archive."""
     base = tmp_path_factory.mktemp("runs")
     gait_xml = os.path.join(SOURCE, "settings", "r1_gait.xml")
     out = {}
@@ -61,6 +62,14 @@ def runs(tmp_path_factory):
         gp="<numberOfTreesInForestGenotype>2</numberOfTreesInForestGenotype>",
         extra="<Neural><substrate>cpg</substrate><cpgFeedback>2</cpgFeedback></Neural>"))
     out["forest"] = cic_run(forest, base / "forest")
+    offset = write(base / "offset.xml", TINY_HYPERGP.format(gp="", extra=(
+        "<Neural><substrate>gait</substrate><directOffsets>1</directOffsets><offsetSigma>0.3</offsetSigma>"
+        "<offsetRate>0.5</offsetRate></Neural>")))
+    out["offset"] = cic_run(offset, base / "offset")   # Offset-HybrID: trees plus per-hinge offsets
+    # Switch-HybrID past its hand-over (at 0.3 of 400 evaluations): its best is a gait vector.
+    out["switch"] = cic_run(os.path.join(SOURCE, "settings", "r1_switch_hybrid.xml"), base / "switch",
+                            "Gait.evaluations=400", "GP.generatedPopulationSize=10", "Neural.switchShare=0.3",
+                            "Simulator.sample_to=3", "Simulator.delayed_start=0.5", "Experiment.workers=2")
     me = os.path.join(SOURCE, "settings", "r1_gait_map_elites.xml")
     out["map_elites"] = cic_run(me, base / "me", "MapElites.evaluations=24", "MapElites.batch=8",
                                 "MapElites.initial=8", "Simulator.sample_to=3",

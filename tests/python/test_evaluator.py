@@ -94,6 +94,59 @@ def test_simulate_a_hypergp_forest(runs):
     assert walk.angles.shape[1] == 8   # R0: four legs of two hinges
 
 
+def test_an_offset_hybrid_genotype_scores_its_stored_fitness_with_its_offsets(runs):
+    run = cic.read_run(runs["offset"])
+    assert run.best_offsets.shape == (8,) and np.any(run.best_offsets != 0)   # R0's eight hinges
+    with cic.Evaluator(run.settings, workers=2) as ev:
+        assert ev.offset_count == 8
+        scores = ev.evaluate([run.best_genotype], offsets=[run.best_offsets])
+        assert bits(scores.fitness[0]) == bits(run.best_fitness)
+        # The same trees without their offsets walk otherwise: the offsets are not ignored.
+        zero = ev.evaluate([run.best_genotype], offsets=[np.zeros(8)])
+        assert bits(zero.fitness[0]) != bits(run.best_fitness)
+        walk = ev.simulate(run.best_genotype, offsets=run.best_offsets)
+        assert bits(walk.fitness) == bits(run.best_fitness)
+        with pytest.raises(ValueError, match="pass offsets="):
+            ev.evaluate([run.best_genotype])
+        with pytest.raises(ValueError, match="7 offsets, but .* 8"):
+            ev.evaluate([run.best_genotype], offsets=[np.zeros(7)])
+        with pytest.raises(ValueError, match="one row per genotype"):
+            ev.evaluate([run.best_genotype], offsets=np.zeros(8))
+        with pytest.raises(ValueError, match="offset 0 is 9"):
+            ev.evaluate([run.best_genotype], offsets=[[9.0] + [0.0] * 7])
+        with pytest.raises(ValueError, match="1-D sequence"):
+            ev.simulate(run.best_genotype, offsets=[run.best_offsets])
+        with pytest.raises(ValueError, match="pass offsets="):
+            ev.simulate(run.best_genotype)
+        assert len(ev.evaluate([])) == 0   # an empty batch needs no offsets
+    with cic.Evaluator(cic.read_run(runs["hypergp"]).settings) as plain:
+        assert plain.offset_count == 0
+        with pytest.raises(ValueError, match="Neural.directOffsets = 0"):
+            plain.evaluate(["x0"], offsets=[[0.1]])
+    assert cic.read_run(runs["hypergp"]).best_offsets.shape == (0,)
+
+
+def test_a_switch_hybrid_run_past_its_hand_over_scores_its_gait_and_its_trees(runs):
+    run = cic.read_run(runs["switch"])
+    assert run.form == "vector" and run.best_genotype.shape == (37,)
+    with cic.Evaluator(run.settings, workers=2) as ev:
+        assert (ev.form, ev.vector_dimension) == ("forest", 37)   # trees first, the gait after the hand-over
+        scores = ev.evaluate([run.best_genotype])
+        assert bits(scores.fitness[0]) == bits(run.best_fitness)
+        assert bits(ev.simulate(run.best_genotype).fitness) == bits(run.best_fitness)
+        trees = ev.evaluate([["x0"] * ev.dimension])
+        assert np.isfinite(trees.fitness[0])
+        with pytest.raises(ValueError, match="36 values"):
+            ev.evaluate([np.full(36, 0.5)])
+        assert len(ev.evaluate(np.zeros((0, 37)))) == 0
+        two = ev.evaluate([np.clip(run.best_genotype, 0, 1), run.best_genotype])   # replies in batch order
+        assert bits(two.fitness[1]) == bits(run.best_fitness)
+    with cic.Evaluator(cic.read_run(runs["hypergp"]).settings) as plain:
+        assert plain.vector_dimension == 0
+        with pytest.raises(ValueError, match="S-expression"):
+            plain.evaluate([[0.5, 0.5]])
+
+
 # --- bad input: a Python exception, never a dead interpreter --------------------------
 
 @pytest.fixture(scope="module")

@@ -34,6 +34,39 @@ def test_each_line_gets_the_evaluators_bits_in_order():
         assert (r["fitness"], r["distance"], r["elevation"], r["failed"]) == (f, d, e, False)
 
 
+def test_an_offset_hybrid_line_carries_its_offsets(runs):
+    run = cic.read_run(runs["offset"])
+    trees = [run.best_genotype] if isinstance(run.best_genotype, str) else run.best_genotype
+    line = json.dumps({"id": "best", "genotype": trees, "offsets": list(run.best_offsets)})
+    p = subprocess.run([CIC, "eval", "--settings", run.settings], input=line + "\n" + json.dumps(trees) + "\n",
+                       capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    best, bare = [json.loads(l) for l in p.stdout.splitlines()]
+    assert best["id"] == "best" and best["fitness"] == run.best_fitness
+    assert "error" in bare and "offsets" in bare["error"]   # settings with offsets need them
+    info = json.loads(subprocess.run([CIC, "eval", "--settings", run.settings, "--info"], capture_output=True,
+                                     text=True).stdout)
+    assert info["offset_count"] == 8
+
+
+def test_a_switch_hybrid_stream_takes_its_gait_and_its_trees(runs):
+    run = cic.read_run(runs["switch"])
+    info = json.loads(subprocess.run([CIC, "eval", "--settings", run.settings, "--info"], capture_output=True,
+                                     text=True).stdout)
+    assert (info["form"], info["vector_dimension"]) == ("forest", 37)
+    lines = [json.dumps(list(run.best_genotype)), json.dumps(["x0"] * info["dimension"])]
+    p = subprocess.run([CIC, "eval", "--settings", run.settings], input="\n".join(lines) + "\n",
+                       capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    gait, trees = [json.loads(l) for l in p.stdout.splitlines()]
+    assert gait["fitness"] == run.best_fitness and "fitness" in trees
+    # Offsets go beside trees only.
+    line = json.dumps({"genotype": list(run.best_genotype), "offsets": [0.0] * 12})
+    p = subprocess.run([CIC, "eval", "--settings", run.settings], input=line + "\n", capture_output=True, text=True,
+                       timeout=300)
+    assert "not beside a gait vector" in json.loads(p.stdout)["error"]
+
+
 def test_a_bare_vector_is_a_genotype_too():
     rc, replies, _ = stream([json.dumps([0.5] * 37)])
     assert rc == 0 and "fitness" in replies[0] and "id" not in replies[0]

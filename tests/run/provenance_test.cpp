@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cic/run/provenance.hpp"
+#include "support/expect_has.hpp"
 #include "support/run_helpers.hpp"
 
 namespace fs = std::filesystem;
@@ -19,7 +20,6 @@ using cic::testing::temp_dir;
 
 namespace {
 
-#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << "no '" << (part) << "' in:\n" << (text)
 
 TEST(Provenance, TheBuildKnowsItsCommitCompilerAndLibraries) {
     const BuildInfo& b = build_info();

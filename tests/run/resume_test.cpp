@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "support/expect_has.hpp"
 #include "support/run_helpers.hpp"
 
 namespace fs = std::filesystem;
@@ -19,7 +20,6 @@ using cic::testing::write_text;
 
 namespace {
 
-#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << "no '" << (part) << "' in:\n" << (text)
 
 // Symbolic regression, 6 generations unless told otherwise; never stops early.
 std::string settings(int generations) {

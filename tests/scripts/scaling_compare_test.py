@@ -58,6 +58,9 @@ for f in (source / "experiments" / "scaling").glob("tune-*.xml"):
 VALUES = {
     "tune-direct-c8": {"cmaes-s0.15": [1, 2, 3, 4, 5], "cmaes-s0.3": [0, 0, 1, 50, 60],
                        "sepcmaes-s0.15": [4, 4, 6, 7, 7], "sepcmaes-s0.3": [2, 3, 5, 6, 6]},
+    # R1's winner is not issue 21's configuration (cmaes, sigma0 0.15): the direct method runs on R1 and R2.
+    "tune-direct-r1": {"cmaes-s0.15": [20, 21, 22, 23, 24], "cmaes-s0.3": [10, 10, 10, 10, 10],
+                       "sepcmaes-s0.15": [9, 9, 9, 9, 9], "sepcmaes-s0.3": [30, 30, 31, 31, 31]},
     "tune-hybrid-c8": {"offset-s0.1": [3, 3, 3, 3, 3], "offset-s0.3": [1, 1, 2, 9, 9],
                        "switch-0.3": [5, 5, 5, 5, 5], "switch-0.5": [4, 4, 4, 40, 40]},
     "tune-hybrid-r1": {"offset-s0.1": [1, 1, 1, 1, 1], "offset-s0.3": [2, 2, 2, 2, 2],
@@ -74,9 +77,9 @@ def write_ledger(folder, rows):
         w.writerows(rows)
 
 
-def tuning_rows(drop=None):
+def tuning_rows(drop=None, values=None):
     rows = []
-    for study, configs in VALUES.items():
+    for study, configs in (values or VALUES).items():
         for config, values in configs.items():
             for seed, v in zip(range(101, 106), values):
                 done = (study, config, seed) != drop
@@ -118,8 +121,9 @@ for name in files:
     variants = re.findall(r'<variant name="([^"]+)">(.*?)</variant>', text)
     names = [v for v, _ in variants]
     if name in ("compare-r1.xml", "compare-r2.xml"):
-        check(names == ["offset-hybrid.offset-s0.3", "switch-hybrid.switch-0.5"],
-              f"{name}: R's hybrids are tune-hybrid-r1's winners, got {names}")
+        check(names == ["direct.sepcmaes-s0.3", "offset-hybrid.offset-s0.3", "switch-hybrid.switch-0.5"],
+              f"{name}: R1's direct winner (not issue 21's configuration) and tune-hybrid-r1's winners, got {names}")
+        check("its direct runs are not tune-direct-r1's" in text, f"{name}: says why the direct method runs\n" + text)
         check("<set>Gait.evaluations=15000</set>" in text, f"{name}: 15,000 evaluations")
         check(f"<set>Simulator.robot_type={name[-5]}</set>" in text, f"{name}: its robot type")
         check("collisionSpace" not in text, f"{name}: R1 and R2 keep the default collision space")
@@ -162,6 +166,39 @@ check(effective(out / "compare-centipede-8.xml", "switch-hybrid.switch-0.3", 1) 
       effective(tuning / "tune-hybrid-c8.xml", "switch-0.3", 101), "the switch winner is the tuning run")
 check(effective(out / "compare-r2.xml", "offset-hybrid.offset-s0.3", 1).replace("<robot_type>2<", "<robot_type>1<") ==
       effective(tuning / "tune-hybrid-r1.xml", "offset-s0.3", 101), "R2's offset hybrid is R1's winner on R2")
+check(effective(out / "compare-r1.xml", "direct.sepcmaes-s0.3", 1) ==
+      effective(tuning / "tune-direct-r1.xml", "sepcmaes-s0.3", 101), "R1's direct variant is the tuning run")
+check(effective(out / "compare-r2.xml", "direct.sepcmaes-s0.3", 1).replace("<robot_type>2<", "<robot_type>1<") ==
+      effective(tuning / "tune-direct-r1.xml", "sepcmaes-s0.3", 101), "R2's direct variant is R1's winner on R2")
+
+# When R1's winner is issue 21's configuration, its runs are R1's and R2's direct method: no direct variant.
+issue21 = dict(VALUES, **{"tune-direct-r1": dict(VALUES["tune-direct-r1"], **{"cmaes-s0.15": [40] * 5})})
+write_ledger(work / "issue21", tuning_rows(values=issue21))
+p = compare_sweeps(work / "issue21", work / "exp21")
+check(p.returncode == 0, f"compare-sweeps with issue 21's configuration winning: {p.stderr}")
+for name in ("compare-r1.xml", "compare-r2.xml"):
+    text = (work / "exp21" / name).read_text()
+    names = re.findall(r'<variant name="([^"]+)">', text)
+    check(names == ["offset-hybrid.offset-s0.3", "switch-hybrid.switch-0.5"], f"{name}: hybrids only, got {names}")
+    check("winner cmaes-s0.15, with exactly the settings of issue 21's" in text, f"{name}: says whose runs\n" + text)
+check((work / "exp21" / "compare-centipede-8.xml").read_text() == (out / "compare-centipede-8.xml").read_text(),
+      "R1's tuning leaves the centipedes' sweeps alone")
+
+# Issue 21's runs fill only the methods a robot's compare runs lack.
+base_csv = work / "walk-runs.csv"
+base_csv.write_text("study,config,seed,raw_fitness\n" + "".join(
+    f"{st},R1,{k},{v}\n" for st, v in (("walk-15000-cmaes-gait", 5.0), ("walk-15000-hgp-gait", 2.0)) for k in (1, 2)))
+grouped, borrowed = sr.groups([("compare-r1", "direct.sepcmaes-s0.3", "1", 9.0),
+                               ("compare-r1", "offset-hybrid.offset-s0.3", "1", 3.0)], str(base_csv))
+check(grouped["r1"] == {"direct": [9.0], "offset-hybrid": [3.0], "hypergp-gait": [2.0, 2.0]} and
+      borrowed == {"r1": ["hypergp-gait"]}, f"issue 21 fills HyperGP-gait only: {grouped} {borrowed}")
+grouped, borrowed = sr.groups([("compare-r1", "offset-hybrid.offset-s0.3", "1", 3.0)], str(base_csv))
+check(grouped["r1"]["direct"] == [5.0, 5.0] and borrowed == {"r1": ["direct", "hypergp-gait"]},
+      f"and the direct method where the compare runs none: {grouped} {borrowed}")
+grouped, borrowed = sr.groups([("compare-r1", "offset-hybrid.offset-s0.3", "1", 3.0)], str(base_csv),
+                              {"r1": {"direct", "offset-hybrid"}})
+check("direct" not in grouped["r1"] and borrowed == {"r1": ["hypergp-gait"]},
+      f"a direct method the sweep runs, unfinished, is not replaced by issue 21's: {grouped} {borrowed}")
 
 # ---- statistics on known data ----
 check(holm([0.01, 0.04, 0.03, 0.5]) == [0.04, 0.09, 0.09, 0.5], f"Holm: {holm([0.01, 0.04, 0.03, 0.5])}")
@@ -236,6 +273,7 @@ check("better than best direct" in md and "worse than best direct" in md, "signi
 check("| centipede-4 | 24 | HyperGP-gait | 5 |" in md and "no difference shown at n = 5 |" in md,
       "the 5-seed robot: nothing shown\n" + md)
 check("No difference shown after Holm: centipede-4 (n = 5)." in md, "the robots with nothing significant\n" + md)
+check("| centipede-2 | HyperGP-gait | 2,500 [2,500, 2,500] |" in md, "the real evaluation counts\n" + md)
 check(svg.read_text().lstrip().startswith("<?xml") and "<svg" in svg.read_text(), "the figure is an SVG")
 first = svg.read_bytes()
 # Scored once: with the run folder gone, the cache still scores it, and the same bytes come out.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "cic/core/error.hpp"
+#include "cic/io/population_xml.hpp"
 #include "cic/io/settings.hpp"
 #include "cic/io/search_names.hpp"
 #include "cic/io/settings_io.hpp"
@@ -107,6 +108,31 @@ TEST(SearchRegistry, RegistrationsAreChecked) {
     incomplete.budget_key = "Gait.evaluations";
     EXPECT_THROW(cic::search::register_search(incomplete), std::invalid_argument);   // no load, no make
     EXPECT_EQ(cic::io::find_search_name("incomplete"), nullptr) << "a refused kind left its name behind";
+}
+
+// Naming the search `auto` picks anyway is the same run, so the same settings digest
+// (a resume from the other's checkpoint gets no "made with other settings" note).
+TEST(SearchRegistry, NamingTheSearchAutoPicksKeepsTheDigest) {
+    auto same_digest_when_named = [](Settings s, const std::string& name) {
+        const std::string as_auto = cic::io::settings_digest(s);
+        EXPECT_EQ(cic::io::auto_search_pick(s), name);
+        s.experiment.search = name;
+        ASSERT_EQ(search_of(s).name, name);
+        EXPECT_EQ(cic::io::settings_digest(s), as_auto) << name;
+    };
+    Settings trees;
+    same_digest_when_named(trees, "generational");
+    Settings gait;
+    gait.experiment.type = "gait";
+    same_digest_when_named(gait, "evolution-strategy");
+    Settings elites = gait;
+    elites.map_elites.enabled = true;
+    same_digest_when_named(elites, "map-elites");
+    Settings hybrid;
+    hybrid.neural.switch_share = 0.5;
+    same_digest_when_named(hybrid, "switch-hybrid");
+    // What the digest sees is still the settings: the keys that chose the search count.
+    EXPECT_NE(cic::io::settings_digest(elites), cic::io::settings_digest(gait));
 }
 
 TEST(SearchRegistry, BudgetKeysAreEveryRegisteredSearchs) {

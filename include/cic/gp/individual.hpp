@@ -12,6 +12,11 @@
 
 namespace cic::gp {
 
+// A forest's depth as GP.forestDepth measures it: its trees' depths summed, or the deepest.
+inline int forest_depth(const tree::Forest& forest, ForestDepth measure) {
+    return measure == ForestDepth::Sum ? tree::total_depth(forest) : tree::max_depth(forest);
+}
+
 // Whatever an experiment decodes a genotype into (e.g. a substrate network).
 struct Phenotype {
     virtual ~Phenotype() = default;
@@ -36,9 +41,7 @@ struct Individual {
     // (MAP-Elites, map_elites.hpp); not saved in population files.
     std::vector<double> descriptor;
     std::size_t size() const { return tree::total_size(genotype); }
-    int depth(ForestDepth measure) const {
-        return measure == ForestDepth::Sum ? tree::total_depth(genotype) : tree::max_depth(genotype);
-    }
+    int depth(ForestDepth measure) const { return forest_depth(genotype, measure); }
 };
 
 using IndividualPtr = std::shared_ptr<Individual>;

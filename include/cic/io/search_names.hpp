@@ -31,4 +31,13 @@ void register_search_name(SearchName name);
 // One of the four built-ins (the search layer registers their behaviour, not their names).
 bool is_builtin_search_name(std::string_view name);
 
+// The name `auto` would pick for these settings (their Experiment.search read as
+// `auto`), or "" when nothing varies their genotype or no search layer is linked.
+// The search layer sets how it is found; the settings digest asks it so that
+// naming the search `auto` picks anyway changes no digest (a resume from a
+// checkpoint of the same run under `auto` is not "made with other settings").
+using AutoSearchPick = std::string (*)(const Settings&);
+void set_auto_search_pick(AutoSearchPick pick);
+std::string auto_search_pick(const Settings& s);
+
 } // namespace cic::io

@@ -10,6 +10,9 @@
 // A MAP-Elites run (MapElites.enabled) gives the elites of its last archive:
 // generation is the batch, id the cell's number, cell its bins "I,J,..." and
 // descriptor the measured values; the two columns are empty for other runs.
+// A run of a search registered from outside, whose checkpoints are files of its
+// own (report::register_checkpoint_reader), gives per saved file the individual
+// its reader names: its best, with id 0.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -12,6 +12,7 @@
 #include "cic/io/settings.hpp"
 #include "cic/sim/evaluate.hpp"
 #include "cic/sim/recording.hpp"
+#include "cic/tree/tree.hpp"
 
 namespace cic::report {
 
@@ -57,18 +58,27 @@ void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalRes
 std::vector<ReplayItem> replay(const std::string& run_dir_or_population, const std::string& individual, int count,
                                double fps, bool trace);
 
-// The best gait a search's own checkpoint holds (a search registered from
-// outside cic's three checkpoint files: search/search.hpp, SearchKind::best).
+// The best individual a search's own checkpoint holds (a search registered from
+// outside cic's three checkpoint files: search/search.hpp, SearchKind::best):
+// a gait vector, or for a search of trees its trees.
 struct CheckpointBest {
-    std::vector<double> x;   // a gait vector in the unit box
+    std::vector<double> x;   // a gait vector in the unit box; beside trees, their direct genes (Neural.directOffsets)
     double fitness = 0;      // as the run stored it
     int generation = 0;      // where the run found it (or its last generation)
     std::string who;         // "best (1+8)-ES gait"
+    tree::Forest trees;      // a search of trees: the genotype, replayed as the run's type scores it
 };
 using CheckpointBestReader = std::function<CheckpointBest(const io::Settings&, const std::string& file)>;
 // replay() (view, assess, trace, render, export's terms) reads checkpoints
 // whose root element is `root` with `reader` and replays the gait it gives.
 // Throws std::invalid_argument for a root of cic's own files or one taken.
 void register_checkpoint_reader(std::string root, CheckpointBestReader reader);
+// The reader registered for the root element of `file`, or nullptr (no such
+// registration, or not an XML file: cic's own readers then say what is wrong).
+const CheckpointBestReader* checkpoint_reader_for(const std::string& file);
+// What `reader` gives for `file`, checked against the settings: a gait vector of
+// their gait's length, or (a HyperGP-family type) their number of trees with the
+// offsets Neural.directOffsets asks for. Throws cic::InputError naming the file.
+CheckpointBest read_checkpoint_best(const CheckpointBestReader& reader, const io::Settings& s, const std::string& file);
 
 } // namespace cic::report

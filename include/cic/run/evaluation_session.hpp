@@ -19,10 +19,14 @@
 namespace cic::run {
 
 // One genotype: a point of the gait family's unit box (gait or CPG vector), or
-// a HyperGP forest as S-expressions (one per tree).
+// a HyperGP forest as S-expressions (one per tree). Switch-HybrID settings take
+// both: trees, and after the hand-over the gait vector.
 struct Genotype {
     std::vector<double> vector;
     std::vector<std::string> trees;
+    // Offset-HybrID (Neural.directOffsets = 1): beside the trees, one direct
+    // offset per hinge, in units of pi/2 within +-kOffsetLimit (gait_substrate.hpp).
+    std::vector<double> offsets;
 };
 
 enum class GenotypeForm { Vector, Forest };
@@ -76,11 +80,19 @@ public:
     GenotypeForm form() const;
     // A vector's length, or the trees of a forest.
     std::size_t dimension() const;
+    // The direct offsets a forest carries beside its trees (Offset-HybrID: one
+    // per hinge), or 0 when the settings have none.
+    std::size_t offsets() const;
+    // The gait vector's length when the session takes gait vectors: the gait
+    // family's (then dimension()), or a Switch-HybrID run's after its hand-over
+    // beside its trees; else 0.
+    std::size_t vector_dimension() const;
     int workers() const;
 
     // Throws cic::InputError for a genotype these settings cannot take: the wrong
     // form or length, a value outside the unit box or not finite, a tree that
-    // does not parse or uses a function or variable the settings lack.
+    // does not parse or uses a function or variable the settings lack, offsets
+    // the settings do not have, or not one per hinge, or out of their range.
     void check(const Genotype& genotype, std::size_t index = 0) const;
 
     // Every genotype is checked first (cic::InputError naming its index and what

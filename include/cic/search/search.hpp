@@ -146,8 +146,9 @@ struct SearchKind {
     // files are checked against the shipped settings/cic-*.xsd by their io readers.)
     std::string checkpoint_schema;
     // For view, assess, trace and render (report::replay): the root element of
-    // its checkpoint file and the best gait one holds. A search of gait vectors
-    // with a file of its own gives both; cic's three files are read by report itself.
+    // its checkpoint file and the best individual one holds (a gait vector, or a
+    // search of trees' trees with any direct genes). A search with a file of its
+    // own gives both; cic's three files are read by report itself.
     std::string checkpoint_root;
     report::CheckpointBestReader best;
     // The search of a run: fresh, or from `resume` (this kind's own checkpoint).

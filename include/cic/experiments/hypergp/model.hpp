@@ -58,6 +58,11 @@ Outcome run(const Model& m, const tree::Forest& genotype, std::span<const double
 // [-kOffsetLimit, kOffsetLimit] (gait_substrate.hpp), stepped by
 // Neural.offsetSigma with probability Neural.offsetRate; none when off.
 gp::DirectGenes direct_offset_genes(const Model& m);
+// One genotype's offsets against the model's genes: none without
+// Neural.directOffsets, else one per joint, each finite within +-limit.
+// Throws cic::InputError "WHO: ..." (with `file`, when given).
+void check_offsets(const Model& m, std::span<const double> offsets, const std::string& who,
+                   const std::string& file = {});
 
 // Worker protocol: the job body is the trees, one S-expression per line, then,
 // with direct offsets, a line "offsets D1 D2 ..." (shortest round-trip

@@ -1,0 +1,92 @@
+"""Why the direct gaits win, robot by robot (docs/scaling.md; scaling-report.py
+posture). Standard library here; the probe needs numpy.
+
+HyperGP's trees write every hinge's posture as a function of the hinge's place
+on the body. scripts/posture-probe.py replays a direct gait with its per-hinge
+offsets replaced by such functions (none, smooth fits, the mirror image) and
+scores each by raw eq. 7.1. Here it probes every finished run of the best
+direct method of issue 38's comparison (the compare-<robot> studies) and writes
+RESULTS/posture.md: per robot, the median share of each gait's own eq. 7.1
+that each replacement keeps. A share near 100 % for a smooth fit says the
+direct optimum is regular enough for an indirect encoding to write; a small one
+says its walk lives in per-hinge detail that one tree over the body cannot hold.
+Refused (exit 2) before anything is written: no ledger, no finished direct
+compare run, or a run whose folder is gone."""
+import csv
+import io
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+import scaling_compare as sc
+from scaling_results import method_of, robot_of
+
+PROBE = os.path.join(sc.ROOT, "scripts", "posture-probe.py")
+VARIANTS = ["offsets 0", "smooth, 2 terms", "smooth, 4 terms", "by axis, 2 terms", "mirrored"]
+ORDER = sc.CENTIPEDES + ["r1", "r2"]
+
+
+def direct_runs(results, studies):
+    """{robot: [run folder]} of the ledger's finished direct compare runs, in seed order."""
+    ledger = os.path.join(results, "scaling-runs.csv")
+    if not os.path.exists(ledger):
+        raise sc.Refusal(f"posture: {ledger} is missing (written by scripts/scaling.sh ledger)")
+    out = {}
+    for r in sorted(csv.DictReader(open(ledger)), key=lambda r: (r["study"], int(r["seed"]))):
+        if not r["study"].startswith("compare-") or r["status"] != "done" or method_of(r["config"]) != "direct":
+            continue
+        path = os.path.join(studies, r["study"], r["run_dir"])
+        if not os.path.isdir(path):
+            raise sc.Refusal(f"posture: {r['study']} {r['config']} seed {r['seed']} is done in the ledger, "
+                             f"but {path} is gone")
+        out.setdefault(robot_of(r["study"]), []).append(path)
+    if not out:
+        raise sc.Refusal(f"posture: {ledger} has no finished direct run of a compare study")
+    return out
+
+
+def probe(cic, runs):
+    """{run: {variant: raw eq. 7.1}}, the original under "original", from one posture-probe.py."""
+    with tempfile.TemporaryDirectory(prefix="scaling-posture-") as work:   # the probe's edited copies
+        p = subprocess.run([sys.executable, PROBE, "--cic", cic, "--csv", "--work", work, *runs],
+                           capture_output=True, text=True)
+    if p.returncode != 0:
+        raise sc.Refusal(f"posture: posture-probe.py failed ({p.returncode}): {p.stderr.strip()}")
+    out = {}
+    for row in csv.DictReader(io.StringIO(p.stdout)):
+        out.setdefault(row["run"], {})[row["variant"]] = float(row["raw_fitness"])
+    return out
+
+
+def table(scores_by_robot):
+    head = ("| robot | hinges | gaits | median eq. 7.1 | " + " | ".join(f"{v}: kept" for v in VARIANTS) + " |\n"
+            + "|---|---|---|---|" + "---|" * len(VARIANTS) + "\n")
+    lines = []
+    for robot in [r for r in ORDER if r in scores_by_robot]:
+        scores = list(scores_by_robot[robot].values())
+        h = sc.hinges(robot) if robot.startswith("centipede") else 12
+        kept = []
+        for v in VARIANTS:
+            shares = [s[v] / s["original"] for s in scores if s["original"] > 0]
+            kept.append(f"{statistics.median(shares):.0%}" if shares else "–")
+        lines.append(f"| {robot} | {h} | {len(scores)} | {statistics.median(s['original'] for s in scores):.2f} | "
+                     + " | ".join(kept) + " |")
+    return head + "\n".join(lines) + "\n"
+
+
+def posture(results, studies, cic, command):
+    runs = direct_runs(results, studies)
+    scores = {robot: probe(cic, paths) for robot, paths in runs.items()}
+    text = ("# The best direct gaits' postures (issue 38)\n\n"
+            "Written by `" + command + "` (scripts/posture-probe.py on every finished run of the best direct "
+            "method in the comparison). Each gait is replayed with its per-hinge offsets replaced, and the "
+            "columns give the median share of its own raw eq. 7.1 kept: *offsets 0* none; *smooth* the "
+            "least-squares fit a·u + b·u·v (2 terms; 4 adds u³ and u³·v) over the hinges' body coordinates "
+            "u, v in [-1, 1], where HyperGP's trees are asked; *by axis* the 2-term fit on the pitching "
+            "hinges only; *mirrored* the offsets made exactly odd in u. Amplitudes, phases and frequency "
+            "are untouched.\n\n" + table(scores))
+    path = os.path.join(results, "posture.md")
+    sc.write_atomically(path, text)
+    print(path)

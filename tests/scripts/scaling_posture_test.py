@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""Scripts.ScalingPosture: scripts/scaling-report.py posture on a synthetic
+ledger whose direct compare runs are tiny real gait runs (two on the 12-hinge
+centipede's robot file, one on R1): per robot the gaits probed (not the other
+methods', not a failed run's), the median of their own raw eq. 7.1 as `cic
+assess` replays them, and a share kept per posture replacement; the refusals
+(no ledger, a finished run's folder gone): exit 2, one line, nothing written.
+
+    scaling_posture_test.py SOURCE_DIR CIC WORK_DIR
+Exit 77 (skipped) without numpy.
+"""
+import csv
+import pathlib
+import shutil
+import statistics
+import subprocess
+import sys
+
+source, cic, work = pathlib.Path(sys.argv[1]), sys.argv[2], pathlib.Path(sys.argv[3])
+try:
+    import numpy  # noqa: F401
+except ImportError as e:
+    print(f"scaling_posture_test: skipped: {e}")
+    sys.exit(77)
+shutil.rmtree(work, ignore_errors=True)
+work.mkdir(parents=True)
+REPORT = [sys.executable, str(source / "scripts" / "scaling-report.py")]
+LEDGER = ["study", "config", "seed", "status", "best_ever", "evaluations", "wall_seconds", "run_dir", "commit"]
+
+
+def check(condition, message):
+    if not condition:
+        print(f"scaling_posture_test: {message}", file=sys.stderr)
+        sys.exit(1)
+
+
+def run(args):
+    return subprocess.run(args, capture_output=True, text=True)
+
+
+def gait_run(name, seed, *sets):
+    """A tiny real gait run (16 evaluations, 2 s walks) and its raw eq. 7.1 as cic assess replays it."""
+    p = run([cic, "--quiet", "--settings", str(source / "settings" / "r1_gait.xml"), "--seed", seed,
+             "--set", "Gait.evaluations=16", "--set", "Gait.populationSize=8", "--set", "Simulator.sample_to=2",
+             "--set", "Simulator.delayed_start=0.5", "--set", "Experiment.workers=1", *sets,
+             "--output", str(work / "tiny" / name)])
+    check(p.returncode == 0, f"a tiny gait run: {p.stderr}")
+    folder = next((work / "tiny" / name).iterdir())
+    p = run([cic, "--quiet", "assess", str(folder)])
+    check(p.returncode == 0, f"cic assess {folder}: {p.stderr}")
+    return folder, float(next(csv.DictReader(p.stdout.splitlines()))["raw_fitness"])
+
+
+centipede = ["--set", f"Simulator.robotFile={source / 'settings' / 'robots' / 'centipede-2.xml'}",
+             "--set", "Simulator.collisionSpace=1"]
+c1, raw_c1 = gait_run("c1", "1", *centipede)
+c2, raw_c2 = gait_run("c2", "2", *centipede)
+r1, raw_r1 = gait_run("r1", "1")
+
+# The study folders as scaling.sh's sweeps leave them, and the ledger naming them.
+studies, results = work / "studies", work / "results"
+results.mkdir()
+D = "direct.sepcmaes-s0.15"
+rows = []
+for study, config, seed, status, folder in (
+        ("compare-centipede-2", D, 1, "done", c1), ("compare-centipede-2", D, 2, "done", c2),
+        ("compare-centipede-2", D, 3, "failed", None),              # not probed: failed, no folder
+        ("compare-centipede-2", "hypergp-gait", 1, "done", None),   # not probed: not the direct method
+        ("compare-r1", D, 1, "done", r1), ("tune-direct-r1", "sepcmaes-s0.15", 101, "done", None)):
+    run_dir = f"runs/{config}/s{seed}"
+    if folder:
+        shutil.copytree(folder, studies / study / run_dir)
+    rows.append(dict(study=study, config=config, seed=seed, status=status, best_ever=1.0, evaluations=16,
+                     wall_seconds=1, run_dir=run_dir, commit="x"))
+
+
+def write_ledger(rows):
+    with open(results / "scaling-runs.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, LEDGER, lineterminator="\n")
+        w.writeheader()
+        w.writerows(rows)
+
+
+write_ledger(rows)
+posture = [*REPORT, "posture", "--results", str(results), "--studies", str(studies), "--cic", cic]
+p = run(posture)
+check(p.returncode == 0, f"posture failed: {p.stderr}")
+text = (results / "posture.md").read_text()
+table = {line.split("|")[1].strip(): [c.strip() for c in line.split("|")[2:-1]]
+         for line in text.splitlines() if line.startswith("| ") and not line.startswith("| robot")}
+check(set(table) == {"centipede-2", "r1"}, f"robots: {sorted(table)}\n{text}")
+hinges, gaits, median, *kept = table["centipede-2"]
+check((hinges, gaits) == ("12", "2"), f"centipede-2: {hinges} hinges, {gaits} gaits\n{text}")
+check(median == f"{statistics.median([raw_c1, raw_c2]):.2f}", f"centipede-2's median {median}, "
+      f"cic assess gives {raw_c1} and {raw_c2}")
+check(len(kept) == 5 and all(k.endswith("%") for k in kept), f"centipede-2's shares: {kept}")
+check(table["r1"][:3] == ["12", "1", f"{raw_r1:.2f}"], f"r1: {table['r1']}")
+check("scripts/scaling-report.py posture" in text, "the page names its command")
+
+# Refusals: exit 2, one line, posture.md untouched.
+before = (results / "posture.md").read_bytes()
+shutil.rmtree(studies / "compare-r1")
+p = run(posture)
+check(p.returncode == 2 and "is gone" in p.stderr and len(p.stderr.strip().splitlines()) == 1,
+      f"a run's folder gone: {p.returncode} {p.stderr}")
+check((results / "posture.md").read_bytes() == before, "a refusal wrote posture.md")
+(results / "scaling-runs.csv").unlink()
+p = run(posture)
+check(p.returncode == 2 and "scaling-runs.csv is missing" in p.stderr, f"no ledger: {p.returncode} {p.stderr}")
+shutil.rmtree(work)
+print("scaling_posture_test: ok")
