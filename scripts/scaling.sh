@@ -136,7 +136,11 @@ run_studies() {   # STUDY...
     running=$((running - 1))
     # A task started while another's index write probed its lock skips itself as
     # "running elsewhere" and ends pending: queue it again (three starts at most).
-    status=$("$CIC" sweep "$HERE/$study.xml" --output "$output/$study" --dry-run | awk -v t="$task" '$1 == t {print $2; exit}')
+    # awk reads the whole listing: stopping at the match would end cic with SIGPIPE, and
+    # under pipefail that failure would stop the study (it did, on a 40-run sweep).
+    status=$("$CIC" sweep "$HERE/$study.xml" --output "$output/$study" --dry-run |
+             awk -v t="$task" '$1 == t {print $2}') || status='?'
+    [ "$status" != '?' ] || echo "scaling.sh: could not read $study task $task's status" >&2
     if [[ "$status" =~ ^(pending|interrupted)$ ]] && [ "${tries["$study $task"]}" -lt 3 ]; then
       echo "scaling.sh: $study $run ended $status; queued again" >&2
       tasks+=("$study $task $run")
