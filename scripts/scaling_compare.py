@@ -112,7 +112,8 @@ def tuned(rows, sweep, methods, provisional, ledger_path):
         if w is None:
             raise Refusal(f"compare-sweeps: {name} has no finished run{'' if m is None else ' of ' + m + '-*'} "
                           f"({ledger_path}): no winner to compare, even a provisional one")
-        out[m] = (w, medians[w], done)
+        runs_of_w = sum(1 for r in rows if r["study"] == name and r["status"] == "done" and r["config"] == w)
+        out[m] = (w, medians[w], done, runs_of_w)
     return out
 
 
@@ -246,7 +247,8 @@ def compare_sweeps(results, out, tuning_dir, cic, provisional, issue21=ISSUE21_D
     r1_is_issue21 = same_as_issue21(cic, direct["r1"], won["direct-r1"][0], issue21)
 
     def note(method, study, w):
-        return f"{method}: {study['name']}'s winner {w[0]} (median best_ever {w[1]:.2f} over {w[2]} finished runs)"
+        return (f"{method}: {study['name']}'s winner {w[0]} (median best_ever {w[1]:.2f} of its {w[3]} runs; "
+                f"{w[2]} of the study's runs finished)")
 
     texts = {}
     for robot in CENTIPEDES + list(R_ROBOTS):

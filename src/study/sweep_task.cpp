@@ -241,6 +241,17 @@ void write_index(const SweepPlan& plan) {
 
 namespace {
 
+// A file key's value in a fingerprint: the file's bytes, not where it lies, as
+// run::settings_differences compares them. A study run from another checkout
+// (its robot file at another absolute path) finds its stored runs; a robot file
+// edited after its runs does not. The path itself only when the file cannot be
+// read (a store copied from a machine without it).
+std::string path_fingerprint(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return path;
+    return "bytes " + hex16(fnv1a_64(std::string(std::istreambuf_iterator<char>(in), {})));
+}
+
 // The fingerprint of a run: cic's version and every key whose value differs
 // from its default, but for those that change no result (the run's name,
 // output folder, worker count, resume file). Keys at their defaults are left
@@ -251,7 +262,8 @@ std::string run_fingerprint(const io::Settings& settings) {
     const io::Settings defaults;
     std::string text = std::string("cic ") + CIC_VERSION + "\n";
     for (const auto& k : io::settings_table())
-        if (const std::string v = k.get(s); v != k.get(defaults)) text += k.section + "." + k.key + "=" + v + "\n";
+        if (const std::string v = k.get(s); v != k.get(defaults))
+            text += k.section + "." + k.key + "=" + (k.type == io::ValueType::Path ? path_fingerprint(v) : v) + "\n";
     return hex16(fnv1a_64(text));
 }
 

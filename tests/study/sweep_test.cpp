@@ -424,6 +424,34 @@ TEST(Sweep, EditedSweepUsesTheRunsOfItsNewSettings) {
     fs::remove_all(dir);
 }
 
+// A store knows a run by what it ran, and a robot file by its bytes, not its
+// path: a study run from another checkout (its robot file elsewhere) reuses its
+// runs, and a robot file edited after its runs is another robot, to run anew.
+TEST(Sweep, AStoreKnowsARobotFileByItsBytesNotItsPath) {
+    const auto dir = temp_dir("sweep-robot-bytes");
+    auto study = [&](const std::string& where) {
+        fs::create_directories(dir / where);
+        fs::copy_file(fs::path(CIC_SOURCE_DIR) / "settings" / "robots" / "r0.xml", dir / where / "robot.xml");
+        std::string text = tiny_sweep_text(where, dir / where / "study", 6, 2, 2.5,
+                                           "<variant name=\"file\"><set>Simulator.robotFile=robot.xml</set></variant>", 1, 4);
+        text.replace(text.find("</output>") + 9, 0, "\n  <store>" + (dir / "store").string() + "</store>");
+        write_text(dir / where / "s.xml", text);
+        return dir / where / "s.xml";
+    };
+    const fs::path here = study("here"), there = study("there");
+    ASSERT_EQ(run_command("sweep " + here.string(), dir / "here.log"), 0) << read_text(dir / "here.log");
+    ASSERT_EQ(run_command("sweep " + there.string(), dir / "there.log"), 0) << read_text(dir / "there.log");
+    EXPECT_NE(read_text(dir / "there.log").find("0 of 1 runs to do"), std::string::npos) << read_text(dir / "there.log");
+    EXPECT_EQ(fs::canonical(dir / "there/study/runs/file/s4"), fs::canonical(dir / "here/study/runs/file/s4"));
+    // The same path, other bytes: not the stored run.
+    std::string robot = read_text(dir / "there/robot.xml");
+    robot.replace(robot.find("name=\"R0\""), 9, "name=\"R0 edited\"");
+    write_text(dir / "there/robot.xml", robot);
+    ASSERT_EQ(run_command("sweep " + there.string() + " --dry-run", dir / "dry.log"), 0);
+    EXPECT_NE(read_text(dir / "dry.log").find("\n1 pending;"), std::string::npos) << read_text(dir / "dry.log");
+    fs::remove_all(dir);
+}
+
 // Without a store, a study's run folders are its own: after an edit they hold runs
 // of other settings. They are refused (exit 2, nothing written), never counted as
 // done nor run over; a robot file named by another path but of the same bytes
