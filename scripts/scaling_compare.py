@@ -38,8 +38,11 @@ class Refusal(Exception):
 
 
 def hinges(robot):
-    """Hinge count of a generated centipede (docs/robots.md): 6 per pair; the
-    irregular twin loses one per shortened leg (the front ceil(P/2) pairs)."""
+    """Hinge count of a robot of the study: R1 and R2 have 12; a generated centipede
+    (docs/robots.md) 6 per pair, the irregular twin one fewer per shortened leg
+    (the front ceil(P/2) pairs)."""
+    if robot in R_ROBOTS:
+        return 12
     pairs = int(robot.split("-")[1])
     return 6 * pairs - ((pairs + 1) // 2 if robot.endswith("-irregular") else 0)
 

@@ -66,7 +66,7 @@ def table(scores_by_robot):
     lines = []
     for robot in [r for r in ORDER if r in scores_by_robot]:
         scores = list(scores_by_robot[robot].values())
-        h = sc.hinges(robot) if robot.startswith("centipede") else 12
+        h = sc.hinges(robot)
         kept = []
         for v in VARIANTS:
             shares = [s[v] / s["original"] for s in scores if s["original"] > 0]

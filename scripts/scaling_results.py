@@ -170,7 +170,7 @@ def table(g, sc_cells):
     out = ["| robot | hinges | method | n | median | IQR | p (Mann-Whitney) | p (Holm) | A12 [95 %] | "
            "median / direct [95 %] | verdict |", "|---|---|---|---|---|---|---|---|---|---|---|"]
     for robot in sorted(g, key=lambda r: (sc.CENTIPEDES + list(sc.R_ROBOTS)).index(r)):
-        h = sc.hinges(robot) if robot.startswith("centipede") else 12
+        h = sc.hinges(robot)
         for m in sc.METHODS:
             if m not in g[robot]:
                 continue

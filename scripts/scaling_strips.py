@@ -103,7 +103,7 @@ def image_name(robot, method):
 
 
 def robot_section(robot, chosen, rows, results, images, drawn):
-    out = [f"## {robot} ({sc.hinges(robot) if robot.startswith('centipede') else 12} hinges)", "",
+    out = [f"## {robot} ({sc.hinges(robot)} hinges)", "",
            "| method | run | seed | raw eq. 7.1 | " + " | ".join(h for _, h in ASSESS_COLUMNS) + " |",
            "|---" * (4 + len(ASSESS_COLUMNS)) + "|"]
     notes = []
