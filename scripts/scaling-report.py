@@ -4,7 +4,10 @@
   scaling-report.py ledger  --studies DIR --results DIR STUDY...
       merge each STUDY's index.csv (DIR/STUDY/index.csv, written by `cic sweep`)
       into RESULTS/scaling-runs.csv: one row per (study, config, seed), kept
-      across sittings (a run whose folder is gone keeps its last row)
+      across sittings (a run whose folder is gone keeps its last row); a row
+      the study's index no longer lists (its configuration or seed left the
+      sweep file, which `cic sweep` leaves out of index.csv too) is kept as
+      status "superseded", which no table counts
   scaling-report.py summary --results DIR
       RESULTS/tune-direct.md from the ledger: per study and configuration the
       finished runs, median and IQR of best_ever, mean wall time per run and
@@ -59,12 +62,17 @@ def ledger(studies, results, names):
         index = os.path.join(studies, name, "index.csv")
         if not os.path.exists(index):
             continue
+        listed = set()
         for r in csv.DictReader(open(index)):
+            listed.add((name, r["config"], r["seed"]))
             key = (name, r["config"], r["seed"])
             old = rows.get(key)
             if r["status"] != "done" and old and old["status"] == "done":
                 continue   # a finished run of an earlier sitting whose folder is gone
             rows[key] = {"study": name, **{f: r.get(f, "") for f in FIELDS if f != "study"}}
+        for key, row in rows.items():
+            if key[0] == name and key not in listed:
+                row["status"] = "superseded"   # its record stays; the sweep no longer runs it
     sc.write_rows_atomically(path, FIELDS, rows)
     return sum(r["status"] == "done" for r in rows.values())
 

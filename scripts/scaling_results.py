@@ -99,11 +99,11 @@ def raw_scores(results, studies, cic):
 
 
 def planned_methods(results):
-    """{robot: {method}} of every compare run in the ledger, finished or not: what each robot's
-    compare sweep runs."""
+    """{robot: {method}} of every compare run in the ledger, finished or not, but not superseded
+    (left the sweep file): what each robot's compare sweep runs."""
     out = {}
     for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv"))):
-        if r["study"].startswith("compare-"):
+        if r["study"].startswith("compare-") and r["status"] != "superseded":
             out.setdefault(robot_of(r["study"]), set()).add(method_of(r["config"]))
     return out
 

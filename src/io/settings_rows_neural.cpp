@@ -200,7 +200,7 @@ void gait_rows(std::vector<SettingKey>& t) {
     t.push_back(double_row("Gait", "frequencyMin", kPositive, "Lowest gait frequency, Hz", FIELD(gait.frequency_min)));
     t.push_back(double_row("Gait", "frequencyMax", kPositive, "Highest gait frequency, Hz", FIELD(gait.frequency_max)));
     t.push_back(enum_row<GaitBounds>("Gait", "bounds", {{GaitBounds::Clamp, {"clamp"}}, {GaitBounds::Reflect, {"reflect"}}},
-                                     "How cmaes and xnes samples outside a parameter's range are read: clamp (the "
+                                     "How cmaes, xnes and sepcmaes samples outside a parameter's range are read: clamp (the "
                                      "nearest bound; flat outside, so the search can drift away; the default only "
                                      "so that runs made before this key replay alike) or reflect (mirrored at the "
                                      "bounds; recommended, used by settings/r1_gait.xml)",
@@ -213,7 +213,7 @@ void gait_rows(std::vector<SettingKey>& t) {
                                          FIELD(gait.controller)));
     t.back().digest_at_default = false;
     t.push_back(enum_row<GaitRestarts>("Gait", "restarts", {{GaitRestarts::None, {"none"}}, {GaitRestarts::Ipop, {"ipop"}}},
-                                       "Restarts of cmaes and xnes: none (one start) or ipop (Auger & Hansen 2005: when "
+                                       "Restarts of cmaes, xnes and sepcmaes: none (one start) or ipop (Auger & Hansen 2005: when "
                                        "a start stagnates, start again from fresh uniform points with twice the "
                                        "population, lambda_r = lambda_0 2^r, keeping the best gait; within the "
                                        "budget). sade allows none only. See docs/baselines.md, \"IPOP restarts\"",

@@ -141,7 +141,7 @@ void validate(const Settings& s, const Locations& locs) {
         c.require(s.gait.controller == GaitController::Sine && !s.gait.second_harmonic &&
                       s.gait.optimizer != GaitOptimizer::Sade,
                   {"Gait.controller", "Gait.secondHarmonic", "Gait.optimizer"},
-                  "Switch-HybrID's gait phase is cmaes or xnes on the sine gait without a second harmonic");
+                  "Switch-HybrID's gait phase is cmaes, xnes or sepcmaes on the sine gait without a second harmonic");
         c.require(s.gait.population_size <= s.gait.evaluations, {"Gait.populationSize", "Gait.evaluations"},
                   "the budget does not cover one generation");
     }
@@ -158,8 +158,8 @@ void validate(const Settings& s, const Locations& locs) {
               {"Gait.populationSize", "Gait.optimizer"}, "pagmo's cmaes and xnes need at least 5 candidates, sade 7");
     c.require(s.gait.restarts == GaitRestarts::None || s.gait.optimizer != GaitOptimizer::Sade,
               {"Gait.restarts", "Gait.optimizer"},
-              "ipop restarts are built for cmaes and xnes only (allowed: Gait.restarts = none | ipop with "
-              "Gait.optimizer = cmaes | xnes; none with sade)");
+              "ipop restarts are built for cmaes, xnes and sepcmaes only (allowed: Gait.restarts = none | ipop "
+              "with Gait.optimizer = cmaes | xnes | sepcmaes; none with sade)");
     c.require(family_of(s) != ExperimentFamily::Gait || s.gait.population_size <= s.gait.evaluations,
               {"Gait.populationSize", "Gait.evaluations"}, "the budget does not cover one generation");
 

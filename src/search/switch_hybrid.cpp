@@ -3,12 +3,12 @@
 // (Gait.evaluations), one checkpoint chain. HyperGP-gait evolves (the
 // generational search) until its best has not improved for
 // Neural.switchPatience generations or it has spent Neural.switchShare of the
-// budget; then the evolution strategy (CMA-ES, with IPOP restarts if
-// Gait.restarts says so) runs on the direct gait, started from the best
-// individual's gait mapped exactly into the gait's box
-// (hypergp::gait_box_point), for the rest of the budget. Each phase saves its
-// own state: population files carry the stagnation clock, gait checkpoints
-// the hand-over; a resume from either continues the same run.
+// budget; then the evolution strategy (Gait.optimizer: CMA-ES, xNES or the
+// separable CMA-ES, with IPOP restarts if Gait.restarts says so) runs on the
+// direct gait, started from the best individual's gait mapped exactly into
+// the gait's box (hypergp::gait_box_point), for the rest of the budget. Each
+// phase saves its own state: population files carry the stagnation clock, gait
+// checkpoints the hand-over; a resume from either continues the same run.
 #include <algorithm>
 
 #include <fmt/format.h>
@@ -22,6 +22,9 @@
 
 namespace cic::search {
 namespace {
+
+// The gait phase's evolution strategy (Gait.optimizer: cmaes, xnes or sepcmaes).
+std::string optimizer_name(const io::Settings& s) { return gait::to_string(gait::optimizer_of(s.gait.optimizer)); }
 
 // When the HyperGP phase hands over: the stagnation clock (best so far and the
 // first generation that reached it) and the budget.
@@ -124,7 +127,7 @@ public:
             final_summary_ = gp_summary + "the budget leaves no room for the gait phase\n";
             return {"handed over", false};
         }
-        head_ = "HyperGP phase:\n" + gp_summary + "\ngait phase (CMA-ES from the best's gait):\n";
+        head_ = "HyperGP phase:\n" + gp_summary + "\ngait phase (" + optimizer_name(s) + " from the best's gait):\n";
         if (signal) {   // stopped as HyperGP handed over: its checkpoint resumes
             final_summary_ = head_ + "stopped: interrupted before the gait phase began\n";
             return {"interrupted", true};
@@ -150,9 +153,9 @@ public:
         h.generation = gp_->population().generation;
         h.evaluations = gp_->state().evaluations;
         h.x = hypergp::gait_box_point(model.robot, best.genotype, model.neural, best.direct);
-        services_.say(fmt::format("switch: HyperGP hands over after generation {} ({} evaluations): {}; CMA-ES starts "
+        services_.say(fmt::format("switch: HyperGP hands over after generation {} ({} evaluations): {}; {} starts "
                                   "from individual {}'s gait (fitness {:.17g}) for the remaining {} evaluations",
-                                  h.generation, h.evaluations, why_, best.id, best.fitness,
+                                  h.generation, h.evaluations, why_, optimizer_name(s), best.id, best.fitness,
                                   s.gait.evaluations - h.evaluations));
         es_ = std::make_unique<EvolutionStrategy>(services_, nullptr, h, head_);
         return *es_->start();   // a fresh gait phase evaluates its first generation

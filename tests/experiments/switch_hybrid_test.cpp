@@ -128,27 +128,32 @@ TEST(SwitchHybrid, TheSearchStartsAtItsStartPoint) {
         for (const auto& x : xs) out.push_back(-std::abs(x[0] - 0.25) - std::abs(x[1]) - std::abs(x[2] - 0.4));
         return out;
     };
-    auto run = [&] {
-        gait::Search s(gait::Optimizer::Cmaes, 3, 6, 0.1, 5);
-        s.set_box({0.0, -0.5, -0.5});
-        s.set_start(x0);
-        s.initialise(f);
-        for (int g = 0; g < 4; ++g) s.step(f);
-        return s;
-    };
-    const gait::Search a = run(), b = run();
-    EXPECT_EQ(a.history(), b.history());
-    EXPECT_EQ(a.start_point(), x0);
-    EXPECT_EQ(a.history().front(), f({x0}).front());   // x0 is the first point evaluated
-    EXPECT_GE(a.champion().fitness, f({x0}).front());
-    // A replay with the start point gives the same state back.
-    gait::Search c(gait::Optimizer::Cmaes, 3, 6, 0.1, 5);
-    c.set_box({0.0, -0.5, -0.5});
-    c.set_start(x0);
-    c.replay(a.history(), a.generation());
-    EXPECT_EQ(c.champion().x, a.champion().x);
-    ASSERT_EQ(c.population().size(), a.population().size());
-    for (std::size_t i = 0; i < c.population().size(); ++i) EXPECT_EQ(c.population()[i].x, a.population()[i].x);
+    // Every optimiser Switch-HybrID may hand over to (settings_validate: not sade).
+    for (const gait::Optimizer o : {gait::Optimizer::Cmaes, gait::Optimizer::Xnes, gait::Optimizer::Sepcmaes}) {
+        SCOPED_TRACE(gait::to_string(o));
+        auto run = [&] {
+            gait::Search s(o, 3, 6, 0.1, 5);
+            s.set_box({0.0, -0.5, -0.5});
+            s.set_start(x0);
+            s.initialise(f);
+            for (int g = 0; g < 4; ++g) s.step(f);
+            return s;
+        };
+        const gait::Search a = run(), b = run();
+        EXPECT_EQ(a.history(), b.history());
+        EXPECT_EQ(a.start_point(), x0);
+        EXPECT_EQ(a.history().front(), f({x0}).front());   // x0 is the first point evaluated
+        EXPECT_GE(a.champion().fitness, f({x0}).front());
+        // A replay with the start point gives the same state back.
+        gait::Search c(o, 3, 6, 0.1, 5);
+        c.set_box({0.0, -0.5, -0.5});
+        c.set_start(x0);
+        c.replay(a.history(), a.generation());
+        EXPECT_EQ(c.champion().x, a.champion().x);
+        ASSERT_EQ(c.population().size(), a.population().size());
+        for (std::size_t i = 0; i < c.population().size(); ++i)
+            EXPECT_EQ(c.population()[i].x, a.population()[i].x);
+    }
 }
 
 int rows_of(const fs::path& stats) {
@@ -237,6 +242,40 @@ TEST(SwitchHybrid, ResumingBeforeAtOrAfterTheSwitchGivesTheSameBytes) {
     ASSERT_NE(read_text(part.run / "run.log").find("hands over after generation " + std::to_string(g) + " "),
               std::string::npos) << read_text(part.run / "run.log");
     EXPECT_EQ(read_text(part.run / "population.xml"), want);
+    fs::remove_all(dir);
+}
+
+// The gait phase may be the separable CMA-ES of the direct side (issue 38's
+// tuning): the same start point, bytes and resume as with full CMA-ES.
+TEST(SwitchHybrid, HandingOverToSeparableCmaesKeepsTheStartAndTheBytes) {
+    const auto dir = temp_dir("switch-sep");
+    auto settings = [](int workers, const std::string& control = "") {
+        std::string s = switch_settings(90, workers, kPatience, control);
+        s.replace(s.find("<restarts>"), 0, "<optimizer>sepcmaes</optimizer>");
+        return s;
+    };
+    const auto one = run_settings(dir, "one", settings(1));
+    const auto two = run_settings(dir, "two", settings(2));
+    ASSERT_EQ(one.rc, 0) << one.log;
+    ASSERT_EQ(two.rc, 0) << two.log;
+    const std::string want = read_text(one.run / "population.xml");
+    EXPECT_EQ(read_text(two.run / "population.xml"), want);
+    const std::string log = read_text(one.run / "run.log");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(log, m, std::regex("hands over after generation (\\d+) .*; sepcmaes starts from"))) << log;
+    const int g = std::stoi(m[1]);
+    EXPECT_NE(read_text(one.run / "summary.txt").find("gait phase (sepcmaes from the best's gait):"), std::string::npos)
+        << read_text(one.run / "summary.txt");
+    const io::PopulationFile last_gp = io::load_population(checkpoint(one.run, g));
+    const io::GaitFile first_gait = io::load_gait(checkpoint(one.run, g + 1));
+    EXPECT_EQ(first_gait.optimizer, "sepcmaes");
+    EXPECT_EQ(bits(first_gait.history.front()), bits(last_gp.population.best().fitness));
+    // Resumed from the first gait checkpoint with two workers: the same bytes.
+    const auto resumed = run_settings(dir, "resumed", settings(2, "<populationXmlLoadFrom>" +
+                                                                  checkpoint(one.run, g + 1).string() +
+                                                                  "</populationXmlLoadFrom>"));
+    ASSERT_EQ(resumed.rc, 0) << resumed.log;
+    EXPECT_EQ(read_text(resumed.run / "population.xml"), want);
     fs::remove_all(dir);
 }
 

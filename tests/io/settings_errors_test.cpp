@@ -134,8 +134,9 @@ TEST(SettingsErrors, CrossFieldChecksPointAtTheLine) {
     EXPECT_HAS(m, "elitism < population size");
     m = error_of("<settings>\n<Gait>\n<optimizer>sade</optimizer>\n<restarts>ipop</restarts>\n</Gait>\n</settings>\n");
     EXPECT_HAS(m, "bad.xml:4: <Gait> restarts = \"ipop\", <Gait> optimizer = \"sade\": ipop restarts are built for "
-                  "cmaes and xnes only (allowed: Gait.restarts = none | ipop with Gait.optimizer = cmaes | xnes");
-    for (const char* optimizer : {"cmaes", "xnes"})
+                  "cmaes, xnes and sepcmaes only (allowed: Gait.restarts = none | ipop with Gait.optimizer = cmaes | "
+                  "xnes | sepcmaes; none with sade)");
+    for (const char* optimizer : {"cmaes", "xnes", "sepcmaes"})
         EXPECT_EQ(error_of(std::string("<settings><Gait><optimizer>") + optimizer +
                            "</optimizer><restarts>ipop</restarts></Gait></settings>"),
                   "(no error)")

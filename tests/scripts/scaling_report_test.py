@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Scripts.ScalingReportLedgerAndEstimate: scripts/scaling-report.py merges a
 study's index.csv into the ledger, keeps a finished run whose folder is gone,
+keeps a run that left the sweep file as superseded (counted nowhere),
 lets a row found again replace its own, names the winner by median best_ever,
 and multiplies the plan out from seconds per evaluation.
 
@@ -49,6 +50,18 @@ rows = {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results
 check(n == 4, f"4 finished runs expected, got {n}")
 check(rows[("a", "101")]["best_ever"] == "3.0", "a finished run whose folder is gone keeps its row")
 check(rows[("b", "101")]["best_ever"] == "4.5", "a run found again replaces its row")
+# A configuration that left the sweep file (cic sweep leaves it out of index.csv): its rows are
+# kept as superseded and no longer count; listed again, it counts again.
+index([("a", 101, "pending", "", 0), ("a", 102, "done", 5.0, 100.0)])
+n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+rows = {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results" / "scaling-runs.csv"))}
+check(n == 2 and rows[("b", "101")]["status"] == "superseded" and rows[("b", "101")]["best_ever"] == "4.5",
+      f"b left the sweep: kept, superseded, not counted ({n}, {rows[('b', '101')]})")
+check(rows[("a", "101")]["status"] == "done", "a run whose folder is gone is still not superseded")
+index([("a", 101, "pending", "", 0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
+       ("b", 102, "done", 6.0, 50.0)])
+n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+check(n == 4, f"b back in the sweep: its runs count again, 4 expected, got {n}")
 sr.summary(str(work / "results"))
 md = (work / "results" / "tune-direct.md").read_text()
 check("| b | 2 | 5.25 |" in md, "b's median of 4.5 and 6.0\n" + md)
