@@ -61,10 +61,15 @@ VALUES = {
     # R1's winner is not issue 21's configuration (cmaes, sigma0 0.15): the direct method runs on R1 and R2.
     "tune-direct-r1": {"cmaes-s0.15": [20, 21, 22, 23, 24], "cmaes-s0.3": [10, 10, 10, 10, 10],
                        "sepcmaes-s0.15": [9, 9, 9, 9, 9], "sepcmaes-s0.3": [30, 30, 31, 31, 31]},
+    # The second round's configurations too; on c8 one of them wins (switch-sep-0.3, three sets to copy).
     "tune-hybrid-c8": {"offset-s0.1": [3, 3, 3, 3, 3], "offset-s0.3": [1, 1, 2, 9, 9],
-                       "switch-0.3": [5, 5, 5, 5, 5], "switch-0.5": [4, 4, 4, 40, 40]},
+                       "offset-s0.1-r0.5": [2, 2, 2, 2, 2], "offset-s0.3-r0.5": [1, 1, 1, 1, 1],
+                       "switch-0.3": [5, 5, 5, 5, 5], "switch-0.5": [4, 4, 4, 40, 40],
+                       "switch-sep-0.3": [6, 6, 6, 6, 6], "switch-sep-0.5": [2, 2, 2, 2, 2]},
     "tune-hybrid-r1": {"offset-s0.1": [1, 1, 1, 1, 1], "offset-s0.3": [2, 2, 2, 2, 2],
-                       "switch-0.3": [6, 6, 6, 6, 6], "switch-0.5": [7, 7, 7, 7, 7]},
+                       "offset-s0.1-r0.5": [1, 1, 1, 1, 1], "offset-s0.3-r0.5": [1, 1, 1, 1, 1],
+                       "switch-0.3": [6, 6, 6, 6, 6], "switch-0.5": [7, 7, 7, 7, 7],
+                       "switch-sep-0.3": [5, 5, 5, 5, 5]},
 }
 FIELDS = ["study", "config", "seed", "status", "best_ever", "evaluations", "wall_seconds", "run_dir", "commit"]
 
@@ -98,7 +103,7 @@ def compare_sweeps(results, out, *extra):
 write_ledger(work / "unfinished", tuning_rows(drop=("tune-hybrid-r1", "switch-0.5", 105)))
 p = compare_sweeps(work / "unfinished", work / "refused")
 check(p.returncode == 2, f"an unfinished tuning study is refused with exit 2, got {p.returncode}: {p.stderr}")
-check(p.stderr.count("\n") == 1 and "tune-hybrid-r1 has 19 of its 20 runs finished" in p.stderr,
+check(p.stderr.count("\n") == 1 and "tune-hybrid-r1 has 34 of its 35 runs finished" in p.stderr,
       f"one clear line naming the study: {p.stderr!r}")
 check(not (work / "refused").exists() or not any((work / "refused").iterdir()), "nothing written when refused")
 p = compare_sweeps(work / "unfinished", work / "provisional", "--provisional")
@@ -130,7 +135,7 @@ for name in files:
     else:
         robot = name[len("compare-"):-4]
         check(names == ["direct.sepcmaes-s0.15", "hypergp-gait", "offset-hybrid.offset-s0.1",
-                        "switch-hybrid.switch-0.3"], f"{name}: the winners by median, got {names}")
+                        "switch-hybrid.switch-sep-0.3"], f"{name}: the winners by median, got {names}")
         check(f"settings/robots/{robot}.xml</set>" in text and "<set>Simulator.collisionSpace=1</set>" in text,
               f"{name}: its robot and the sweep collision space")
         check("<set>Gait.evaluations=2500</set>" in text, f"{name}: 2,500 evaluations")
@@ -162,8 +167,10 @@ def effective(sweep, config, seed):
 check(effective(out / "compare-centipede-8.xml", "direct.sepcmaes-s0.15", 1) ==
       effective(tuning / "tune-direct-c8.xml", "sepcmaes-s0.15", 101),
       "the compare direct variant's effective settings are tune-direct-c8's sepcmaes-s0.15")
-check(effective(out / "compare-centipede-8.xml", "switch-hybrid.switch-0.3", 1) ==
-      effective(tuning / "tune-hybrid-c8.xml", "switch-0.3", 101), "the switch winner is the tuning run")
+check(effective(out / "compare-centipede-8.xml", "switch-hybrid.switch-sep-0.3", 1) ==
+      effective(tuning / "tune-hybrid-c8.xml", "switch-sep-0.3", 101), "the switch winner is the tuning run")
+check("<optimizer>sepcmaes</optimizer>" in effective(out / "compare-centipede-8.xml", "switch-hybrid.switch-sep-0.3", 1),
+      "the switch winner hands over to separable CMA-ES, as its tuning runs did")
 check(effective(out / "compare-r2.xml", "offset-hybrid.offset-s0.3", 1).replace("<robot_type>2<", "<robot_type>1<") ==
       effective(tuning / "tune-hybrid-r1.xml", "offset-s0.3", 101), "R2's offset hybrid is R1's winner on R2")
 check(effective(out / "compare-r1.xml", "direct.sepcmaes-s0.3", 1) ==
