@@ -64,8 +64,8 @@ def ledger(studies, results, names):
             continue
         listed = set()
         for r in csv.DictReader(open(index)):
-            listed.add((name, r["config"], r["seed"]))
             key = (name, r["config"], r["seed"])
+            listed.add(key)
             old = rows.get(key)
             if r["status"] != "done" and old and old["status"] == "done":
                 continue   # a finished run of an earlier sitting whose folder is gone
