@@ -155,7 +155,9 @@ void validate(const Settings& s, const Locations& locs) {
               "the frequency range is empty");
     c.require(family_of(s) != ExperimentFamily::Gait || s.gait.population_size == 0 ||
                   s.gait.population_size >= (s.gait.optimizer == GaitOptimizer::Sade ? 7 : 5),
-              {"Gait.populationSize", "Gait.optimizer"}, "pagmo's cmaes and xnes need at least 5 candidates, sade 7");
+              {"Gait.populationSize", "Gait.optimizer"},
+              "cmaes, xnes and sepcmaes need at least 5 candidates per generation, sade 7 (allowed: "
+              "Gait.populationSize = 0 for the optimiser's default, at least 5, or at least 7 with sade)");
     c.require(s.gait.restarts == GaitRestarts::None || s.gait.optimizer != GaitOptimizer::Sade,
               {"Gait.restarts", "Gait.optimizer"},
               "ipop restarts are built for cmaes, xnes and sepcmaes only (allowed: Gait.restarts = none | ipop "

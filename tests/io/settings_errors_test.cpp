@@ -141,6 +141,18 @@ TEST(SettingsErrors, CrossFieldChecksPointAtTheLine) {
                            "</optimizer><restarts>ipop</restarts></Gait></settings>"),
                   "(no error)")
             << optimizer;
+    const auto gait_population = [](const char* optimizer, int size) {
+        return std::string("<settings><Experiment><type>gait</type></Experiment><Gait><optimizer>") + optimizer +
+               "</optimizer><populationSize>" + std::to_string(size) + "</populationSize></Gait></settings>";
+    };
+    for (const char* optimizer : {"cmaes", "xnes", "sepcmaes"}) {
+        EXPECT_HAS(error_of(gait_population(optimizer, 4)),
+                   "cmaes, xnes and sepcmaes need at least 5 candidates per generation, sade 7 (allowed: "
+                   "Gait.populationSize = 0 for the optimiser's default, at least 5, or at least 7 with sade)");
+        EXPECT_EQ(error_of(gait_population(optimizer, 5)), "(no error)") << optimizer;
+    }
+    EXPECT_HAS(error_of(gait_population("sade", 6)), "<Gait> populationSize = \"6\", <Gait> optimizer = \"sade\"");
+    EXPECT_EQ(error_of(gait_population("sade", 7)), "(no error)");
     m = error_of("<settings><Gait><restarts>bipop</restarts></Gait></settings>");
     EXPECT_HAS(m, "<Gait> restarts = \"bipop\"");
     EXPECT_HAS(m, "allowed: one of: none, ipop");
