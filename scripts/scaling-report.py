@@ -39,7 +39,13 @@
       RESULTS/posture.md: scripts/posture-probe.py on every finished run of the
       best direct method of the comparison, per robot the median share of its
       own raw eq. 7.1 each posture replacement keeps (scaling_posture.py)
-Standard library only, but for results (and numpy for posture)."""
+  scaling-report.py anytime --results DIR --studies DIR [--figure SVG]
+      RESULTS/anytime.md and the figure (default docs/img/scaling-anytime.svg):
+      per robot and method the median best fitness the finished compare runs
+      had found by 5 %, 10 %, ..., 100 % of the budget (their stats.csv, cached
+      in RESULTS/compare-anytime.csv), against the best direct method's
+      (scaling_anytime.py; matplotlib)
+Standard library only, but for results and anytime (and numpy for posture)."""
 import csv
 import os
 import shlex
@@ -189,13 +195,14 @@ def main(argv):
         estimate(argv[3])
     elif len(argv) == 4 and argv[1] == "summary" and argv[2] == "--results":
         summary(argv[3])
-    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results", "strips", "posture"):
+    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results", "strips", "posture", "anytime"):
         flags = {"compare-sweeps": {"--provisional"}, "results": set(), "strips": {"--no-strips"},
-                 "posture": set()}[argv[1]]
+                 "posture": set(), "anytime": set()}[argv[1]]
         known = {"compare-sweeps": {"--results", "--out", "--tuning", "--cic"},
                  "results": {"--results", "--studies", "--cic", "--figure", "--baselines"},
                  "strips": {"--results", "--studies", "--cic", "--out-images", "--robots", "--at"},
-                 "posture": {"--results", "--studies", "--cic"}}[argv[1]]
+                 "posture": {"--results", "--studies", "--cic"},
+                 "anytime": {"--results", "--studies", "--figure"}}[argv[1]]
         args, i = {}, 2
         while i < len(argv):
             if argv[i] in flags:
@@ -208,7 +215,8 @@ def main(argv):
                 usage(f"scaling-report.py {argv[1]}: unknown or incomplete option '{argv[i]}' (allowed: "
                       f"{', '.join(sorted(known | flags))})")
         need = {"compare-sweeps": ("--results", "--out"), "results": ("--results", "--studies", "--cic"),
-                "strips": ("--results", "--studies", "--cic"), "posture": ("--results", "--studies", "--cic")}[argv[1]]
+                "strips": ("--results", "--studies", "--cic"), "posture": ("--results", "--studies", "--cic"),
+                "anytime": ("--results", "--studies")}[argv[1]]
         for n in need:
             if n not in args:
                 usage(f"scaling-report.py {argv[1]}: {n} is required")
@@ -219,6 +227,11 @@ def main(argv):
                                            args.get("--cic", os.path.join(sc.ROOT, "build", "cic")),
                                            args.get("--provisional", False)):
                     print(p)
+            elif argv[1] == "anytime":
+                import scaling_anytime
+                scaling_anytime.anytime(args["--results"], args["--studies"],
+                                        args.get("--figure", os.path.join(sc.ROOT, "docs", "img", "scaling-anytime.svg")),
+                                        " ".join(shlex.quote(a) for a in ["scripts/scaling-report.py"] + argv[1:]))
             elif argv[1] == "posture":
                 import scaling_posture
                 scaling_posture.posture(args["--results"], args["--studies"], args["--cic"],

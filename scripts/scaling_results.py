@@ -232,9 +232,15 @@ def figure(g, sc_cells, path):
     fig.suptitle("Issue 38: each HyperGP method over the best direct one, 2,500 evaluations "
                  "(bootstrap 95 %)", fontsize=9)
     fig.tight_layout()
+    save_svg(fig, path)
+
+
+def save_svg(fig, path):
+    """Write FIG to PATH atomically, with no date in it: the same runs, the same bytes."""
+    import matplotlib.pyplot as plt
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     tmp = path + ".tmp.svg"
-    fig.savefig(tmp, format="svg", metadata={"Date": None})   # no date: the same runs, the same bytes
+    fig.savefig(tmp, format="svg", metadata={"Date": None})
     plt.close(fig)
     os.replace(tmp, path)
 

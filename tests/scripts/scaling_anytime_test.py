@@ -1,0 +1,162 @@
+#!/usr/bin/env python3
+"""Scripts.ScalingAnytime: scripts/scaling-report.py anytime on a synthetic
+ledger. Its runs' stats.csv are written by hand, so every median is known:
+the best found so far at a share of the budget (2,500 evaluations on a
+centipede, 15,000 on R1), evaluations past the budget not counted, a run with
+no generation by a share counted as "(k of n)", the ratio to the direct
+method at the same share, and the final best's raw eq. 7.1 from
+compare-raw.csv. One stats.csv comes from a real tiny gait run, so the
+columns cic writes are the ones read. The points are cached: with the run
+folders gone the page and the figure come out byte for byte the same. The
+refusals (a finished run with neither folder nor cached points): exit 2, one
+line, nothing written.
+
+    scaling_anytime_test.py SOURCE_DIR CIC WORK_DIR
+Exit 77 (skipped) without matplotlib.
+"""
+import csv
+import pathlib
+import shutil
+import subprocess
+import sys
+
+source, cic, work = pathlib.Path(sys.argv[1]), sys.argv[2], pathlib.Path(sys.argv[3])
+try:
+    import matplotlib  # noqa: F401
+except ImportError as e:
+    print(f"scaling_anytime_test: skipped: {e}")
+    sys.exit(77)
+shutil.rmtree(work, ignore_errors=True)
+work.mkdir(parents=True)
+REPORT = [sys.executable, str(source / "scripts" / "scaling-report.py")]
+LEDGER = ["study", "config", "seed", "status", "best_ever", "evaluations", "wall_seconds", "run_dir", "commit"]
+STATS = ["generation", "best", "mean", "evaluations"]
+
+
+def check(condition, message):
+    if not condition:
+        print(f"scaling_anytime_test: {message}", file=sys.stderr)
+        sys.exit(1)
+
+
+def run(args):
+    return subprocess.run(args, capture_output=True, text=True)
+
+
+studies, results = work / "studies", work / "results"
+results.mkdir()
+rows, raw = [], []
+
+
+def add(study, config, seed, generations, status="done", final=None):
+    """A run of STUDY whose generation k ends at generations[k] = (cumulative evaluations, best)."""
+    run_dir = f"runs/{config}/s{seed}"
+    folder = studies / study / run_dir
+    folder.mkdir(parents=True)
+    with open(folder / "stats.csv", "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(STATS)
+        for k, (evaluations, best) in enumerate(generations):
+            w.writerow([k, best, best / 2, evaluations])
+    best_ever = max(b for _, b in generations)
+    rows.append(dict(study=study, config=config, seed=seed, status=status, best_ever=repr(best_ever),
+                     evaluations=generations[-1][0], wall_seconds=1, run_dir=run_dir, commit="x"))
+    if final is not None:
+        raw.append(dict(study=study, config=config, seed=seed, best_ever=repr(best_ever), run_dir=str(folder),
+                        raw_fitness=final))
+
+
+C2, D, H, S = "compare-centipede-2", "direct.sepcmaes-s0.15", "hypergp-gait", "switch-hybrid.switch-sep-0.3"
+# Direct: 10 % of 2,500 is 250 evaluations, 20 % 500, 30 % 750, 50 % 1,250, 100 % 2,500.
+add(C2, D, 1, [(250, 2.0), (500, 4.0), (750, 6.0), (1250, 8.0), (2500, 10.0)], final=10.0)
+add(C2, D, 2, [(250, 4.0), (500, 6.0), (750, 8.0), (1250, 10.0), (2500, 12.0)], final=12.0)
+# HyperGP-gait: its first generation ends past 10 % in seed 2 ("1 of 2" there); it loses its best
+# (final below best found); seed 1's last generation passes the budget and does not count.
+add(C2, H, 1, [(200, 5.0), (500, 5.0), (700, 7.0), (1300, 7.0), (2400, 8.0), (2600, 99.0)], final=6.0)
+add(C2, H, 2, [(300, 3.0), (450, 4.0), (760, 9.0), (1250, 4.0), (2500, 4.0)], final=4.0)
+# Switch-HybrID: the gait phase continues the HyperGP phase's count.
+add(C2, S, 1, [(250, 5.0), (765, 6.0), (821, 6.5), (2500, 20.0)], final=20.0)
+# Not counted: a superseded configuration, a failed run, a tuning run.
+add(C2, "switch-hybrid.switch-0.3", 1, [(250, 50.0), (2500, 50.0)], status="superseded")
+add(C2, D, 3, [(250, 50.0)], status="failed")
+add("tune-direct-c8", "sepcmaes-s0.15", 101, [(250, 50.0)])
+# R1: 15,000 evaluations; 10 % is 1,500.
+add("compare-r1", D, 1, [(1500, 3.0), (15000, 30.0)], final=30.0)
+
+
+def gait_run():
+    """A tiny real gait run's folder (16 evaluations, 8 per generation)."""
+    p = run([cic, "--quiet", "--settings", str(source / "settings" / "r1_gait.xml"), "--seed", "1",
+             "--set", "Gait.evaluations=16", "--set", "Gait.populationSize=8", "--set", "Simulator.sample_to=2",
+             "--set", "Simulator.delayed_start=0.5", "--set", "Experiment.workers=1", "--output", str(work / "tiny")])
+    check(p.returncode == 0, f"a tiny gait run: {p.stderr}")
+    return next((work / "tiny").iterdir())
+
+
+tiny = gait_run()
+tiny_rows = list(csv.DictReader(open(tiny / "stats.csv")))
+tiny_best = max(float(r["best"]) for r in tiny_rows)
+shutil.copytree(tiny, studies / "compare-r2" / "runs" / D / "s1")
+rows.append(dict(study="compare-r2", config=D, seed=1, status="done", best_ever=repr(tiny_best),
+                 evaluations=tiny_rows[-1]["evaluations"], wall_seconds=1, run_dir=f"runs/{D}/s1", commit="x"))
+
+with open(results / "scaling-runs.csv", "w", newline="") as f:
+    w = csv.DictWriter(f, LEDGER, lineterminator="\n")
+    w.writeheader()
+    w.writerows(rows)
+with open(results / "compare-raw.csv", "w", newline="") as f:
+    w = csv.DictWriter(f, ["study", "config", "seed", "best_ever", "run_dir", "raw_fitness"], lineterminator="\n")
+    w.writeheader()
+    w.writerows(raw)
+
+figure = work / "anytime.svg"
+anytime = [*REPORT, "anytime", "--results", str(results), "--studies", str(studies), "--figure", str(figure)]
+p = run(anytime)
+check(p.returncode == 0, f"anytime failed: {p.stderr}")
+text = (results / "anytime.md").read_text()
+table = {(c[0], c[2]): c for c in ([x.strip() for x in line.split("|")[1:-1]] for line in text.splitlines()
+                                   if line.startswith("| ") and not line.startswith("| robot"))}
+check(set(table) == {("centipede-2", "best direct"), ("centipede-2", "HyperGP-gait"),
+                     ("centipede-2", "Switch-HybrID"), ("r1", "best direct"), ("r2", "best direct")},
+      f"rows: {sorted(table)}\n{text}")
+# robot, hinges, method, n, 10 %, 20 %, 30 %, 50 %, 100 %, final
+check(table[("centipede-2", "best direct")][1:] == ["12", "best direct", "2", "3.00", "5.00", "7.00", "9.00",
+                                                    "11.00", "11.00"], f"direct: {table[('centipede-2', 'best direct')]}")
+check(table[("centipede-2", "HyperGP-gait")][3:] == ["2", "5.00 (1 of 2) ×1.67", "4.50 ×0.90", "5.50 ×0.79",
+                                                     "8.00 ×0.89", "8.50 ×0.77", "5.00"],
+      f"HyperGP-gait: {table[('centipede-2', 'HyperGP-gait')]}")
+check(table[("centipede-2", "Switch-HybrID")][3:] == ["1", "5.00 ×1.67", "5.00 ×1.00", "5.00 ×0.71", "6.50 ×0.72",
+                                                      "20.00 ×1.82", "20.00"],
+      f"Switch-HybrID: {table[('centipede-2', 'Switch-HybrID')]}")
+check(table[("r1", "best direct")][4] == "3.00" and table[("r1", "best direct")][8] == "30.00",
+      f"R1's budget is 15,000: {table[('r1', 'best direct')]}")
+check(table[("r2", "best direct")][4] == f"{tiny_best:.2f}", f"a real run's stats.csv: {table[('r2', 'best direct')]} "
+      f"against its best {tiny_best}")
+check("scripts/scaling-report.py anytime" in text, "the page names its command")
+check(figure.read_text().startswith("<?xml"), "the figure is an SVG")
+
+# The cache: with the run folders gone, the same page and the same figure bytes.
+page, svg = (results / "anytime.md").read_bytes(), figure.read_bytes()
+shutil.rmtree(studies)
+p = run(anytime)
+check(p.returncode == 0, f"anytime from the cache failed: {p.stderr}")
+check((results / "anytime.md").read_bytes() == page, "the page changed when read from the cache")
+check(figure.read_bytes() == svg, "the figure's bytes changed when read from the cache")
+
+# Refusal: a finished run neither on disk nor cached; nothing written.
+with open(results / "scaling-runs.csv", "a", newline="") as f:
+    csv.DictWriter(f, LEDGER, lineterminator="\n").writerow(
+        dict(study=C2, config=D, seed=4, status="done", best_ever="1.0", evaluations=2500, wall_seconds=1,
+             run_dir=f"runs/{D}/s4", commit="x"))
+(results / "anytime.md").unlink()
+figure.unlink()
+cache = (results / "compare-anytime.csv").read_bytes()
+p = run(anytime)
+check(p.returncode == 2, f"a gone run: exit {p.returncode}, {p.stderr}")
+check(len(p.stderr.strip().splitlines()) == 1 and "compare-anytime.csv has no points" in p.stderr,
+      f"a gone run's message: {p.stderr}")
+check(not (results / "anytime.md").exists() and not figure.exists(), "a refusal wrote the page or the figure")
+check((results / "compare-anytime.csv").read_bytes() == cache, "a refusal rewrote the cache")
+p = run([*REPORT, "anytime", "--results", str(results)])
+check(p.returncode == 2 and "--studies is required" in p.stderr, f"no --studies: {p.returncode} {p.stderr}")
+print("scaling_anytime_test: ok")
