@@ -18,6 +18,12 @@
 #                (refused while one is provisional)
 #   ledger       run nothing: merge the studies' index.csv (tuning and compare)
 #                into results/scaling-runs.csv and write results/tune-direct.md
+#   report       run nothing: the comparison's pages from the ledger and the
+#                runs in --output (scaling-report.py results, anytime, posture
+#                and strips: results/compare.md, anytime.md, posture.md,
+#                strips.md and docs/img/scaling-*); Debian's python3 (scipy,
+#                numpy, matplotlib) unless PYTHON says otherwise, and the strips
+#                need the viewer build; every page is tried, a failed one named
 #   estimate     run nothing but timing: CPU seconds per evaluation of every
 #                robot of the study (cic simulate), and results/estimate.md, the whole
 #                study's run time with comparison seeds cut on the middle sizes
@@ -46,11 +52,11 @@ while [ $# -gt 0 ]; do
     --only) only="$2"; shift 2
             [[ "$only" =~ ^(c8|r1)$ ]] || { echo "scaling.sh: --only takes c8 or r1, got '$only'" >&2; exit 2; } ;;
     -h|--help) sed -n '2,/^set /p' "$0" | grep '^#' | sed 's/^# \{0,1\}//'; exit 0 ;;
-    tune-direct|tune-hybrid|compare|ledger|estimate) stages+=("$1"); shift ;;
+    tune-direct|tune-hybrid|compare|ledger|report|estimate) stages+=("$1"); shift ;;
     *) echo "scaling.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-[ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, tune-hybrid, compare, ledger, estimate (see --help)" >&2; exit 2; }
+[ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, tune-hybrid, compare, ledger, report, estimate (see --help)" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scaling.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
 # --commit's pool waits for whichever run ends first: `wait -n -p`, bash 5.1 on.
 if [ "$commit" = 1 ] && ! (( BASH_VERSINFO[0] > 5 || (BASH_VERSINFO[0] == 5 && BASH_VERSINFO[1] >= 1) )); then
@@ -184,6 +190,17 @@ main() {
         commit_results "Ledger (issue 38): compare summary" ;;
       ledger)
         ledger ;;
+      report)
+        # scipy, numpy and matplotlib are Debian's; a pyenv python3 first on PATH lacks them.
+        rpy=${PYTHON:-/usr/bin/python3} failed=()
+        for page in results anytime posture strips; do
+          args=(--results "$HERE/results" --studies "$output")
+          [ "$page" = anytime ] || args+=(--cic "$CIC")
+          [ "$page" != strips ] || args+=(--out-images "$ROOT/docs/img")
+          echo "== report: $page" >&2
+          "$rpy" "$ROOT/scripts/scaling-report.py" "$page" "${args[@]}" || failed+=("$page")
+        done
+        [ ${#failed[@]} = 0 ] || { echo "scaling.sh: report: ${failed[*]} failed (see above)" >&2; exit 1; } ;;
       estimate)
         robots=(R1 R2 centipede-2 centipede-4 centipede-8 centipede-16
                 centipede-2-irregular centipede-4-irregular centipede-8-irregular centipede-16-irregular)
