@@ -29,7 +29,7 @@ import scaling_compare as sc
 from scaling_results import LABELS, method_of, robot_of, save_svg
 
 STEPS = [5 * k for k in range(1, 21)]   # per cent of the budget
-TABLE_STEPS = [10, 20, 30, 50, 100]
+TABLE_STEPS = [10, 20, 30, 50, 70, 100]
 CACHE_FIELDS = ["study", "config", "seed", "best_ever", "budget"] + [f"at_{s}" for s in STEPS]
 
 
