@@ -211,7 +211,9 @@ def anytime(results, studies, figure_path, command):
            "(compare-raw.csv). The direct method keeps its best gait, so its 100 % point is that score;",
            "HyperGP-gait and Offset-HybrID keep no elite (elitism 0), so theirs can end below their best.",
            "Switch-HybrID runs HyperGP-gait's own first generations (the same seed, the same bytes) until it",
-           "hands over, at 30 % of the budget or on stagnation (its run.log says which).", ""]
+           "hands over, at 30 % of the budget or on stagnation (its run.log says which). R1's and R2's",
+           "HyperGP-gait are issue 21's runs, which the comparison's table borrows by their scores alone:",
+           "they have no row here.", ""]
     out += table(g, final_scores(results))
     tmp = os.path.join(results, "anytime.md.tmp")
     with open(tmp, "w") as f:
