@@ -210,7 +210,8 @@ def anytime(results, studies, figure_path, command):
            "column is the comparison's own score: the median raw eq. 7.1 of the individual each run ended with",
            "(compare-raw.csv). The direct method keeps its best gait, so its 100 % point is that score;",
            "HyperGP-gait and Offset-HybrID keep no elite (elitism 0), so theirs can end below their best.",
-           "Switch-HybrID runs HyperGP-gait's own first generations (the same seed, the same bytes) until it",
+           "On the centipedes Switch-HybrID runs HyperGP-gait's own first generations (the same settings and",
+           "seed, so the same bytes) until it",
            "hands over, at 30 % of the budget or on stagnation (its run.log says which). R1's and R2's",
            "HyperGP-gait are issue 21's runs, which the comparison's table borrows by their scores alone:",
            "they have no row here.", ""]
