@@ -38,7 +38,8 @@
   scaling-report.py posture --results DIR --studies DIR --cic CIC
       RESULTS/posture.md: scripts/posture-probe.py on every finished run of the
       best direct method of the comparison, per robot the median share of its
-      own raw eq. 7.1 each posture replacement keeps (scaling_posture.py)
+      own raw eq. 7.1 each posture replacement keeps, and per robot the share
+      each Offset-HybrID run keeps with its direct offsets 0 (scaling_posture.py)
   scaling-report.py anytime --results DIR --studies DIR [--figure SVG]
       RESULTS/anytime.md and the figure (default docs/img/scaling-anytime.svg):
       per robot and method the median best fitness the finished compare runs

@@ -10,11 +10,18 @@ RESULTS/posture.md: per robot, the median share of each gait's own eq. 7.1
 that each replacement keeps. A share near 100 % for a smooth fit says the
 direct optimum is regular enough for an indirect encoding to write; a small one
 says its walk lives in per-hinge detail that one tree over the body cannot hold.
+A second table asks the same of Offset-HybrID, whose trees come with one
+directly encoded offset per hinge: each finished Offset-HybrID compare run's
+final best replayed as it is and with those offsets set to 0, the median share
+kept. A large share lost says the run's walk leans on its direct offsets, as
+the direct gaits' does on theirs.
 Refused (exit 2) before anything is written: no ledger, no finished direct
 compare run, or a run whose folder is gone."""
 import csv
 import io
 import os
+import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -28,22 +35,66 @@ VARIANTS = ["offsets 0", "smooth, 2 terms", "smooth, 4 terms", "by axis, 2 terms
 ORDER = sc.CENTIPEDES + ["r1", "r2"]
 
 
-def direct_runs(results, studies):
-    """{robot: [run folder]} of the ledger's finished direct compare runs, in seed order."""
+def method_runs(results, studies, method):
+    """{robot: [run folder]} of the ledger's finished compare runs of METHOD, in seed order."""
     ledger = os.path.join(results, "scaling-runs.csv")
     if not os.path.exists(ledger):
         raise sc.Refusal(f"posture: {ledger} is missing (written by scripts/scaling.sh ledger)")
     out = {}
     for r in sorted(csv.DictReader(open(ledger)), key=lambda r: (r["study"], int(r["seed"]))):
-        if not r["study"].startswith("compare-") or r["status"] != "done" or method_of(r["config"]) != "direct":
+        if not r["study"].startswith("compare-") or r["status"] != "done" or method_of(r["config"]) != method:
             continue
         path = os.path.join(studies, r["study"], r["run_dir"])
         if not os.path.isdir(path):
             raise sc.Refusal(f"posture: {r['study']} {r['config']} seed {r['seed']} is done in the ledger, "
                              f"but {path} is gone")
         out.setdefault(robot_of(r["study"]), []).append(path)
+    return out
+
+
+def direct_runs(results, studies):
+    out = method_runs(results, studies, "direct")
     if not out:
-        raise sc.Refusal(f"posture: {ledger} has no finished direct run of a compare study")
+        raise sc.Refusal(f"posture: {os.path.join(results, 'scaling-runs.csv')} has no finished direct run of a "
+                         "compare study")
+    return out
+
+
+OFFSETS = re.compile(r"<offsets>([^<]*)</offsets>")
+
+
+def offsets_zeroed(run, folder):
+    """FOLDER: a copy of RUN's settings and population with every individual's direct offsets 0 (the
+    population keeps its recorded fitnesses, so cic assess replays the same individual)."""
+    text = open(os.path.join(run, "population.xml")).read()
+    if not OFFSETS.search(text):
+        raise sc.Refusal(f"posture: {run}/population.xml has no <offsets> (not an Offset-HybrID run?)")
+    os.makedirs(folder)
+    shutil.copy(os.path.join(run, "settings.xml"), os.path.join(folder, "settings.xml"))
+    with open(os.path.join(folder, "population.xml"), "w") as f:
+        f.write(OFFSETS.sub(lambda m: "<offsets>" + " ".join("0" for _ in m.group(1).split()) + "</offsets>", text))
+
+
+def offset_shares(cic, runs_by_robot):
+    """{robot: [(raw eq. 7.1 as it is, with its direct offsets 0)]}, from one cic assess."""
+    with tempfile.TemporaryDirectory(prefix="scaling-posture-offsets-") as work:
+        pairs = []
+        for robot, runs in runs_by_robot.items():
+            for k, run in enumerate(runs):
+                zeroed = os.path.join(work, f"{robot}-{k}")
+                offsets_zeroed(run, zeroed)
+                pairs.append((robot, run, zeroed))
+        if not pairs:
+            return {}
+        out_csv = os.path.join(work, "assess.csv")
+        p = subprocess.run([cic, "--quiet", "assess", *[x for _, run, zeroed in pairs for x in (run, zeroed)],
+                            "--out", out_csv], capture_output=True, text=True)
+        if p.returncode != 0:
+            raise sc.Refusal(f"posture: cic assess failed ({p.returncode}): {p.stderr.strip()}")
+        got = {r["input"]: float(r["raw_fitness"]) for r in csv.DictReader(open(out_csv))}
+    out = {}
+    for robot, run, zeroed in pairs:
+        out.setdefault(robot, []).append((got[run], got[zeroed]))
     return out
 
 
@@ -76,8 +127,21 @@ def table(scores_by_robot):
     return head + "\n".join(lines) + "\n"
 
 
+def offset_table(shares):
+    lines = ["| robot | hinges | runs | median eq. 7.1 | median eq. 7.1, offsets 0 | offsets 0: kept |",
+             "|---|---|---|---|---|---|"]
+    for robot in [r for r in ORDER if r in shares]:
+        pairs = shares[robot]
+        kept = [z / o for o, z in pairs if o > 0]
+        lines.append(f"| {robot} | {sc.hinges(robot)} | {len(pairs)} | {statistics.median(o for o, _ in pairs):.2f} | "
+                     f"{statistics.median(z for _, z in pairs):.2f} | "
+                     + (f"{statistics.median(kept):.0%}" if kept else "–") + " |")
+    return "\n".join(lines) + "\n"
+
+
 def posture(results, studies, cic, command):
     runs = direct_runs(results, studies)
+    hybrid = offset_shares(cic, method_runs(results, studies, "offset-hybrid"))
     scores = {robot: probe(cic, paths) for robot, paths in runs.items()}
     text = ("# The best direct gaits' postures (issue 38)\n\n"
             "Written by `" + command + "` (scripts/posture-probe.py on every finished run of the best direct "
@@ -87,6 +151,11 @@ def posture(results, studies, cic, command):
             "u, v in [-1, 1], where HyperGP's trees are asked; *by axis* the 2-term fit on the pitching "
             "hinges only; *mirrored* the offsets made exactly odd in u. Amplitudes, phases and frequency "
             "are untouched.\n\n" + table(scores))
+    if hybrid:
+        text += ("\n## Offset-HybrID's direct offsets\n\n"
+                 "Every finished Offset-HybrID run's final best (its trees and one directly encoded offset per "
+                 "hinge), replayed as it is and with those offsets set to 0 (the gait its trees write, their "
+                 "offsets included, untouched): the median share of its raw eq. 7.1 kept.\n\n" + offset_table(hybrid))
     path = os.path.join(results, "posture.md")
     sc.write_atomically(path, text)
     print(path)

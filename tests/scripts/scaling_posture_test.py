@@ -11,6 +11,7 @@ Exit 77 (skipped) without numpy.
 """
 import csv
 import pathlib
+import re
 import shutil
 import statistics
 import subprocess
@@ -53,6 +54,35 @@ def gait_run(name, seed, *sets):
 
 centipede = ["--set", f"Simulator.robotFile={source / 'settings' / 'robots' / 'centipede-2.xml'}",
              "--set", "Simulator.collisionSpace=1"]
+
+
+def offset_hybrid_run(name, seed):
+    """A tiny real Offset-HybrID run on the 12-hinge centipede (2 generations of 8), and the raw eq. 7.1 of
+    its final best as cic assess replays it."""
+    p = run([cic, "--quiet", "--settings", str(source / "settings" / "r1_offset_hybrid.xml"), "--seed", seed,
+             "--set", "GP.generatedPopulationSize=8", "--set", "GP.tournament_size=2",
+             "--set", "Control.maximumIterations=2", "--set", "Simulator.sample_to=2",
+             "--set", "Simulator.delayed_start=0.5", "--set", "Experiment.workers=1", *centipede,
+             "--output", str(work / "tiny" / name)])
+    check(p.returncode == 0, f"a tiny Offset-HybrID run: {p.stderr}")
+    folder = next((work / "tiny" / name).iterdir())
+    p = run([cic, "--quiet", "assess", str(folder)])
+    check(p.returncode == 0, f"cic assess {folder}: {p.stderr}")
+    return folder, float(next(csv.DictReader(p.stdout.splitlines()))["raw_fitness"])
+
+
+o1, raw_o1 = offset_hybrid_run("o1", "1")
+# The same run with its direct offsets 0, replayed by hand: what the page's second table must give.
+zeroed = work / "tiny" / "o1-zeroed"
+zeroed.mkdir()
+shutil.copy(o1 / "settings.xml", zeroed / "settings.xml")
+(zeroed / "population.xml").write_text(re.sub(r"<offsets>([^<]*)</offsets>",
+                                              lambda m: "<offsets>" + " ".join("0" for _ in m.group(1).split())
+                                              + "</offsets>", (o1 / "population.xml").read_text()))
+p = run([cic, "--quiet", "assess", str(zeroed)])
+check(p.returncode == 0, f"cic assess {zeroed}: {p.stderr}")
+raw_o1_zeroed = float(next(csv.DictReader(p.stdout.splitlines()))["raw_fitness"])
+check(raw_o1_zeroed != raw_o1, "the tiny Offset-HybrID run's offsets change nothing: the check below would be idle")
 c1, raw_c1 = gait_run("c1", "1", *centipede)
 c2, raw_c2 = gait_run("c2", "2", *centipede)
 r1, raw_r1 = gait_run("r1", "1")
@@ -66,7 +96,8 @@ for study, config, seed, status, folder in (
         ("compare-centipede-2", D, 1, "done", c1), ("compare-centipede-2", D, 2, "done", c2),
         ("compare-centipede-2", D, 3, "failed", None),              # not probed: failed, no folder
         ("compare-centipede-2", "hypergp-gait", 1, "done", None),   # not probed: not the direct method
-        ("compare-r1", D, 1, "done", r1), ("tune-direct-r1", "sepcmaes-s0.15", 101, "done", None)):
+        ("compare-r1", D, 1, "done", r1), ("tune-direct-r1", "sepcmaes-s0.15", 101, "done", None),
+        ("compare-centipede-2", "offset-hybrid.offset-s0.1", 1, "done", o1)):
     run_dir = f"runs/{config}/s{seed}"
     if folder:
         shutil.copytree(folder, studies / study / run_dir)
@@ -87,7 +118,8 @@ p = run(posture)
 check(p.returncode == 0, f"posture failed: {p.stderr}")
 text = (results / "posture.md").read_text()
 table = {line.split("|")[1].strip(): [c.strip() for c in line.split("|")[2:-1]]
-         for line in text.splitlines() if line.startswith("| ") and not line.startswith("| robot")}
+         for line in text.split("## Offset-HybrID")[0].splitlines()
+         if line.startswith("| ") and not line.startswith("| robot")}
 check(set(table) == {"centipede-2", "r1"}, f"robots: {sorted(table)}\n{text}")
 hinges, gaits, median, *kept = table["centipede-2"]
 check((hinges, gaits) == ("12", "2"), f"centipede-2: {hinges} hinges, {gaits} gaits\n{text}")
@@ -96,6 +128,12 @@ check(median == f"{statistics.median([raw_c1, raw_c2]):.2f}", f"centipede-2's me
 check(len(kept) == 5 and all(k.endswith("%") for k in kept), f"centipede-2's shares: {kept}")
 check(table["r1"][:3] == ["12", "1", f"{raw_r1:.2f}"], f"r1: {table['r1']}")
 check("scripts/scaling-report.py posture" in text, "the page names its command")
+# The second table: Offset-HybrID's run as it is and with its direct offsets 0.
+offsets = [line for line in text.split("## Offset-HybrID's direct offsets")[-1].splitlines() if line.startswith("| centipede")]
+check(len(offsets) == 1, f"Offset-HybrID's table: {offsets}\n{text}")
+check([c.strip() for c in offsets[0].split("|")[1:-1]] ==
+      ["centipede-2", "12", "1", f"{raw_o1:.2f}", f"{raw_o1_zeroed:.2f}", f"{raw_o1_zeroed / raw_o1:.0%}"],
+      f"Offset-HybrID's row: {offsets[0]}, cic assess gives {raw_o1} and {raw_o1_zeroed} with offsets 0")
 
 # Refusals: exit 2, one line, posture.md untouched.
 before = (results / "posture.md").read_bytes()
