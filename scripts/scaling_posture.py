@@ -64,8 +64,9 @@ OFFSETS = re.compile(r"<offsets>([^<]*)</offsets>")
 
 
 def offsets_zeroed(run, folder):
-    """FOLDER: a copy of RUN's settings and population with every individual's direct offsets 0 (the
-    population keeps its recorded fitnesses, so cic assess replays the same individual)."""
+    """FOLDER: a copy of RUN's settings and population with every individual's direct offsets 0. cic assess
+    replays the best by gp::better: recorded fitness, then size, then id, none of which the edit touches, so
+    it replays the same individual (the edit breaks each one's hash, which only marks it for re-evaluation)."""
     text = open(os.path.join(run, "population.xml")).read()
     if not OFFSETS.search(text):
         raise sc.Refusal(f"posture: {run}/population.xml has no <offsets> (not an Offset-HybrID run?)")
