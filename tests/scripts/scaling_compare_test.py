@@ -280,6 +280,19 @@ check("better than best direct" in md and "worse than best direct" in md, "signi
 check("| centipede-4 | 24 | HyperGP-gait | 5 |" in md and "no difference shown at n = 5 |" in md,
       "the 5-seed robot: nothing shown\n" + md)
 check("No difference shown after Holm: centipede-4 (n = 5)." in md, "the robots with nothing significant\n" + md)
+check("Crossover so far: the smallest robot on which a HyperGP method beats the best direct one after Holm has 12 "
+      "hinges: centipede-2 (HyperGP-gait)." in md,
+      "the crossover line names the smallest robot won, 'so far' with 8 of the 10 robots missing\n" + md)
+# The crossover line on known cells: none won; the smallest of two; "so far" while runs wait.
+none = {"centipede-2": {"direct": direct, "switch-hybrid": [v - 20 for v in direct]}}
+check(sr.crossover(none, sr.score(none), False) == "Crossover: no HyperGP method beats the best direct one after "
+      "Holm on any robot of this table (up to 12 hinges).", f"no win: {sr.crossover(none, sr.score(none), False)}")
+two = {"centipede-16": {"direct": direct, "offset-hybrid": [v + 20 for v in direct]},
+       "centipede-8-irregular": {"direct": direct, "switch-hybrid": [v + 20 for v in direct]},
+       "centipede-8": {"direct": direct, "hypergp-gait": [v - 20 for v in direct]}}
+check(sr.crossover(two, sr.score(two), True) == "Crossover so far: the smallest robot on which a HyperGP method beats "
+      "the best direct one after Holm has 44 hinges: centipede-8-irregular (Switch-HybrID).",
+      f"the smallest of two wins, a loss not counted: {sr.crossover(two, sr.score(two), True)}")
 check("| centipede-2 | HyperGP-gait | 2,500 [2,500, 2,500] |" in md, "the real evaluation counts\n" + md)
 check(svg.read_text().lstrip().startswith("<?xml") and "<svg" in svg.read_text(), "the figure is an SVG")
 first = svg.read_bytes()
