@@ -19,8 +19,8 @@
       cut on the middle sizes
   scaling-report.py compare-sweeps --results DIR --out DIR [--provisional]
                     [--tuning DIR] [--cic CIC]
-      OUT/compare-<robot>.xml, the comparison stage's sweeps (seeds 1..10, the
-      middle sizes 1..5), from the tuning winners in RESULTS/scaling-runs.csv and
+      OUT/compare-<robot>.xml, the comparison stage's sweeps (seeds 1..10 on every
+      robot), from the tuning winners in RESULTS/scaling-runs.csv and
       the tuning sweeps in TUNING (default experiments/scaling); refuses (exit 2)
       while a tuning study has runs to go, unless --provisional
   scaling-report.py results --results DIR --studies DIR --cic CIC

@@ -12,7 +12,7 @@
 #                0.3 or 0.5), tuning seeds 101..105, on the same two robots and
 #                budgets (tune-hybrid-c8.xml, tune-hybrid-r1.xml); the summary
 #                names each hybrid's configuration per robot
-#   compare      the comparison, seeds 1..10 (the middle sizes 1..5): every
+#   compare      the comparison, seeds 1..10 on every robot: every
 #                experiments/scaling/compare-*.xml, smallest robot first, R1 and
 #                R2 last; write them first with `scaling-report.py compare-sweeps`
 #                (refused while one is provisional)
