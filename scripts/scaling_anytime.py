@@ -26,7 +26,7 @@ import statistics
 import sys
 
 import scaling_compare as sc
-from scaling_results import LABELS, method_of, robot_of, save_svg
+from scaling_results import LABELS, compare_rows, finished, method_of, robot_of, save_svg
 
 STEPS = [5 * k for k in range(1, 21)]   # per cent of the budget
 TABLE_STEPS = [10, 20, 30, 50, 70, 100]
@@ -56,11 +56,9 @@ def best_so_far(stats_path, budget):
     return out
 
 
-def anytime_rows(results, studies):
-    """{(study, config, seed): [value or None per STEPS]} of every finished compare run in the ledger
-    (superseded rows left out), reading the new ones' stats.csv and caching them."""
-    ledger = [r for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv")))
-              if r["study"].startswith("compare-") and r["status"] == "done"]
+def anytime_rows(results, studies, ledger):
+    """{(study, config, seed): [value or None per STEPS]} of LEDGER's finished compare runs (superseded
+    rows left out), reading the new ones' stats.csv and caching them in RESULTS."""
     cache_path = os.path.join(results, "compare-anytime.csv")
     cache = {}
     if os.path.exists(cache_path):
@@ -93,37 +91,37 @@ def by_method(rows):
     return g
 
 
+def values_at(runs, step):
+    """The runs' points at STEP per cent, of the runs that had one."""
+    k = STEPS.index(step)
+    return [r[k] for r in runs if r[k] is not None]
+
+
 def median_at(runs, step):
     """Median over the runs that had a point by STEP per cent, and how many had one."""
-    v = [r[STEPS.index(step)] for r in runs if r[STEPS.index(step)] is not None]
+    v = values_at(runs, step)
     return (statistics.median(v) if v else None), len(v)
 
 
-def final_scores(results):
-    """{(robot, method): median raw eq. 7.1 of the final best} from compare-raw.csv (scaling_results.py)."""
+def final_scores(results, ledger):
+    """{(robot, method): median raw eq. 7.1 of the final best} of LEDGER's runs, from compare-raw.csv
+    (scaling_results.py)."""
     path = os.path.join(results, "compare-raw.csv")
     if not os.path.exists(path):
         return {}
-    ledger = {(r["study"], r["config"], r["seed"], r["best_ever"])
-              for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv")))
-              if r["study"].startswith("compare-") and r["status"] == "done"}
+    runs = {(r["study"], r["config"], r["seed"], r["best_ever"]) for r in ledger}
     raw = {}
     for r in csv.DictReader(open(path)):
-        if (r["study"], r["config"], r["seed"], r["best_ever"]) in ledger:
+        if (r["study"], r["config"], r["seed"], r["best_ever"]) in runs:
             raw.setdefault((robot_of(r["study"]), method_of(r["config"])), []).append(float(r["raw_fitness"]))
     return {k: statistics.median(v) for k, v in raw.items()}
-
-
-def ordered(robots):
-    order = sc.CENTIPEDES + list(sc.R_ROBOTS)
-    return sorted(robots, key=lambda r: order.index(r) if r in order else len(order))
 
 
 def table(g, finals):
     head = " | ".join(f"{s} %" for s in TABLE_STEPS)
     out = [f"| robot | hinges | method | n | {head} | raw eq. 7.1 of the final best |",
            "|---|---|---|---|" + "---|" * len(TABLE_STEPS) + "---|"]
-    for robot in ordered(g):
+    for robot in sc.in_study_order(g):
         direct = g[robot].get("direct")
         for m in sc.METHODS:
             if m not in g[robot]:
@@ -170,7 +168,7 @@ def figure(g, path):
                     continue
                 xs, med, lo, hi = [], [], [], []
                 for s in STEPS:
-                    v = [r[STEPS.index(s)] for r in g[robot][m] if r[STEPS.index(s)] is not None]
+                    v = values_at(g[robot][m], s)
                     if len(v) * 2 < len(g[robot][m]):
                         continue   # fewer than half the runs had a point: no median worth drawing
                     q = statistics.quantiles(v, n=4, method="inclusive") if len(v) > 1 else [v[0]] * 3
@@ -199,7 +197,8 @@ def anytime(results, studies, figure_path, command):
         import matplotlib  # noqa: F401
     except ImportError as e:
         raise sc.Refusal(f"anytime needs matplotlib ({e}): run it with Debian's /usr/bin/python3")
-    g = by_method(anytime_rows(results, studies))
+    ledger = finished(compare_rows(results))
+    g = by_method(anytime_rows(results, studies, ledger))
     if not g:
         raise sc.Refusal(f"anytime: no finished compare run in {os.path.join(results, 'scaling-runs.csv')}")
     out = ["# How fast each method finds its walk (issue 38, docs/scaling.md)", "",
@@ -215,10 +214,7 @@ def anytime(results, studies, figure_path, command):
            "hands over, at 30 % of the budget or on stagnation (its run.log says which). R1's and R2's",
            "HyperGP-gait are issue 21's runs, which the comparison's table borrows by their scores alone:",
            "they have no row here.", ""]
-    out += table(g, final_scores(results))
-    tmp = os.path.join(results, "anytime.md.tmp")
-    with open(tmp, "w") as f:
-        f.write("\n".join(out) + "\n")
-    os.replace(tmp, os.path.join(results, "anytime.md"))
+    out += table(g, final_scores(results, ledger))
+    sc.write_atomically(os.path.join(results, "anytime.md"), "\n".join(out) + "\n")
     figure(g, figure_path)
     print(f"scaling-report.py: wrote {os.path.join(results, 'anytime.md')} and {figure_path}", file=sys.stderr)

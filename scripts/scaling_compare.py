@@ -31,6 +31,12 @@ R_ROBOTS = {"r1": 1, "r2": 2}   # Simulator.robot_type
 # R1's and R2's direct method when tune-direct-r1's winner has exactly their settings.
 ISSUE21_DIRECT = os.path.join(ROOT, "experiments", "baselines", "walk-15000-cmaes-gait.xml")
 CENTIPEDE_BUDGET, R_BUDGET = 2500, 15000
+ROBOTS = CENTIPEDES + list(R_ROBOTS)   # the study's robots, in the order its pages list them
+
+
+def in_study_order(robots):
+    """ROBOTS' order; a robot outside the study last."""
+    return sorted(robots, key=lambda r: ROBOTS.index(r) if r in ROBOTS else len(ROBOTS))
 ROBOT_KEYS = {"Simulator.robotFile", "Simulator.robot_type"}
 HYPERGP_GAIT = ["Neural.switchPatience=0", "Neural.switchShare=0", "Neural.directOffsets=0"]   # both hybrids off
 METHODS = ["direct", "hypergp-gait", "offset-hybrid", "switch-hybrid"]

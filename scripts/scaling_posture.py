@@ -32,7 +32,6 @@ from scaling_results import method_of, robot_of
 
 PROBE = os.path.join(sc.ROOT, "scripts", "posture-probe.py")
 VARIANTS = ["offsets 0", "smooth, 2 terms", "smooth, 4 terms", "by axis, 2 terms", "mirrored"]
-ORDER = sc.CENTIPEDES + ["r1", "r2"]
 
 
 def method_runs(results, studies, method):
@@ -116,7 +115,7 @@ def table(scores_by_robot):
     head = ("| robot | hinges | gaits | median eq. 7.1 | " + " | ".join(f"{v}: kept" for v in VARIANTS) + " |\n"
             + "|---|---|---|---|" + "---|" * len(VARIANTS) + "\n")
     lines = []
-    for robot in [r for r in ORDER if r in scores_by_robot]:
+    for robot in [r for r in sc.ROBOTS if r in scores_by_robot]:
         scores = list(scores_by_robot[robot].values())
         h = sc.hinges(robot)
         kept = []
@@ -131,7 +130,7 @@ def table(scores_by_robot):
 def offset_table(shares):
     lines = ["| robot | hinges | runs | median eq. 7.1 | median eq. 7.1, offsets 0 | offsets 0: kept |",
              "|---|---|---|---|---|---|"]
-    for robot in [r for r in ORDER if r in shares]:
+    for robot in [r for r in sc.ROBOTS if r in shares]:
         pairs = shares[robot]
         kept = [z / o for o, z in pairs if o > 0]
         lines.append(f"| {robot} | {sc.hinges(robot)} | {len(pairs)} | {statistics.median(o for o, _ in pairs):.2f} | "

@@ -74,10 +74,19 @@ def assess(cic, run_dirs, out_csv):
     return got
 
 
+def compare_rows(results):
+    """The ledger's compare rows, every status."""
+    return [r for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv")))
+            if r["study"].startswith("compare-")]
+
+
+def finished(rows):
+    return [r for r in rows if r["status"] == "done"]
+
+
 def raw_scores(results, studies, cic):
     """[(study, config, seed, raw)] of every finished compare run in the ledger, assessing the new ones."""
-    rows = [r for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv")))
-            if r["study"].startswith("compare-") and r["status"] == "done"]
+    rows = finished(compare_rows(results))
     cache_path = os.path.join(results, "compare-raw.csv")
     cache = read_cache(cache_path)
     todo = {}
@@ -102,8 +111,8 @@ def planned_methods(results):
     """{robot: {method}} of every compare run in the ledger, finished or not, but not superseded
     (left the sweep file): what each robot's compare sweep runs."""
     out = {}
-    for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv"))):
-        if r["study"].startswith("compare-") and r["status"] != "superseded":
+    for r in compare_rows(results):
+        if r["status"] != "superseded":
             out.setdefault(robot_of(r["study"]), set()).add(method_of(r["config"]))
     return out
 
@@ -131,9 +140,8 @@ def groups(scores, baselines, planned=None):
 
 def cells(g):
     """Every (robot, method) of a HyperGP method with a direct side to face: the table's cells."""
-    order = sc.CENTIPEDES + list(sc.R_ROBOTS)
     out = []
-    for robot in sorted(g, key=lambda r: order.index(r) if r in order else len(order)):
+    for robot in sc.in_study_order(g):
         for m in sc.METHODS[1:]:
             if m in g[robot] and "direct" in g[robot]:
                 out.append((robot, m))
@@ -169,7 +177,7 @@ def verdict(cell, g, robot):
 def table(g, sc_cells):
     out = ["| robot | hinges | method | n | median | IQR | p (Mann-Whitney) | p (Holm) | A12 [95 %] | "
            "median / direct [95 %] | verdict |", "|---|---|---|---|---|---|---|---|---|---|---|"]
-    for robot in sorted(g, key=lambda r: (sc.CENTIPEDES + list(sc.R_ROBOTS)).index(r)):
+    for robot in sc.in_study_order(g):
         h = sc.hinges(robot)
         for m in sc.METHODS:
             if m not in g[robot]:
@@ -207,10 +215,9 @@ def evaluation_counts(results):
     """Lines of the real evaluation counts per robot and method (finished compare runs): GP-based
     methods count every re-bred and re-evaluated individual, so they may pass the budget a little."""
     counts = {}
-    for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv"))):
-        if r["study"].startswith("compare-") and r["status"] == "done":
-            counts.setdefault((robot_of(r["study"]), method_of(r["config"])), []).append(int(r["evaluations"]))
-    order = sc.CENTIPEDES + list(sc.R_ROBOTS)
+    for r in finished(compare_rows(results)):
+        counts.setdefault((robot_of(r["study"]), method_of(r["config"])), []).append(int(r["evaluations"]))
+    order = sc.ROBOTS
     out = ["", "Evaluations per run (the real counts; median [least, most]):", "",
            "| robot | method | evaluations |", "|---|---|---|"]
     for (robot, m), v in sorted(counts.items(), key=lambda kv: (order.index(kv[0][0]) if kv[0][0] in order
@@ -279,9 +286,8 @@ def results(results_dir, studies, cic, figure_path, baselines):
            f"all {len(s)} cells of the table, A12 (the chance that the HyperGP method's run beats the direct one's)",
            "and the ratio of medians with bootstrap 95 % intervals."]
     # "so far" while any of the design's robots, a planned method or a listed run is not in yet
-    pending = any(r["study"].startswith("compare-") and r["status"] not in ("done", "superseded")
-                  for r in csv.DictReader(open(os.path.join(results_dir, "scaling-runs.csv"))))
-    any_waiting = (pending or any(r not in g for r in sc.CENTIPEDES + list(sc.R_ROBOTS)) or
+    pending = any(r["status"] not in ("done", "superseded") for r in compare_rows(results_dir))
+    any_waiting = (pending or any(r not in g for r in sc.ROBOTS) or
                    any(m not in g.get(robot, {}) for robot, ms in planned.items() for m in ms))
     for robot in sorted(g):
         waiting = sorted(m for m in planned.get(robot, set()) if m not in g[robot])
@@ -300,8 +306,6 @@ def results(results_dir, studies, cic, figure_path, baselines):
     if quiet:
         out += ["", "No difference shown after Holm: " + "; ".join(f"{r} ({n_text(g, r)})" for r in quiet) + "."]
     out += ["", crossover(g, s, any_waiting)]
-    with open(os.path.join(results_dir, "compare.md.tmp"), "w") as f:
-        f.write("\n".join(out) + "\n")
-    os.replace(os.path.join(results_dir, "compare.md.tmp"), os.path.join(results_dir, "compare.md"))
+    sc.write_atomically(os.path.join(results_dir, "compare.md"), "\n".join(out) + "\n")
     figure(g, s, figure_path)
     print(f"scaling-report.py: wrote {os.path.join(results_dir, 'compare.md')} and {figure_path}", file=sys.stderr)

@@ -39,17 +39,27 @@ def run(args):
     return subprocess.run(args, capture_output=True, text=True)
 
 
-def gait_run(name, seed, *sets):
-    """A tiny real gait run (16 evaluations, 2 s walks) and its raw eq. 7.1 as cic assess replays it."""
-    p = run([cic, "--quiet", "--settings", str(source / "settings" / "r1_gait.xml"), "--seed", seed,
-             "--set", "Gait.evaluations=16", "--set", "Gait.populationSize=8", "--set", "Simulator.sample_to=2",
-             "--set", "Simulator.delayed_start=0.5", "--set", "Experiment.workers=1", *sets,
-             "--output", str(work / "tiny" / name)])
-    check(p.returncode == 0, f"a tiny gait run: {p.stderr}")
-    folder = next((work / "tiny" / name).iterdir())
+def raw_of(folder):
+    """The raw eq. 7.1 of FOLDER's best as cic assess replays it."""
     p = run([cic, "--quiet", "assess", str(folder)])
     check(p.returncode == 0, f"cic assess {folder}: {p.stderr}")
-    return folder, float(next(csv.DictReader(p.stdout.splitlines()))["raw_fitness"])
+    return float(next(csv.DictReader(p.stdout.splitlines()))["raw_fitness"])
+
+
+def tiny_run(name, settings, seed, *sets):
+    """A tiny real run of SETTINGS (2 s walks, one worker) and its best's raw eq. 7.1."""
+    p = run([cic, "--quiet", "--settings", str(source / "settings" / settings), "--seed", seed,
+             "--set", "Simulator.sample_to=2", "--set", "Simulator.delayed_start=0.5",
+             "--set", "Experiment.workers=1", *sets, "--output", str(work / "tiny" / name)])
+    check(p.returncode == 0, f"a tiny {settings} run: {p.stderr}")
+    folder = next((work / "tiny" / name).iterdir())
+    return folder, raw_of(folder)
+
+
+def gait_run(name, seed, *sets):
+    """A tiny real gait run (16 evaluations)."""
+    return tiny_run(name, "r1_gait.xml", seed, "--set", "Gait.evaluations=16", "--set", "Gait.populationSize=8",
+                    *sets)
 
 
 centipede = ["--set", f"Simulator.robotFile={source / 'settings' / 'robots' / 'centipede-2.xml'}",
@@ -57,18 +67,9 @@ centipede = ["--set", f"Simulator.robotFile={source / 'settings' / 'robots' / 'c
 
 
 def offset_hybrid_run(name, seed):
-    """A tiny real Offset-HybrID run on the 12-hinge centipede (2 generations of 8), and the raw eq. 7.1 of
-    its final best as cic assess replays it."""
-    p = run([cic, "--quiet", "--settings", str(source / "settings" / "r1_offset_hybrid.xml"), "--seed", seed,
-             "--set", "GP.generatedPopulationSize=8", "--set", "GP.tournament_size=2",
-             "--set", "Control.maximumIterations=2", "--set", "Simulator.sample_to=2",
-             "--set", "Simulator.delayed_start=0.5", "--set", "Experiment.workers=1", *centipede,
-             "--output", str(work / "tiny" / name)])
-    check(p.returncode == 0, f"a tiny Offset-HybrID run: {p.stderr}")
-    folder = next((work / "tiny" / name).iterdir())
-    p = run([cic, "--quiet", "assess", str(folder)])
-    check(p.returncode == 0, f"cic assess {folder}: {p.stderr}")
-    return folder, float(next(csv.DictReader(p.stdout.splitlines()))["raw_fitness"])
+    """A tiny real Offset-HybrID run on the 12-hinge centipede (2 generations of 8)."""
+    return tiny_run(name, "r1_offset_hybrid.xml", seed, "--set", "GP.generatedPopulationSize=8",
+                    "--set", "GP.tournament_size=2", "--set", "Control.maximumIterations=2", *centipede)
 
 
 o1, raw_o1 = offset_hybrid_run("o1", "1")
@@ -79,9 +80,7 @@ shutil.copy(o1 / "settings.xml", zeroed / "settings.xml")
 (zeroed / "population.xml").write_text(re.sub(r"<offsets>([^<]*)</offsets>",
                                               lambda m: "<offsets>" + " ".join("0" for _ in m.group(1).split())
                                               + "</offsets>", (o1 / "population.xml").read_text()))
-p = run([cic, "--quiet", "assess", str(zeroed)])
-check(p.returncode == 0, f"cic assess {zeroed}: {p.stderr}")
-raw_o1_zeroed = float(next(csv.DictReader(p.stdout.splitlines()))["raw_fitness"])
+raw_o1_zeroed = raw_of(zeroed)
 check(raw_o1_zeroed != raw_o1, "the tiny Offset-HybrID run's offsets change nothing: the check below would be idle")
 c1, raw_c1 = gait_run("c1", "1", *centipede)
 c2, raw_c2 = gait_run("c2", "2", *centipede)
