@@ -16,6 +16,7 @@ import csv
 import pathlib
 import re
 import shutil
+import statistics
 import subprocess
 import sys
 
@@ -306,4 +307,56 @@ check(svg.read_bytes() == first, "the figure's bytes are the same from the same 
 (results / "compare-raw.csv").write_text(",".join(sr.CACHE_FIELDS) + "\n")
 p = run(args)
 check(p.returncode == 2 and "is gone" in p.stderr, f"an unscored vanished run is refused: {p.returncode} {p.stderr}")
+# ---- the second goal: each hybrid on R1 and R2 against issue 21's IPOP-CMA-ES, a Holm family of its own ----
+check(sr.ipop_runs(str(base_csv)) == {"r1": [5.0, 5.0]}, f"issue 21's IPOP runs: {sr.ipop_runs(str(base_csv))}")
+ipop = {"r1": direct, "r2": direct}
+# R1's best direct method is far ahead of IPOP: the section must face IPOP, not it.
+goal = {"r1": {"direct": [v + 100 for v in direct], "offset-hybrid": [v - 20 for v in direct],
+               "switch-hybrid": [v + 20 for v in direct]},
+        "r2": {"direct": direct, "offset-hybrid": [v + 0.5 for v in direct], "switch-hybrid": [v - 20 for v in direct]}}
+lines = sr.against_ipop(goal, ipop, False)
+text = "\n".join(lines)
+want = sr.score({r: dict({m: goal[r][m] for m in sr.HYBRIDS}, direct=direct) for r in ("r1", "r2")})
+check(len(want) == 4 and "Holm over these 4 cells only" in text, "Holm over the section's 4 cells\n" + text)
+check(f"| r1 | 12 | IPOP-CMA-ES (issue 21) | 10 | {statistics.median(direct):.2f} |" in text,
+      "the reference row is issue 21's IPOP runs\n" + text)
+check(f"{want[('r1', 'switch-hybrid')]['holm']:.3g} | 1.00 [1.00, 1.00] |" in text and
+      "| better than IPOP-CMA-ES (issue 21) |" in text, "R1's Switch-HybrID beats IPOP (not R1's best direct)\n" + text)
+check(lines[-1].startswith("A hybrid beats IPOP-CMA-ES after Holm on R1 only. Cell by cell: R1 Offset-HybrID: "
+                           f"worse than IPOP-CMA-ES (issue 21) ({want[('r1', 'offset-hybrid')]['ratio']:.2f} of its "
+                           "median); R1 Switch-HybrID: better than"),
+      "the goal's line, R1 only, cell by cell\n" + lines[-1])
+check("R2 Offset-HybrID: no difference shown at n = 10 (1.03 of its median)" in lines[-1], lines[-1])
+goal["r2"]["switch-hybrid"] = [v + 20 for v in direct]
+check(sr.against_ipop(goal, ipop, True)[-1].startswith("So far, a hybrid beats IPOP-CMA-ES on R1 and R2 after Holm."),
+      "both robots won, so far\n" + sr.against_ipop(goal, ipop, True)[-1])
+lost = {"r1": {"direct": direct, "offset-hybrid": [v - 20 for v in direct]}}
+check(sr.against_ipop(lost, ipop, False)[-1].startswith("No hybrid beats IPOP-CMA-ES on R1 or R2 after Holm."),
+      "none won\n" + sr.against_ipop(lost, ipop, False)[-1])
+check(sr.against_ipop(g, ipop, False) == [] and sr.against_ipop(lost, {}, False) == [],
+      "no section without a hybrid on R1/R2 or without issue 21's runs")
+# End to end: `results` reads issue 21's runs from --baselines and says "so far" while R2 has no runs.
+r1 = work / "results-r1"
+rows, cache = [], []
+for method, values in (("direct", [v + 100 for v in direct]), ("switch-hybrid", [v + 20 for v in direct])):
+    config = method + ".y"
+    for seed, v in enumerate(values, 1):
+        rows.append({"study": "compare-r1", "config": config, "seed": seed, "status": "done", "best_ever": v,
+                     "evaluations": 15000, "wall_seconds": 1, "run_dir": f"runs/{config}/s{seed}", "commit": "x"})
+        cache.append({"study": "compare-r1", "config": config, "seed": seed, "best_ever": v, "run_dir": "unused",
+                      "raw_fitness": v})
+write_ledger(r1, tuning_rows() + rows)
+with open(r1 / "compare-raw.csv", "w", newline="") as f:
+    w = csv.DictWriter(f, sr.CACHE_FIELDS, lineterminator="\n")
+    w.writeheader()
+    w.writerows(cache)
+ipop_csv = work / "walk-runs-ipop.csv"
+ipop_csv.write_text(base_csv.read_text().splitlines()[0] + "\n" + "".join(
+    f"walk-15000-cmaes-gait,R1,{k},{v}\n" for k, v in enumerate(direct, 1)))
+p = run(REPORT + ["results", "--results", str(r1), "--studies", str(studies), "--cic", cic,
+                  "--figure", str(work / "img" / "r1.svg"), "--baselines", str(ipop_csv)])
+md = (r1 / "compare.md").read_text()
+check(p.returncode == 0 and "## The second goal: a hybrid against IPOP-CMA-ES on R1 and R2" in md and
+      "So far, a hybrid beats IPOP-CMA-ES after Holm on R1 only." in md and
+      "| r1 | 12 | Switch-HybrID | 10 |" in md, f"results' second-goal section: {p.stderr}\n" + md)
 print("scaling_compare_test: ok")
