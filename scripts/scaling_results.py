@@ -252,7 +252,7 @@ def against_ipop(g, ipop, waiting):
         head = f"{lead} hybrid beats IPOP-CMA-ES after Holm on {won[0].upper()} only."
     else:
         head = f"{'So far, no' if waiting else 'No'} hybrid beats IPOP-CMA-ES on R1 or R2 after Holm."
-    each = "; ".join(f"{r.upper()} {LABELS[m]}: {verdict(c, h, r, IPOP_LABEL)} ({c['ratio']:.2f} of its median)"
+    each = "; ".join(f"{r.upper()} {LABELS[m]}: {verdict(c, h, r, IPOP_LABEL)} ({c['ratio']:.2f} of IPOP's median)"
                      for (r, m), c in s.items())
     return out + ["", f"{head} Cell by cell: {each}."]
 

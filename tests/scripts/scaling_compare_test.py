@@ -323,10 +323,10 @@ check(f"| r1 | 12 | IPOP-CMA-ES (issue 21) | 10 | {statistics.median(direct):.2f
 check(f"{want[('r1', 'switch-hybrid')]['holm']:.3g} | 1.00 [1.00, 1.00] |" in text and
       "| better than IPOP-CMA-ES (issue 21) |" in text, "R1's Switch-HybrID beats IPOP (not R1's best direct)\n" + text)
 check(lines[-1].startswith("A hybrid beats IPOP-CMA-ES after Holm on R1 only. Cell by cell: R1 Offset-HybrID: "
-                           f"worse than IPOP-CMA-ES (issue 21) ({want[('r1', 'offset-hybrid')]['ratio']:.2f} of its "
+                           f"worse than IPOP-CMA-ES (issue 21) ({want[('r1', 'offset-hybrid')]['ratio']:.2f} of IPOP's "
                            "median); R1 Switch-HybrID: better than"),
       "the goal's line, R1 only, cell by cell\n" + lines[-1])
-check("R2 Offset-HybrID: no difference shown at n = 10 (1.03 of its median)" in lines[-1], lines[-1])
+check("R2 Offset-HybrID: no difference shown at n = 10 (1.03 of IPOP's median)" in lines[-1], lines[-1])
 goal["r2"]["switch-hybrid"] = [v + 20 for v in direct]
 check(sr.against_ipop(goal, ipop, True)[-1].startswith("So far, a hybrid beats IPOP-CMA-ES on R1 and R2 after Holm."),
       "both robots won, so far\n" + sr.against_ipop(goal, ipop, True)[-1])
