@@ -46,9 +46,16 @@
       had found by 5 %, 10 %, ..., 100 % of the budget (their stats.csv, cached
       in RESULTS/compare-anytime.csv), against the best direct method's
       (scaling_anytime.py; matplotlib)
+  scaling-report.py status --results DIR [--sweeps DIR] [--jobs N]
+      print what is left of the comparison, read from the compare sweeps in SWEEPS
+      (default experiments/scaling) and the ledger alone (safe beside a running
+      study): per sweep its runs, those done and those to go, the core-hours left
+      at the seconds per evaluation its finished runs took (else RESULTS/estimate.md's
+      figure), and the wall time at N runs at a time (default 2) (scaling_status.py)
 Standard library only, but for results and anytime (and numpy for posture)."""
 import csv
 import os
+import re
 import shlex
 import statistics
 import sys
@@ -196,14 +203,15 @@ def main(argv):
         estimate(argv[3])
     elif len(argv) == 4 and argv[1] == "summary" and argv[2] == "--results":
         summary(argv[3])
-    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results", "strips", "posture", "anytime"):
+    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results", "strips", "posture", "anytime", "status"):
         flags = {"compare-sweeps": {"--provisional"}, "results": set(), "strips": {"--no-strips"},
-                 "posture": set(), "anytime": set()}[argv[1]]
+                 "posture": set(), "anytime": set(), "status": set()}[argv[1]]
         known = {"compare-sweeps": {"--results", "--out", "--tuning", "--cic"},
                  "results": {"--results", "--studies", "--cic", "--figure", "--baselines"},
                  "strips": {"--results", "--studies", "--cic", "--out-images", "--robots", "--at"},
                  "posture": {"--results", "--studies", "--cic"},
-                 "anytime": {"--results", "--studies", "--figure"}}[argv[1]]
+                 "anytime": {"--results", "--studies", "--figure"},
+                 "status": {"--results", "--sweeps", "--jobs"}}[argv[1]]
         args, i = {}, 2
         while i < len(argv):
             if argv[i] in flags:
@@ -217,7 +225,7 @@ def main(argv):
                       f"{', '.join(sorted(known | flags))})")
         need = {"compare-sweeps": ("--results", "--out"), "results": ("--results", "--studies", "--cic"),
                 "strips": ("--results", "--studies", "--cic"), "posture": ("--results", "--studies", "--cic"),
-                "anytime": ("--results", "--studies")}[argv[1]]
+                "anytime": ("--results", "--studies"), "status": ("--results",)}[argv[1]]
         for n in need:
             if n not in args:
                 usage(f"scaling-report.py {argv[1]}: {n} is required")
@@ -228,6 +236,13 @@ def main(argv):
                                            args.get("--cic", os.path.join(sc.ROOT, "build", "cic")),
                                            args.get("--provisional", False)):
                     print(p)
+            elif argv[1] == "status":
+                import scaling_status
+                jobs = args.get("--jobs", "2")
+                if not re.fullmatch(r"[1-9][0-9]*", jobs):
+                    usage(f"scaling-report.py status: --jobs takes a positive whole number, got '{jobs}'")
+                print("\n".join(scaling_status.status(
+                    args["--results"], args.get("--sweeps", os.path.join(sc.ROOT, "experiments", "scaling")), int(jobs))))
             elif argv[1] == "anytime":
                 import scaling_anytime
                 scaling_anytime.anytime(args["--results"], args["--studies"],

@@ -24,6 +24,10 @@
 #                strips.md and docs/img/scaling-*); Debian's python3 (scipy,
 #                numpy, matplotlib) unless PYTHON says otherwise, and the strips
 #                need the viewer build; every page is tried, a failed one named
+#   status       run nothing: what is left of the comparison, from its sweeps
+#                and the committed ledger (safe beside a running study): per
+#                study the runs done and to go, core-hours left at the measured
+#                seconds per evaluation, wall time at --jobs (scaling-report.py status)
 #   estimate     run nothing but timing: CPU seconds per evaluation of every
 #                robot of the study (cic simulate), and results/estimate.md, the whole
 #                study's run time with comparison seeds cut on the middle sizes
@@ -52,17 +56,19 @@ while [ $# -gt 0 ]; do
     --only) only="$2"; shift 2
             [[ "$only" =~ ^(c8|r1)$ ]] || { echo "scaling.sh: --only takes c8 or r1, got '$only'" >&2; exit 2; } ;;
     -h|--help) sed -n '2,/^set /p' "$0" | grep '^#' | sed 's/^# \{0,1\}//'; exit 0 ;;
-    tune-direct|tune-hybrid|compare|ledger|report|estimate) stages+=("$1"); shift ;;
+    tune-direct|tune-hybrid|compare|ledger|report|status|estimate) stages+=("$1"); shift ;;
     *) echo "scaling.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-[ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, tune-hybrid, compare, ledger, report, estimate (see --help)" >&2; exit 2; }
+[ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, tune-hybrid, compare, ledger, report, status, estimate (see --help)" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scaling.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
 # --commit's pool waits for whichever run ends first: `wait -n -p`, bash 5.1 on.
 if [ "$commit" = 1 ] && ! (( BASH_VERSINFO[0] > 5 || (BASH_VERSINFO[0] == 5 && BASH_VERSINFO[1] >= 1) )); then
   echo "scaling.sh: --commit needs bash 5.1 or later (wait -n -p); this is bash $BASH_VERSION" >&2; exit 2
 fi
-[ -x "$CIC" ] || { echo "scaling.sh: no cic binary at $CIC (build first, or set CIC)" >&2; exit 2; }
+if [ "${stages[*]}" != status ]; then   # status reads files only
+  [ -x "$CIC" ] || { echo "scaling.sh: no cic binary at $CIC (build first, or set CIC)" >&2; exit 2; }
+fi
 mkdir -p "$HERE/results"
 
 tune_studies=(tune-direct-c8 tune-direct-r1)   # the centipede first: the new question
@@ -201,6 +207,8 @@ main() {
           "$rpy" "$ROOT/scripts/scaling-report.py" "$page" "${args[@]}" || failed+=("$page")
         done
         [ ${#failed[@]} = 0 ] || { echo "scaling.sh: report: ${failed[*]} failed (see above)" >&2; exit 1; } ;;
+      status)
+        "$PY" "$ROOT/scripts/scaling-report.py" status --results "$HERE/results" --sweeps "$HERE" --jobs "$jobs" ;;
       estimate)
         robots=(R1 R2 centipede-2 centipede-4 centipede-8 centipede-16
                 centipede-2-irregular centipede-4-irregular centipede-8-irregular centipede-16-irregular)

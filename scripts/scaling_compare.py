@@ -101,6 +101,8 @@ def read_sweep(path):
             sweep["variants"][c.get("name")] = [s.text.strip() for s in c if s.tag == "set"]
         elif c.tag == "repeats":
             sweep["runs"] = len(sweep["variants"]) * int(c.get("count"))
+            first = int(c.get("firstSeed", "1"))
+            sweep["seeds"] = list(range(first, first + int(c.get("count"))))
     if "base" not in sweep or "runs" not in sweep or not sweep["variants"]:
         raise Refusal(f"{path}: a tuning sweep needs <base>, <variant>s and <repeats>")
     return sweep

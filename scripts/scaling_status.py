@@ -1,0 +1,75 @@
+"""What is left of issue 38's comparison (scaling-report.py status), read from the sweep files and
+the ledger alone.
+
+Per compare sweep (SWEEPS/compare-*.xml): its runs (variants times seeds), those the ledger has
+done, and the rest to go (a run under way or interrupted counts whole, so the figure is an upper
+bound). A run to go costs its budget times the seconds per evaluation measured on the study's
+own finished runs: the median wall_seconds / evaluations of the same method, else of the robot's
+finished runs, else results/estimate.md's CPU figure for the robot (which the finished runs
+matched within about 10 %: docs/scaling.md, "Run-time estimate"). Nothing is written and no
+run folder is read, so it is safe beside a running study."""
+import os
+import re
+import statistics
+
+import scaling_compare as sc
+from scaling_results import compare_rows, method_of, robot_of
+
+
+def estimate_figures(results):
+    """{robot: CPU seconds per evaluation} from RESULTS/estimate.md's first table (robot names lower-cased)."""
+    path = os.path.join(results, "estimate.md")
+    if not os.path.exists(path):
+        return {}
+    out = {}
+    for line in open(path):
+        m = re.match(r"\| (\S+) \| ([0-9.]+) \|$", line.strip())
+        if m:
+            out[m.group(1).lower()] = float(m.group(2))
+    return out
+
+
+def per_evaluation(done):
+    return statistics.median(float(r["wall_seconds"]) / int(r["evaluations"]) for r in done)
+
+
+def status(results, sweeps, jobs):
+    """The table's lines: per compare sweep what is done, what is to go and its core-hours; the total."""
+    ledger = os.path.join(results, "scaling-runs.csv")
+    if not os.path.exists(ledger):
+        raise sc.Refusal(f"status: no ledger at {ledger}")
+    robots = [r for r in sc.ROBOTS if os.path.exists(os.path.join(sweeps, f"compare-{r}.xml"))]
+    if not robots:
+        raise sc.Refusal(f"status: no compare sweep in {sweeps} (scaling-report.py compare-sweeps writes them)")
+    done_rows = {(r["study"], r["config"], r["seed"]): r for r in compare_rows(results) if r["status"] == "done"}
+    figures = estimate_figures(results)
+    out = ["| study | runs | done | to go | s per evaluation | core-hours left |", "|---|---|---|---|---|---|"]
+    totals = [0, 0, 0, 0.0]
+    for robot in robots:
+        sweep = sc.read_sweep(os.path.join(sweeps, f"compare-{robot}.xml"))
+        planned = [(sweep["name"], v, str(seed)) for v in sweep["variants"] for seed in sweep["seeds"]]
+        done = [done_rows[k] for k in planned if k in done_rows]
+        left = [k for k in planned if k not in done_rows]
+        budget = sc.R_BUDGET if robot in sc.R_ROBOTS else sc.CENTIPEDE_BUDGET
+        hours = 0.0
+        for _, config, _ in left:
+            same = [d for d in done if method_of(d["config"]) == method_of(config)]
+            if same or done:
+                sec = per_evaluation(same or done)
+            elif robot in figures:
+                sec = figures[robot]
+            else:
+                raise sc.Refusal(f"status: compare-{robot} has runs to go, no finished run to time them by and "
+                                 f"no figure for {robot} in {os.path.join(results, 'estimate.md')} "
+                                 "(scripts/scaling.sh estimate writes it)")
+            hours += budget * sec / 3600
+        if done:
+            spe = f"{per_evaluation(done):.3f}"
+        else:
+            spe = f"{figures[robot]:.3f} (estimate.md)" if robot in figures else ""
+        out.append(f"| compare-{robot} | {len(planned)} | {len(done)} | {len(left)} | {spe} | {hours:.1f} |")
+        totals = [totals[0] + len(planned), totals[1] + len(done), totals[2] + len(left), totals[3] + hours]
+    out.append(f"| **total** | {totals[0]} | {totals[1]} | {totals[2]} | | **{totals[3]:.1f}** |")
+    out += ["", f"About {totals[3] / jobs:.1f} hours of wall time at {jobs} run{'s' if jobs > 1 else ''} at a time "
+            "(runs under way or interrupted count whole: an upper bound)."]
+    return out

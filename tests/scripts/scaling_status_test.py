@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""Scripts.ScalingStatus: scripts/scaling-report.py status counts each compare sweep's runs
+(variants times seeds) against the ledger's finished ones, ignores ledger rows of variants
+the sweep no longer runs, times the runs to go by the same method's finished runs, else the
+robot's, else results/estimate.md, and refuses bad input with exit 2.
+
+    scaling_status_test.py SOURCE_DIR WORK_DIR
+"""
+import csv
+import pathlib
+import shutil
+import subprocess
+import sys
+
+source, work = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
+shutil.rmtree(work, ignore_errors=True)
+results, sweeps = work / "results", work / "sweeps"
+results.mkdir(parents=True)
+sweeps.mkdir()
+REPORT = [sys.executable, str(source / "scripts" / "scaling-report.py"), "status"]
+
+
+def check(condition, message):
+    if not condition:
+        print(f"scaling_status_test: {message}", file=sys.stderr)
+        sys.exit(1)
+
+
+def sweep(robot, variants):
+    (sweeps / f"compare-{robot}.xml").write_text(
+        f'<sweep name="compare-{robot}"><base>x.xml</base>'
+        + "".join(f'<variant name="{v}"><set>GP.seed=1</set></variant>' for v in variants)
+        + '<repeats count="3" firstSeed="1" seeds="same"/></sweep>\n')
+
+
+FIELDS = ["study", "config", "seed", "status", "best_ever", "evaluations", "wall_seconds", "run_dir", "commit"]
+
+
+def ledger(rows):
+    with open(results / "scaling-runs.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, FIELDS, lineterminator="\n")
+        w.writeheader()
+        for study, config, seed, status, wall in rows:
+            w.writerow({"study": study, "config": config, "seed": seed, "status": status, "best_ever": 1,
+                        "evaluations": 2500, "wall_seconds": wall, "run_dir": "x", "commit": "x"})
+
+
+def run(*extra):
+    return subprocess.run(REPORT + ["--results", str(results), "--sweeps", str(sweeps), *extra],
+                          capture_output=True, text=True)
+
+
+sweep("centipede-2", ["direct.a", "hypergp-gait"])
+sweep("r1", ["offset-hybrid.b", "switch-hybrid.c"])
+(results / "estimate.md").write_text("| robot | s per evaluation |\n|---|---|\n| R1 | 0.036 |\n| centipede-2 | 9.000 |\n")
+ledger([("compare-centipede-2", "direct.a", 1, "done", 250),          # 0.1 s per evaluation
+        ("compare-centipede-2", "direct.a", 2, "done", 500),          # 0.2
+        ("compare-centipede-2", "hypergp-gait", 1, "done", 1000),     # 0.4
+        ("compare-centipede-2", "hypergp-gait", 2, "running", ""),
+        ("compare-centipede-2", "switch-hybrid.old", 1, "superseded", 5),
+        ("compare-centipede-2", "direct.gone", 1, "done", 5),         # a variant the sweep no longer runs
+        ("tune-direct-c8", "direct.a", 1, "done", 5)])
+p = run("--jobs", "2")
+check(p.returncode == 0, f"status: {p.stderr}")
+lines = p.stdout.splitlines()
+# centipede-2: direct seed 3 at its own 0.15, HyperGP-gait seeds 2 and 3 at its own 0.4:
+# 2500 * (0.15 + 0.8) / 3600 = 0.66 core-hours; the robot's median of 0.1, 0.2, 0.4 is 0.200.
+check("| compare-centipede-2 | 6 | 3 | 3 | 0.200 | 0.7 |" in lines, "timed by the same method first\n" + p.stdout)
+# R1: nothing finished, estimate.md's 0.036 at 15,000 evaluations, 6 runs: 0.9 core-hours.
+check("| compare-r1 | 6 | 0 | 6 | 0.036 (estimate.md) | 0.9 |" in lines, "estimate.md when nothing finished\n" + p.stdout)
+check("| **total** | 12 | 3 | 9 | | **1.6** |" in lines, "the total\n" + p.stdout)
+check(lines[-1].startswith("About 0.8 hours of wall time at 2 runs at a time"), "wall time at --jobs 2\n" + p.stdout)
+check(run("--jobs", "1").stdout.splitlines()[-1].startswith("About 1.6 hours of wall time at 1 run at a time"),
+      "wall time at --jobs 1")
+check(not any(results.glob("*.tmp*")) and sorted(x.name for x in results.iterdir()) == ["estimate.md",
+                                                                                        "scaling-runs.csv"],
+      "status writes nothing")
+
+# ---- refusals: exit 2, one line, the reason named ----
+for extra, want in ((["--jobs", "0"], "--jobs takes a positive whole number, got '0'"),
+                    (["--bogus", "1"], "unknown or incomplete option '--bogus'")):
+    p = run(*extra)
+    check(p.returncode == 2 and want in p.stderr and p.stdout == "", f"{extra}: {p.returncode} {p.stderr}")
+(results / "estimate.md").write_text("| robot | s per evaluation |\n|---|---|\n| centipede-2 | 9.000 |\n")
+p = run()
+check(p.returncode == 2 and "compare-r1 has runs to go" in p.stderr and "scripts/scaling.sh estimate" in p.stderr,
+      f"no way to time R1: {p.returncode} {p.stderr}")
+(results / "scaling-runs.csv").unlink()
+p = run()
+check(p.returncode == 2 and "no ledger at" in p.stderr, f"no ledger: {p.returncode} {p.stderr}")
+p = subprocess.run(REPORT + ["--results", str(source / "experiments" / "scaling" / "results"),
+                             "--sweeps", str(work / "none")], capture_output=True, text=True)
+check(p.returncode == 2 and "no compare sweep in" in p.stderr, f"no sweeps: {p.returncode} {p.stderr}")
+# scripts/scaling.sh status: the shipped sweeps and ledger, and no cic binary needed.
+p = subprocess.run(["bash", str(source / "scripts" / "scaling.sh"), "status", "--jobs", "2"], capture_output=True,
+                   text=True, env={"PATH": "/usr/bin:/bin", "CIC": str(work / "no-cic"), "PYTHON": sys.executable})
+check(p.returncode == 0 and "| compare-centipede-16 | 40 |" in p.stdout and "| **total** | " in p.stdout and
+      "hours of wall time at 2 runs at a time" in p.stdout, f"scaling.sh status: {p.returncode} {p.stderr}\n{p.stdout}")
+print("scaling_status_test: ok")
