@@ -273,14 +273,26 @@ def evaluation_counts(results):
     return out if counts else []
 
 
-def figure(g, sc_cells, path):
+def complete_robots(rows):
+    """The robots all of whose compare runs (superseded ones aside) are done: the figure's. An unfinished
+    robot's interval would stand for the few runs in so far, or for none (a point without a bar)."""
+    out = {}
+    for r in rows:
+        if r["status"] != "superseded":
+            robot = robot_of(r["study"])
+            out[robot] = out.get(robot, True) and r["status"] == "done"
+    return {robot for robot, done in out.items() if done}
+
+
+def figure(g, sc_cells, path, shown):
+    """Each HyperGP method's ratio of medians against hinge count, for the robots in SHOWN."""
     import matplotlib
     matplotlib.use("Agg")
     matplotlib.rcParams["svg.hashsalt"] = "issue-38"   # fixed ids: the same runs, the same bytes
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, 2, figsize=(9, 3.8), sharey=True)
     for ax, irregular in zip(axes, (False, True)):
-        robots = [r for r in sc.CENTIPEDES if r.endswith("-irregular") == irregular and r in g]
+        robots = [r for r in sc.CENTIPEDES if r.endswith("-irregular") == irregular and r in g and r in shown]
         for k, m in enumerate(sc.METHODS[1:]):
             pts = [(sc.hinges(r), sc_cells[(r, m)]) for r in robots if (r, m) in sc_cells]
             if not pts:
@@ -332,7 +344,8 @@ def results(results_dir, studies, cic, figure_path, baselines):
            f"all {len(s)} cells of the table, A12 (the chance that the HyperGP method's run beats the direct one's)",
            "and the ratio of medians with bootstrap 95 % intervals."]
     # "so far" while any of the design's robots, a planned method or a listed run is not in yet
-    pending = any(r["status"] not in ("done", "superseded") for r in compare_rows(results_dir))
+    rows = compare_rows(results_dir)
+    pending = any(r["status"] not in ("done", "superseded") for r in rows)
     any_waiting = (pending or any(r not in g for r in sc.ROBOTS) or
                    any(m not in g.get(robot, {}) for robot, ms in planned.items() for m in ms))
     for robot in sorted(g):
@@ -352,10 +365,15 @@ def results(results_dir, studies, cic, figure_path, baselines):
     if quiet:
         out += ["", "No difference shown after Holm: " + "; ".join(f"{r} ({n_text(g, r)})" for r in quiet) + "."]
     out += ["", crossover(g, s, any_waiting)]
+    shown = complete_robots(rows)
+    left_out = [r for r in sc.in_study_order(g) if r in sc.CENTIPEDES and r not in shown]
+    if left_out:
+        out += ["", f"The figure leaves out {', '.join(left_out)}: not all of {'its' if len(left_out) == 1 else 'their'} "
+                "runs are in."]
     r_waiting = (any(r["status"] not in ("done", "superseded") and robot_of(r["study"]) in sc.R_ROBOTS
-                     for r in compare_rows(results_dir)) or any(r not in g for r in sc.R_ROBOTS) or
+                     for r in rows) or any(r not in g for r in sc.R_ROBOTS) or
                  any(m not in g.get(robot, {}) for robot in sc.R_ROBOTS for m in HYBRIDS))
     out += against_ipop(g, ipop_runs(baselines), r_waiting)
     sc.write_atomically(os.path.join(results_dir, "compare.md"), "\n".join(out) + "\n")
-    figure(g, s, figure_path)
+    figure(g, s, figure_path, shown)
     print(f"scaling-report.py: wrote {os.path.join(results_dir, 'compare.md')} and {figure_path}", file=sys.stderr)
