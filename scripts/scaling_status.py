@@ -4,16 +4,22 @@ the ledger alone.
 Per compare sweep (SWEEPS/compare-*.xml): its runs (variants times seeds), those the ledger has
 done, and the rest to go (a run under way or interrupted counts whole, so the figure is an upper
 bound). A run to go costs its budget times the seconds per evaluation measured on the study's
-own finished runs: the median wall_seconds / evaluations of the same method, else of the robot's
-finished runs, else results/estimate.md's CPU figure for the robot (which the finished runs
-matched within about 10 %: docs/scaling.md, "Run-time estimate"). Nothing is written and no
+own finished runs: the median wall_seconds / evaluations of the same method, else of the tuning
+runs of the same configuration on the same robot (centipede-8 and R1 were tuned at the
+comparison's budgets), else of the robot's finished runs, else results/estimate.md's CPU figure
+for the robot (which the finished runs matched within about 10 %: docs/scaling.md, "Run-time
+estimate"). Nothing is written and no
 run folder is read, so it is safe beside a running study."""
 import os
 import re
 import statistics
 
+import csv
+
 import scaling_compare as sc
-from scaling_results import compare_rows, method_of, robot_of
+from scaling_results import method_of, robot_of
+
+TUNED_ON = {"centipede-8": "c8", "r1": "r1"}   # the tuning studies' robots (tune-*-c8.xml, tune-*-r1.xml)
 
 
 def estimate_figures(results):
@@ -41,7 +47,8 @@ def status(results, sweeps, jobs):
     robots = [r for r in sc.ROBOTS if os.path.exists(os.path.join(sweeps, f"compare-{r}.xml"))]
     if not robots:
         raise sc.Refusal(f"status: no compare sweep in {sweeps} (scaling-report.py compare-sweeps writes them)")
-    done_rows = {(r["study"], r["config"], r["seed"]): r for r in compare_rows(results) if r["status"] == "done"}
+    finished = [r for r in csv.DictReader(open(ledger)) if r["status"] == "done"]
+    done_rows = {(r["study"], r["config"], r["seed"]): r for r in finished if r["study"].startswith("compare-")}
     figures = estimate_figures(results)
     out = ["| study | runs | done | to go | s per evaluation | core-hours left |", "|---|---|---|---|---|---|"]
     totals = [0, 0, 0, 0.0]
@@ -54,8 +61,11 @@ def status(results, sweeps, jobs):
         hours = 0.0
         for _, config, _ in left:
             same = [d for d in done if method_of(d["config"]) == method_of(config)]
-            if same or done:
-                sec = per_evaluation(same or done)
+            tuned = [r for r in finished if robot in TUNED_ON and "." in config and
+                     r["study"] in (f"tune-direct-{TUNED_ON[robot]}", f"tune-hybrid-{TUNED_ON[robot]}") and
+                     r["config"] == config.split(".", 1)[1]]
+            if same or tuned or done:
+                sec = per_evaluation(same or tuned or done)
             elif robot in figures:
                 sec = figures[robot]
             else:

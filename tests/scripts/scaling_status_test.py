@@ -51,7 +51,7 @@ def run(*extra):
 
 
 sweep("centipede-2", ["direct.a", "hypergp-gait"])
-sweep("r1", ["offset-hybrid.b", "switch-hybrid.c"])
+sweep("r1", ["direct.sepcmaes-s0.15", "offset-hybrid.b", "switch-hybrid.c"])
 (results / "estimate.md").write_text("| robot | s per evaluation |\n|---|---|\n| R1 | 0.036 |\n| centipede-2 | 9.000 |\n")
 ledger([("compare-centipede-2", "direct.a", 1, "done", 250),          # 0.1 s per evaluation
         ("compare-centipede-2", "direct.a", 2, "done", 500),          # 0.2
@@ -59,18 +59,22 @@ ledger([("compare-centipede-2", "direct.a", 1, "done", 250),          # 0.1 s pe
         ("compare-centipede-2", "hypergp-gait", 2, "running", ""),
         ("compare-centipede-2", "switch-hybrid.old", 1, "superseded", 5),
         ("compare-centipede-2", "direct.gone", 1, "done", 5),         # a variant the sweep no longer runs
-        ("tune-direct-c8", "direct.a", 1, "done", 5)])
+        ("tune-direct-c8", "direct.a", 1, "done", 5),                 # centipede-2 was not tuned
+        ("tune-direct-r1", "sepcmaes-s0.15", 101, "done", 125),       # R1's direct configuration: 0.05
+        ("tune-direct-r1", "cmaes-s0.15", 101, "done", 500)])
 p = run("--jobs", "2")
 check(p.returncode == 0, f"status: {p.stderr}")
 lines = p.stdout.splitlines()
 # centipede-2: direct seed 3 at its own 0.15, HyperGP-gait seeds 2 and 3 at its own 0.4:
 # 2500 * (0.15 + 0.8) / 3600 = 0.66 core-hours; the robot's median of 0.1, 0.2, 0.4 is 0.200.
 check("| compare-centipede-2 | 6 | 3 | 3 | 0.200 | 0.7 |" in lines, "timed by the same method first\n" + p.stdout)
-# R1: nothing finished, estimate.md's 0.036 at 15,000 evaluations, 6 runs: 0.9 core-hours.
-check("| compare-r1 | 6 | 0 | 6 | 0.036 (estimate.md) | 0.9 |" in lines, "estimate.md when nothing finished\n" + p.stdout)
-check("| **total** | 12 | 3 | 9 | | **1.6** |" in lines, "the total\n" + p.stdout)
-check(lines[-1].startswith("About 0.8 hours of wall time at 2 runs at a time"), "wall time at --jobs 2\n" + p.stdout)
-check(run("--jobs", "1").stdout.splitlines()[-1].startswith("About 1.6 hours of wall time at 1 run at a time"),
+# R1: nothing finished; the direct runs at their tuning runs' 0.05, the hybrids at estimate.md's 0.036,
+# 15,000 evaluations: 3 * 15000 * 0.05 / 3600 + 6 * 15000 * 0.036 / 3600 = 1.525 core-hours.
+check("| compare-r1 | 9 | 0 | 9 | 0.036 (estimate.md) | 1.5 |" in lines,
+      "the tuning runs of the same configuration, else estimate.md\n" + p.stdout)
+check("| **total** | 15 | 3 | 12 | | **2.2** |" in lines, "the total\n" + p.stdout)
+check(lines[-1].startswith("About 1.1 hours of wall time at 2 runs at a time"), "wall time at --jobs 2\n" + p.stdout)
+check(run("--jobs", "1").stdout.splitlines()[-1].startswith("About 2.2 hours of wall time at 1 run at a time"),
       "wall time at --jobs 1")
 check(not any(results.glob("*.tmp*")) and sorted(x.name for x in results.iterdir()) == ["estimate.md",
                                                                                         "scaling-runs.csv"],
