@@ -10,11 +10,10 @@ comparison's budgets), else of the robot's finished runs, else results/estimate.
 for the robot (which the finished runs matched within about 10 %: docs/scaling.md, "Run-time
 estimate"). Nothing is written and no
 run folder is read, so it is safe beside a running study."""
+import csv
 import os
 import re
 import statistics
-
-import csv
 
 import scaling_compare as sc
 from scaling_results import method_of, robot_of
