@@ -34,9 +34,13 @@ CENTIPEDE_BUDGET, R_BUDGET = 2500, 15000
 ROBOTS = CENTIPEDES + list(R_ROBOTS)   # the study's robots, in the order its pages list them
 
 
+def study_rank(robot):
+    """A robot's place in ROBOTS' order; a robot outside the study last."""
+    return ROBOTS.index(robot) if robot in ROBOTS else len(ROBOTS)
+
+
 def in_study_order(robots):
-    """ROBOTS' order; a robot outside the study last."""
-    return sorted(robots, key=lambda r: ROBOTS.index(r) if r in ROBOTS else len(ROBOTS))
+    return sorted(robots, key=study_rank)
 ROBOT_KEYS = {"Simulator.robotFile", "Simulator.robot_type"}
 HYPERGP_GAIT = ["Neural.switchPatience=0", "Neural.switchShare=0", "Neural.directOffsets=0"]   # both hybrids off
 METHODS = ["direct", "hypergp-gait", "offset-hybrid", "switch-hybrid"]

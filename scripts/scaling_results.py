@@ -76,14 +76,23 @@ def assess(cic, run_dirs, out_csv):
     return got
 
 
+def ledger_rows(results):
+    """Every row of the ledger, RESULTS/scaling-runs.csv."""
+    return list(csv.DictReader(open(os.path.join(results, "scaling-runs.csv"))))
+
+
 def compare_rows(results):
     """The ledger's compare rows, every status."""
-    return [r for r in csv.DictReader(open(os.path.join(results, "scaling-runs.csv")))
-            if r["study"].startswith("compare-")]
+    return [r for r in ledger_rows(results) if r["study"].startswith("compare-")]
 
 
 def finished(rows):
     return [r for r in rows if r["status"] == "done"]
+
+
+def unfinished_robots(rows):
+    """The robots with a compare run that is neither done nor superseded (left the sweep file)."""
+    return {robot_of(r["study"]) for r in rows if r["status"] not in ("done", "superseded")}
 
 
 def raw_scores(results, studies, cic):
@@ -263,11 +272,9 @@ def evaluation_counts(results):
     counts = {}
     for r in finished(compare_rows(results)):
         counts.setdefault((robot_of(r["study"]), method_of(r["config"])), []).append(int(r["evaluations"]))
-    order = sc.ROBOTS
     out = ["", "Evaluations per run (the real counts; median [least, most]):", "",
            "| robot | method | evaluations |", "|---|---|---|"]
-    for (robot, m), v in sorted(counts.items(), key=lambda kv: (order.index(kv[0][0]) if kv[0][0] in order
-                                                                else len(order), sc.METHODS.index(kv[0][1])
+    for (robot, m), v in sorted(counts.items(), key=lambda kv: (sc.study_rank(kv[0][0]), sc.METHODS.index(kv[0][1])
                                                                 if kv[0][1] in sc.METHODS else 9)):
         out.append(f"| {robot} | {LABELS.get(m, m)} | {statistics.median(v):,.0f} [{min(v):,}, {max(v):,}] |")
     return out if counts else []
@@ -276,12 +283,7 @@ def evaluation_counts(results):
 def complete_robots(rows):
     """The robots all of whose compare runs (superseded ones aside) are done: the figure's. An unfinished
     robot's interval would stand for the few runs in so far, or for none (a point without a bar)."""
-    out = {}
-    for r in rows:
-        if r["status"] != "superseded":
-            robot = robot_of(r["study"])
-            out[robot] = out.get(robot, True) and r["status"] == "done"
-    return {robot for robot, done in out.items() if done}
+    return {robot_of(r["study"]) for r in finished(rows)} - unfinished_robots(rows)
 
 
 def figure(g, sc_cells, path, shown):
@@ -345,8 +347,8 @@ def results(results_dir, studies, cic, figure_path, baselines):
            "and the ratio of medians with bootstrap 95 % intervals."]
     # "so far" while any of the design's robots, a planned method or a listed run is not in yet
     rows = compare_rows(results_dir)
-    pending = any(r["status"] not in ("done", "superseded") for r in rows)
-    any_waiting = (pending or any(r not in g for r in sc.ROBOTS) or
+    unfinished = unfinished_robots(rows)
+    any_waiting = (bool(unfinished) or any(r not in g for r in sc.ROBOTS) or
                    any(m not in g.get(robot, {}) for robot, ms in planned.items() for m in ms))
     for robot in sorted(g):
         waiting = sorted(m for m in planned.get(robot, set()) if m not in g[robot])
@@ -370,8 +372,7 @@ def results(results_dir, studies, cic, figure_path, baselines):
     if left_out:
         out += ["", f"The figure leaves out {', '.join(left_out)}: not all of {'its' if len(left_out) == 1 else 'their'} "
                 "runs are in."]
-    r_waiting = (any(r["status"] not in ("done", "superseded") and robot_of(r["study"]) in sc.R_ROBOTS
-                     for r in rows) or any(r not in g for r in sc.R_ROBOTS) or
+    r_waiting = (bool(unfinished & set(sc.R_ROBOTS)) or any(r not in g for r in sc.R_ROBOTS) or
                  any(m not in g.get(robot, {}) for robot in sc.R_ROBOTS for m in HYBRIDS))
     out += against_ipop(g, ipop_runs(baselines), r_waiting)
     sc.write_atomically(os.path.join(results_dir, "compare.md"), "\n".join(out) + "\n")

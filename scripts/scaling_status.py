@@ -10,13 +10,12 @@ comparison's budgets), else of the robot's finished runs, else results/estimate.
 for the robot (which the finished runs matched within about 10 %: docs/scaling.md, "Run-time
 estimate"). Nothing is written and no
 run folder is read, so it is safe beside a running study."""
-import csv
 import os
 import re
 import statistics
 
 import scaling_compare as sc
-from scaling_results import method_of, robot_of
+from scaling_results import finished, ledger_rows, method_of
 
 TUNED_ON = {"centipede-8": "c8", "r1": "r1"}   # the tuning studies' robots (tune-*-c8.xml, tune-*-r1.xml)
 
@@ -46,8 +45,8 @@ def status(results, sweeps, jobs):
     robots = [r for r in sc.ROBOTS if os.path.exists(os.path.join(sweeps, f"compare-{r}.xml"))]
     if not robots:
         raise sc.Refusal(f"status: no compare sweep in {sweeps} (scaling-report.py compare-sweeps writes them)")
-    finished = [r for r in csv.DictReader(open(ledger)) if r["status"] == "done"]
-    done_rows = {(r["study"], r["config"], r["seed"]): r for r in finished if r["study"].startswith("compare-")}
+    finished_rows = finished(ledger_rows(results))
+    done_rows = {(r["study"], r["config"], r["seed"]): r for r in finished_rows if r["study"].startswith("compare-")}
     figures = estimate_figures(results)
     out = ["| study | runs | done | to go | s per evaluation | core-hours left |", "|---|---|---|---|---|---|"]
     totals = [0, 0, 0, 0.0]
@@ -57,14 +56,17 @@ def status(results, sweeps, jobs):
         done = [done_rows[k] for k in planned if k in done_rows]
         left = [k for k in planned if k not in done_rows]
         budget = sc.R_BUDGET if robot in sc.R_ROBOTS else sc.CENTIPEDE_BUDGET
+        robot_sec = per_evaluation(done) if done else None
         hours = 0.0
         for _, config, _ in left:
             same = [d for d in done if method_of(d["config"]) == method_of(config)]
-            tuned = [r for r in finished if robot in TUNED_ON and "." in config and
+            tuned = [r for r in finished_rows if robot in TUNED_ON and "." in config and
                      r["study"] in (f"tune-direct-{TUNED_ON[robot]}", f"tune-hybrid-{TUNED_ON[robot]}") and
                      r["config"] == config.split(".", 1)[1]]
-            if same or tuned or done:
-                sec = per_evaluation(same or tuned or done)
+            if same or tuned:
+                sec = per_evaluation(same or tuned)
+            elif robot_sec is not None:
+                sec = robot_sec
             elif robot in figures:
                 sec = figures[robot]
             else:
@@ -72,8 +74,8 @@ def status(results, sweeps, jobs):
                                  f"no figure for {robot} in {os.path.join(results, 'estimate.md')} "
                                  "(scripts/scaling.sh estimate writes it)")
             hours += budget * sec / 3600
-        if done:
-            spe = f"{per_evaluation(done):.3f}"
+        if robot_sec is not None:
+            spe = f"{robot_sec:.3f}"
         else:
             spe = f"{figures[robot]:.3f} (estimate.md)" if robot in figures else ""
         out.append(f"| compare-{robot} | {len(planned)} | {len(done)} | {len(left)} | {spe} | {hours:.1f} |")
