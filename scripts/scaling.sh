@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/scaling.sh [--jobs N] [--output DIR] [--commit] [--summary-only] STAGE...
+# scripts/scaling.sh [--jobs N] [--output DIR] [--commit] [--summary-only] [--dry-run] STAGE...
 # Issue 38's scaling study (docs/scaling.md): tuning, then the comparison.
 # Resumable like every `cic sweep`: rerun the same command after an
 # interruption and only what is missing runs. Seeds are fixed in the sweep
@@ -34,10 +34,16 @@
 # Options:
 #   --jobs N        runs at a time (default 1), each with one worker process
 #   --output DIR    study folders (default runs/scaling); the run store is DIR/store
-#   --commit        after every run: ledger and summary, then `git commit` of
-#                   experiments/scaling/results/ only (the studies' runs share
-#                   one pool of N slots, each taking the next run when its own ends)
+#   --commit        after every run, `git commit` the ledger and summary
+#                   (experiments/scaling/results/ only)
+# The studies' runs share one pool of --jobs slots, each slot taking the next
+# run when its own ends; the ledger and summary are written after every run.
+# A run the committed ledger records as done is not run again, even when its
+# folder is gone (run folders are never committed: a study carried on from a
+# clean clone on another machine runs only what the ledger lacks).
 #   --summary-only  run nothing; ledger and summary of what is there
+#   --dry-run       run and write nothing: list the runs each stage would start,
+#                   one "STUDY TASK RUN_DIR" line each (after the ledger's skips)
 #   --only ROBOT    run only the tuning studies of one robot: c8 or r1 (the
 #                   ledger still covers every study; compare ignores it)
 # Environment: CIC (default build/cic), PYTHON (default python3).
@@ -46,13 +52,14 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 HERE="$ROOT/experiments/scaling"
 CIC=${CIC:-$ROOT/build/cic}
 PY=${PYTHON:-python3}
-jobs=1 output=runs/scaling commit=0 summary_only=0 only='' stages=()
+jobs=1 output=runs/scaling commit=0 summary_only=0 dry_run=0 only='' stages=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --jobs) jobs="$2"; shift 2 ;;
     --output) output="$2"; shift 2 ;;
     --commit) commit=1; shift ;;
     --summary-only) summary_only=1; shift ;;
+    --dry-run) dry_run=1; shift ;;
     --only) only="$2"; shift 2
             [[ "$only" =~ ^(c8|r1)$ ]] || { echo "scaling.sh: --only takes c8 or r1, got '$only'" >&2; exit 2; } ;;
     -h|--help) sed -n '2,/^set /p' "$0" | grep '^#' | sed 's/^# \{0,1\}//'; exit 0 ;;
@@ -62,14 +69,22 @@ while [ $# -gt 0 ]; do
 done
 [ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, tune-hybrid, compare, ledger, report, status, estimate (see --help)" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scaling.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
-# --commit's pool waits for whichever run ends first: `wait -n -p`, bash 5.1 on.
-if [ "$commit" = 1 ] && ! (( BASH_VERSINFO[0] > 5 || (BASH_VERSINFO[0] == 5 && BASH_VERSINFO[1] >= 1) )); then
-  echo "scaling.sh: --commit needs bash 5.1 or later (wait -n -p); this is bash $BASH_VERSION" >&2; exit 2
+# The pool of runs waits for whichever run ends first: `wait -n -p`, bash 5.1 on.
+if [ "$summary_only" = 0 ] && ! (( BASH_VERSINFO[0] > 5 || (BASH_VERSINFO[0] == 5 && BASH_VERSINFO[1] >= 1) )); then
+  echo "scaling.sh: running a study needs bash 5.1 or later (wait -n -p); this is bash $BASH_VERSION" >&2; exit 2
 fi
 if [ "${stages[*]}" != status ]; then   # status reads files only
   [ -x "$CIC" ] || { echo "scaling.sh: no cic binary at $CIC (build first, or set CIC)" >&2; exit 2; }
 fi
-mkdir -p "$HERE/results"
+if [ "$dry_run" = 1 ]; then
+  for stage in "${stages[@]}"; do
+    [[ "$stage" =~ ^(tune-direct|tune-hybrid|compare)$ ]] ||
+      { echo "scaling.sh: --dry-run lists the runs of tune-direct, tune-hybrid and compare; '$stage' runs none" >&2; exit 2; }
+  done
+  [ "$summary_only" = 0 ] || { echo "scaling.sh: --dry-run and --summary-only: choose one" >&2; exit 2; }
+  [ "$commit" = 0 ] || { echo "scaling.sh: --dry-run writes nothing, so nothing to --commit" >&2; exit 2; }
+fi
+[ "$dry_run" = 1 ] || mkdir -p "$HERE/results"
 
 tune_studies=(tune-direct-c8 tune-direct-r1)   # the centipede first: the new question
 hybrid_studies=(tune-hybrid-c8 tune-hybrid-r1)
@@ -106,29 +121,37 @@ commit_results() {   # MESSAGE
   echo "scaling.sh: could not commit the ledger (the next run's commit will carry it)" >&2
 }
 
-# The studies' runs: without --commit, one `cic sweep` per study (its own
-# --jobs); with it, their pending tasks (`cic sweep --task`, each resumable) in
-# one pool of --jobs slots across the studies, in order: a slot takes the next
-# task as soon as its run ends (a study's runs differ in length by method, and
-# lockstep batches left a core idle), and the ledger is committed after every
-# run. Tasks of one study running at once share its index under its lock.
+# The studies' pending tasks (`cic sweep --task`, each resumable) run in one
+# pool of --jobs slots across the studies, in order: a slot takes the next task
+# as soon as its run ends (a study's runs differ in length by method, and
+# lockstep batches left a core idle); the ledger is written (and with --commit
+# committed) after every run. Tasks of one study running at once share its
+# index under its lock. A task whose run the ledger records as done is skipped:
+# its folder went with an earlier sitting's machine, and its row is the record.
 run_studies() {   # STUDY...
-  local s item tasks=()
+  local s item tasks=() pending kept
+  local ledger_csv="$HERE/results/scaling-runs.csv"
+  [ -f "$ledger_csv" ] || ledger_csv=/dev/null
   for s in "$@"; do
     if [ -n "$only" ] && [[ "$s" == tune-* ]] && [[ "$s" != *-"$only" ]]; then continue; fi
-    if [ "$commit" = 0 ]; then
-      echo "== $s" >&2
-      "$CIC" sweep "$HERE/$s.xml" --output "$output/$s" --jobs "$jobs" --workers 1 >&2
-      continue
-    fi
     mapfile -t pending < <("$CIC" sweep "$HERE/$s.xml" --output "$output/$s" --dry-run |
                            awk '$1 ~ /^[0-9]+$/ && $3 ~ /^runs\// && $2 != "done" {print $1 " " $3}')
-    echo "== $s: ${#pending[@]} runs to go" >&2
+    # "TASK RUN_DIR" lines whose run the ledger has done (matched by study and run folder).
+    mapfile -t kept < <(printf '%s\n' "${pending[@]}" |
+      awk -F, -v s="$s" 'NR == FNR { if ($1 == s && $4 == "done") done_run[$8] = 1; next }
+                         NF && !(($2 in done_run)) { print }' "$ledger_csv" FS=' ' -)
+    if [ ${#kept[@]} -lt ${#pending[@]} ]; then
+      echo "== $s: $(( ${#pending[@]} - ${#kept[@]} )) runs the ledger records as done are not run again" >&2
+    fi
+    echo "== $s: ${#kept[@]} runs to go" >&2
     # Every run already in the store (another study ran it): link them, so the ledger sees the study.
-    if [ ${#pending[@]} = 0 ]; then "$CIC" --quiet sweep "$HERE/$s.xml" --output "$output/$s" --index-only; fi
-    for item in "${pending[@]}"; do tasks+=("$s $item"); done   # "STUDY TASK RUN_DIR"
+    if [ ${#pending[@]} = 0 ] && [ "$dry_run" = 0 ]; then "$CIC" --quiet sweep "$HERE/$s.xml" --output "$output/$s" --index-only; fi
+    for item in "${kept[@]}"; do tasks+=("$s $item"); done   # "STUDY TASK RUN_DIR"
   done
-  [ "$commit" = 1 ] || return 0
+  if [ "$dry_run" = 1 ]; then
+    [ ${#tasks[@]} = 0 ] || printf '%s\n' "${tasks[@]}"
+    return 0
+  fi
   local next=0 running=0 pid study task run status done_now
   local -A what=() tries=()   # running pid -> "STUDY TASK RUN_DIR"; "STUDY TASK" -> starts
   while [ $next -lt ${#tasks[@]} ] || [ $running -gt 0 ]; do
@@ -174,14 +197,12 @@ main() {
         if [ "$summary_only" = 0 ]; then
           run_studies "${tune_studies[@]}"
         fi
-        ledger
-        commit_results "Ledger (issue 38): tune-direct summary" ;;
+        [ "$dry_run" = 1 ] || { ledger; commit_results "Ledger (issue 38): tune-direct summary"; } ;;
       tune-hybrid)
         if [ "$summary_only" = 0 ]; then
           run_studies "${hybrid_studies[@]}"
         fi
-        ledger
-        commit_results "Ledger (issue 38): tune-hybrid summary" ;;
+        [ "$dry_run" = 1 ] || { ledger; commit_results "Ledger (issue 38): tune-hybrid summary"; } ;;
       compare)
         [ ${#compare_studies[@]} = 10 ] || { echo "scaling.sh: compare needs the 10 experiments/scaling/compare-*.xml, found ${#compare_studies[@]}: write them with $PY scripts/scaling-report.py compare-sweeps --results $HERE/results --out $HERE" >&2; exit 2; }
         for s in "${compare_studies[@]}"; do
@@ -192,8 +213,7 @@ main() {
         if [ "$summary_only" = 0 ]; then
           run_studies "${compare_studies[@]}"
         fi
-        ledger
-        commit_results "Ledger (issue 38): compare summary" ;;
+        [ "$dry_run" = 1 ] || { ledger; commit_results "Ledger (issue 38): compare summary"; } ;;
       ledger)
         ledger ;;
       report)
