@@ -39,7 +39,9 @@
       RESULTS/posture.md: scripts/posture-probe.py on every finished run of the
       best direct method of the comparison, per robot the median share of its
       own raw eq. 7.1 each posture replacement keeps, and per robot the share
-      each Offset-HybrID run keeps with its direct offsets 0 (scaling_posture.py)
+      each Offset-HybrID run keeps with its direct offsets 0 (scaling_posture.py);
+      every run's replays are cached in RESULTS/compare-posture.csv, so a run whose
+      folder is gone still counts; a robot with a run in neither is left out, named
   scaling-report.py anytime --results DIR --studies DIR [--figure SVG]
       RESULTS/anytime.md and the figure (default docs/img/scaling-anytime.svg):
       per robot and method the median best fitness the finished compare runs

@@ -15,11 +15,17 @@ directly encoded offset per hinge: each finished Offset-HybrID compare run's
 final best replayed as it is and with those offsets set to 0, the median share
 kept. A large share lost says the run's walk leans on its direct offsets, as
 the direct gaits' does on theirs.
-Refused (exit 2) before anything is written: no ledger, no finished direct
-compare run, or a run whose folder is gone."""
+Every run's replays are cached in RESULTS/compare-posture.csv (keyed like
+compare-raw.csv by study, config, seed and best_ever), so the page can be
+written again on a clean clone whose run folders are gone (they are never
+committed). A robot with a finished run that has neither its folder nor a
+cached row is left out of the page, and named in it.
+Refused (exit 2) before anything is written: no ledger, or no finished direct
+compare run with its folder or a cached row."""
 import csv
 import io
 import os
+import pathlib
 import re
 import shutil
 import statistics
@@ -34,8 +40,13 @@ PROBE = os.path.join(sc.ROOT, "scripts", "posture-probe.py")
 VARIANTS = ["offsets 0", "smooth, 2 terms", "smooth, 4 terms", "by axis, 2 terms", "mirrored"]
 
 
+CACHE = "compare-posture.csv"
+ZEROED = "direct offsets 0"   # an Offset-HybrID run replayed with its direct offsets 0
+CACHE_FIELDS = ["study", "config", "seed", "best_ever", "run_dir", "original", *VARIANTS, ZEROED]
+
+
 def method_runs(results, studies, method):
-    """{robot: [run folder]} of the ledger's finished compare runs of METHOD, in seed order."""
+    """{robot: [(cache key, run folder)]} of the ledger's finished compare runs of METHOD, in seed order."""
     ledger = os.path.join(results, "scaling-runs.csv")
     if not os.path.exists(ledger):
         raise sc.Refusal(f"posture: {ledger} is missing (written by scripts/scaling.sh ledger)")
@@ -43,20 +54,38 @@ def method_runs(results, studies, method):
     for r in sorted(csv.DictReader(open(ledger)), key=lambda r: (r["study"], int(r["seed"]))):
         if not r["study"].startswith("compare-") or r["status"] != "done" or method_of(r["config"]) != method:
             continue
-        path = os.path.join(studies, r["study"], r["run_dir"])
-        if not os.path.isdir(path):
-            raise sc.Refusal(f"posture: {r['study']} {r['config']} seed {r['seed']} is done in the ledger, "
-                             f"but {path} is gone")
-        out.setdefault(robot_of(r["study"]), []).append(path)
+        key = (r["study"], r["config"], r["seed"], r["best_ever"])
+        out.setdefault(robot_of(r["study"]), []).append((key, os.path.join(studies, r["study"], r["run_dir"])))
     return out
 
 
-def direct_runs(results, studies):
-    out = method_runs(results, studies, "direct")
-    if not out:
-        raise sc.Refusal(f"posture: {os.path.join(results, 'scaling-runs.csv')} has no finished direct run of a "
-                         "compare study")
+def read_cache(results):
+    path = os.path.join(results, CACHE)
+    if not os.path.exists(path):
+        return {}
+    return {(r["study"], r["config"], r["seed"], r["best_ever"]): r for r in csv.DictReader(open(path))}
+
+
+def to_replay(runs_by_robot, cache):
+    """{robot: [run folder]} of the runs with a folder and no cached row."""
+    out = {}
+    for robot, runs in runs_by_robot.items():
+        todo = [path for key, path in runs if key not in cache and os.path.isdir(path)]
+        if todo:
+            out[robot] = todo
     return out
+
+
+def available(runs_by_robot, cache, columns):
+    """({robot: [{column: raw eq. 7.1}]} of the robots whose every run is cached, {robot: runs missing})."""
+    got, missing = {}, {}
+    for robot, runs in runs_by_robot.items():
+        rows = [cache[key] for key, _ in runs if key in cache]
+        if len(rows) < len(runs):
+            missing[robot] = len(runs) - len(rows)
+        else:
+            got[robot] = [{c: float(r[c]) for c in columns} for r in rows]
+    return got, missing
 
 
 OFFSETS = re.compile(r"<offsets>([^<]*)</offsets>")
@@ -76,7 +105,7 @@ def offsets_zeroed(run, folder):
 
 
 def offset_shares(cic, runs_by_robot):
-    """{robot: [(raw eq. 7.1 as it is, with its direct offsets 0)]}, from one cic assess."""
+    """{run folder: (raw eq. 7.1 as it is, with its direct offsets 0)}, from one cic assess."""
     with tempfile.TemporaryDirectory(prefix="scaling-posture-offsets-") as work:
         pairs = []
         for robot, runs in runs_by_robot.items():
@@ -92,10 +121,7 @@ def offset_shares(cic, runs_by_robot):
         if p.returncode != 0:
             raise sc.Refusal(f"posture: cic assess failed ({p.returncode}): {p.stderr.strip()}")
         got = {r["input"]: float(r["raw_fitness"]) for r in csv.DictReader(open(out_csv))}
-    out = {}
-    for robot, run, zeroed in pairs:
-        out.setdefault(robot, []).append((got[run], got[zeroed]))
-    return out
+    return {run: (got[run], got[zeroed]) for _, run, zeroed in pairs}
 
 
 def probe(cic, runs):
@@ -105,9 +131,12 @@ def probe(cic, runs):
                            capture_output=True, text=True)
     if p.returncode != 0:
         raise sc.Refusal(f"posture: posture-probe.py failed ({p.returncode}): {p.stderr.strip()}")
+    spelled = {str(pathlib.Path(run)): run for run in runs}   # the probe names a run as pathlib spells it
     out = {}
     for row in csv.DictReader(io.StringIO(p.stdout)):
-        out.setdefault(row["run"], {})[row["variant"]] = float(row["raw_fitness"])
+        out.setdefault(spelled[row["run"]], {})[row["variant"]] = float(row["raw_fitness"])
+    if set(out) != set(runs):
+        raise sc.Refusal(f"posture: posture-probe.py gave no scores for {sorted(set(runs) - set(out))}")
     return out
 
 
@@ -116,7 +145,7 @@ def table(scores_by_robot):
             + "|---|---|---|---|" + "---|" * len(VARIANTS) + "\n")
     lines = []
     for robot in [r for r in sc.ROBOTS if r in scores_by_robot]:
-        scores = list(scores_by_robot[robot].values())
+        scores = scores_by_robot[robot]
         h = sc.hinges(robot)
         kept = []
         for v in VARIANTS:
@@ -131,7 +160,7 @@ def offset_table(shares):
     lines = ["| robot | hinges | runs | median eq. 7.1 | median eq. 7.1, offsets 0 | offsets 0: kept |",
              "|---|---|---|---|---|---|"]
     for robot in [r for r in sc.ROBOTS if r in shares]:
-        pairs = shares[robot]
+        pairs = [(r["original"], r[ZEROED]) for r in shares[robot]]
         kept = [z / o for o, z in pairs if o > 0]
         lines.append(f"| {robot} | {sc.hinges(robot)} | {len(pairs)} | {statistics.median(o for o, _ in pairs):.2f} | "
                      f"{statistics.median(z for _, z in pairs):.2f} | "
@@ -139,10 +168,43 @@ def offset_table(shares):
     return "\n".join(lines) + "\n"
 
 
+def left_out(gone, hybrid_gone):
+    """The line naming the robots whose finished runs have neither a folder nor a cached row."""
+    if not gone and not hybrid_gone:
+        return ""
+    parts = []
+    for robot in [r for r in sc.ROBOTS if r in gone or r in hybrid_gone]:
+        counts = [f"{n[robot]} {what}" for n, what in ((gone, "direct"), (hybrid_gone, "Offset-HybrID")) if robot in n]
+        parts.append(f"{robot} ({' and '.join(counts)})")
+    return ("Left out: " + ", ".join(parts) + " finished runs whose folders are gone and that have no row in `"
+            + CACHE + "` (rerun them, e.g. on the machine that keeps the study, to put their robot back).\n\n")
+
+
 def posture(results, studies, cic, command):
-    runs = direct_runs(results, studies)
-    hybrid = offset_shares(cic, method_runs(results, studies, "offset-hybrid"))
-    scores = {robot: probe(cic, paths) for robot, paths in runs.items()}
+    runs = method_runs(results, studies, "direct")
+    if not runs:
+        raise sc.Refusal(f"posture: {os.path.join(results, 'scaling-runs.csv')} has no finished direct run of a "
+                         "compare study")
+    hybrid_runs = method_runs(results, studies, "offset-hybrid")
+    cache = read_cache(results)
+    # Replay what is not cached yet: the probe per robot, the hybrids in one cic assess.
+    fresh = {}
+    for robot, paths in to_replay(runs, cache).items():
+        for path, scores in probe(cic, paths).items():
+            fresh[path] = {"original": scores["original"], **{v: scores[v] for v in VARIANTS}}
+    for path, (as_is, zeroed) in offset_shares(cic, to_replay(hybrid_runs, cache)).items():
+        fresh[path] = {"original": as_is, ZEROED: zeroed}
+    for key, path in [x for group in (*runs.values(), *hybrid_runs.values()) for x in group]:
+        if path in fresh:
+            cache[key] = {**dict(zip(CACHE_FIELDS, key)), "run_dir": path,
+                          **{c: repr(v) for c, v in fresh[path].items()}}
+    scores, gone = available(runs, cache, ["original", *VARIANTS])
+    hybrid, hybrid_gone = available(hybrid_runs, cache, ["original", ZEROED])
+    if not scores:
+        raise sc.Refusal(f"posture: no finished direct compare run has its folder under {studies} or a row in "
+                         f"{os.path.join(results, CACHE)}")
+    if fresh:
+        sc.write_rows_atomically(os.path.join(results, CACHE), CACHE_FIELDS, cache)
     text = ("# The best direct gaits' postures (issue 38)\n\n"
             "Written by `" + command + "` (scripts/posture-probe.py on every finished run of the best direct "
             "method in the comparison). Each gait is replayed with its per-hinge offsets replaced, and the "
@@ -150,7 +212,8 @@ def posture(results, studies, cic, command):
             "least-squares fit a·u + b·u·v (2 terms; 4 adds u³ and u³·v) over the hinges' body coordinates "
             "u, v in [-1, 1], where HyperGP's trees are asked; *by axis* the 2-term fit on the pitching "
             "hinges only; *mirrored* the offsets made exactly odd in u. Amplitudes, phases and frequency "
-            "are untouched.\n\n" + table(scores))
+            "are untouched. Each run's replays are cached in `" + CACHE + "`.\n\n" + left_out(gone, hybrid_gone)
+            + table(scores))
     if hybrid:
         text += ("\n## Offset-HybrID's direct offsets\n\n"
                  "Every finished Offset-HybrID run's final best (its trees and one directly encoded offset per "

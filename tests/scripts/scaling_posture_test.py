@@ -3,8 +3,11 @@
 ledger whose direct compare runs are tiny real gait runs (two on the 12-hinge
 centipede's robot file, one on R1): per robot the gaits probed (not the other
 methods', not a failed run's), the median of their own raw eq. 7.1 as `cic
-assess` replays them, and a share kept per posture replacement; the refusals
-(no ledger, a finished run's folder gone): exit 2, one line, nothing written.
+assess` replays them, and a share kept per posture replacement. Every run's
+replays are cached (compare-posture.csv): with the folders gone the page comes
+out byte for byte the same; a finished run with neither folder nor cached row
+leaves its robot out, named on the page. The refusals (no ledger; no direct run
+with a folder or a cached row): exit 2, one line, nothing written.
 
     scaling_posture_test.py SOURCE_DIR CIC WORK_DIR
 Exit 77 (skipped) without numpy.
@@ -134,13 +137,33 @@ check([c.strip() for c in offsets[0].split("|")[1:-1]] ==
       ["centipede-2", "12", "1", f"{raw_o1:.2f}", f"{raw_o1_zeroed:.2f}", f"{raw_o1_zeroed / raw_o1:.0%}"],
       f"Offset-HybrID's row: {offsets[0]}, cic assess gives {raw_o1} and {raw_o1_zeroed} with offsets 0")
 
+# The cache: every probed run has its row, and the page needs no folder to be written again.
+cache = {(r["study"], r["seed"], r["config"]): r for r in csv.DictReader(open(results / "compare-posture.csv"))}
+check(sorted(cache) == [("compare-centipede-2", "1", D), ("compare-centipede-2", "1", "offset-hybrid.offset-s0.1"),
+                        ("compare-centipede-2", "2", D), ("compare-r1", "1", D)], f"the cache's runs: {sorted(cache)}")
+r1_row = cache[("compare-r1", "1", D)]
+# The probe re-encodes every gait, its original too (offset to gene and back): the last bits may move.
+check(abs(float(r1_row["original"]) - raw_r1) < 1e-9, f"the cache's r1 row: {r1_row}, cic assess gives {raw_r1!r}")
+before = (results / "posture.md").read_bytes()
+shutil.rmtree(studies)
+p = run(posture)
+check(p.returncode == 0 and (results / "posture.md").read_bytes() == before,
+      f"from the cache alone: exit {p.returncode} {p.stderr}\n{(results / 'posture.md').read_text()}")
+# A finished run with neither folder nor cached row: its robot is left out and named.
+write_ledger(rows + [dict(rows[4], seed=2, run_dir=f"runs/{D}/s2")])
+p = run(posture)
+text = (results / "posture.md").read_text()
+check(p.returncode == 0 and "Left out: r1 (1 direct) finished runs" in text and "| r1 |" not in text
+      and "| centipede-2 | 12 | 2 |" in text, f"a run with no folder and no row: {p.returncode} {p.stderr}\n{text}")
+
 # Refusals: exit 2, one line, posture.md untouched.
 before = (results / "posture.md").read_bytes()
-shutil.rmtree(studies / "compare-r1")
+(results / "compare-posture.csv").unlink()
 p = run(posture)
-check(p.returncode == 2 and "is gone" in p.stderr and len(p.stderr.strip().splitlines()) == 1,
-      f"a run's folder gone: {p.returncode} {p.stderr}")
-check((results / "posture.md").read_bytes() == before, "a refusal wrote posture.md")
+check(p.returncode == 2 and "no finished direct compare run has its folder" in p.stderr
+      and len(p.stderr.strip().splitlines()) == 1, f"no folder and no cache: {p.returncode} {p.stderr}")
+check((results / "posture.md").read_bytes() == before and not (results / "compare-posture.csv").exists(),
+      "a refusal wrote posture.md or the cache")
 (results / "scaling-runs.csv").unlink()
 p = run(posture)
 check(p.returncode == 2 and "scaling-runs.csv is missing" in p.stderr, f"no ledger: {p.returncode} {p.stderr}")
