@@ -54,8 +54,10 @@ def picks(results, studies, robots):
                              f"(run scaling-report.py results first; robots: {', '.join(robots)})")
         for m, p in best.items():
             if not os.path.isdir(p["path"]):
+                sweep = os.path.join(sc.ROOT, "experiments", "scaling", f"{p['study']}.xml")
                 raise sc.Refusal(f"strips: {robot} {p['config']} seed {p['seed']} is the best {m} run, "
-                                 f"but {p['path']} is gone")
+                                 f"but {p['path']} is gone: one seed fixes a run, so rerun it with `cic sweep {sweep} "
+                                 f"--output {os.path.join(studies, p['study'])} --task N` (its N from --dry-run)")
         out[robot] = {m: best[m] for m in sc.METHODS if m in best}
     return out
 

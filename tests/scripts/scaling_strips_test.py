@@ -134,7 +134,8 @@ refused(strips(results, studies, "--at", "1 x"), "--at takes seconds >= 0", resu
 make_results(work / "gone", None)   # the same scores, but no run folder on disk
 refused(strips(work / "gone", work / "nowhere", "--no-strips"),
         f"centipede-16 {D} seed 2 is the best direct run, but {work / 'nowhere'}/compare-centipede-16/runs/{D}/s2 "
-        "is gone", work / "gone")
+        f"is gone: one seed fixes a run, so rerun it with `cic sweep {source}/experiments/scaling/compare-centipede-16.xml "
+        f"--output {work / 'nowhere'}/compare-centipede-16 --task N`", work / "gone")
 p = run(REPORT + ["strips", "--results", str(results), "--cic", cic])
 check(p.returncode == 2 and "--studies is required" in p.stderr, f"--studies is required: {p.stderr}")
 
