@@ -34,7 +34,7 @@ import sys
 import tempfile
 
 import scaling_compare as sc
-from scaling_results import method_of, robot_of
+from scaling_results import compare_rows, finished, method_of, robot_of
 
 PROBE = os.path.join(sc.ROOT, "scripts", "posture-probe.py")
 VARIANTS = ["offsets 0", "smooth, 2 terms", "smooth, 4 terms", "by axis, 2 terms", "mirrored"]
@@ -51,8 +51,8 @@ def method_runs(results, studies, method):
     if not os.path.exists(ledger):
         raise sc.Refusal(f"posture: {ledger} is missing (written by scripts/scaling.sh ledger)")
     out = {}
-    for r in sorted(csv.DictReader(open(ledger)), key=lambda r: (r["study"], int(r["seed"]))):
-        if not r["study"].startswith("compare-") or r["status"] != "done" or method_of(r["config"]) != method:
+    for r in sorted(finished(compare_rows(results)), key=lambda r: (r["study"], int(r["seed"]))):
+        if method_of(r["config"]) != method:
             continue
         key = (r["study"], r["config"], r["seed"], r["best_ever"])
         out.setdefault(robot_of(r["study"]), []).append((key, os.path.join(studies, r["study"], r["run_dir"])))
