@@ -36,16 +36,16 @@
 #   --output DIR    study folders (default runs/scaling); the run store is DIR/store
 #   --commit        after every run, `git commit` the ledger and summary
 #                   (experiments/scaling/results/ only)
-# The studies' runs share one pool of --jobs slots, each slot taking the next
-# run when its own ends; the ledger and summary are written after every run.
-# A run the committed ledger records as done is not run again, even when its
-# folder is gone (run folders are never committed: a study carried on from a
-# clean clone on another machine runs only what the ledger lacks).
 #   --summary-only  run nothing; ledger and summary of what is there
 #   --dry-run       run and write nothing: list the runs each stage would start,
 #                   one "STUDY TASK RUN_DIR" line each (after the ledger's skips)
 #   --only ROBOT    run only the tuning studies of one robot: c8 or r1 (the
 #                   ledger still covers every study; compare ignores it)
+# The studies' runs share one pool of --jobs slots, each slot taking the next
+# run when its own ends; the ledger and summary are written after every run.
+# A run the committed ledger records as done is not run again, even when its
+# folder is gone (run folders are never committed: a study carried on from a
+# clean clone on another machine runs only what the ledger lacks).
 # Environment: CIC (default build/cic), PYTHON (default python3).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
