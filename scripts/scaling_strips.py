@@ -19,7 +19,7 @@ import sys
 import tempfile
 
 import scaling_compare as sc
-from scaling_results import LABELS, method_of, read_cache
+from scaling_results import LABELS, finished, ledger_rows, method_of, read_cache
 
 LARGEST = ["centipede-16", "centipede-16-irregular"]
 STRIP_TIMES = "2 5 8 11 14"   # seconds of the 15 s replay (screenshot-strip.sh's default)
@@ -36,8 +36,7 @@ def picks(results, studies, robots):
     for path, maker in ((ledger_path, "scripts/scaling.sh ledger"), (cache_path, "scaling-report.py results")):
         if not os.path.exists(path):
             raise sc.Refusal(f"strips: {path} is missing (written by {maker})")
-    done = {(r["study"], r["config"], r["seed"], r["best_ever"]): r for r in csv.DictReader(open(ledger_path))
-            if r["status"] == "done"}
+    done = {(r["study"], r["config"], r["seed"], r["best_ever"]): r for r in finished(ledger_rows(results))}
     cache = read_cache(cache_path)
     out = {}
     for robot in robots:
