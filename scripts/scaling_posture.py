@@ -175,9 +175,10 @@ def left_out(gone, hybrid_gone):
     parts = []
     for robot in [r for r in sc.ROBOTS if r in gone or r in hybrid_gone]:
         counts = [f"{n[robot]} {what}" for n, what in ((gone, "direct"), (hybrid_gone, "Offset-HybrID")) if robot in n]
-        parts.append(f"{robot} ({' and '.join(counts)})")
-    return ("Left out: " + ", ".join(parts) + " finished runs whose folders are gone and that have no row in `"
-            + CACHE + "` (rerun them, e.g. on the machine that keeps the study, to put their robot back).\n\n")
+        parts.append(f"{robot} ({' and '.join(counts)} runs)")
+    return ("Left out, for finished runs whose folders are gone and that have no row in `" + CACHE + "`: "
+            + ", ".join(parts) + ". Rerun those runs (`cic sweep` of the robot's compare sweep with --config; "
+            "one seed fixes a run) to put their robots back.\n\n")
 
 
 def posture(results, studies, cic, command):
