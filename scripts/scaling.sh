@@ -69,8 +69,10 @@ while [ $# -gt 0 ]; do
 done
 [ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, tune-hybrid, compare, ledger, report, status, estimate (see --help)" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scaling.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
-# The pool of runs waits for whichever run ends first: `wait -n -p`, bash 5.1 on.
-if [ "$summary_only" = 0 ] && ! (( BASH_VERSINFO[0] > 5 || (BASH_VERSINFO[0] == 5 && BASH_VERSINFO[1] >= 1) )); then
+# The pool of runs waits for whichever run ends first: `wait -n -p`, bash 5.1 on
+# (only the stages that run something need it).
+if [ "$summary_only$dry_run" = 00 ] && [[ " ${stages[*]} " =~ \ (tune-direct|tune-hybrid|compare)\  ]] &&
+   ! (( BASH_VERSINFO[0] > 5 || (BASH_VERSINFO[0] == 5 && BASH_VERSINFO[1] >= 1) )); then
   echo "scaling.sh: running a study needs bash 5.1 or later (wait -n -p); this is bash $BASH_VERSION" >&2; exit 2
 fi
 if [ "${stages[*]}" != status ]; then   # status reads files only
