@@ -4,7 +4,9 @@
   scaling-report.py ledger  --studies DIR --results DIR STUDY...
       merge each STUDY's index.csv (DIR/STUDY/index.csv, written by `cic sweep`)
       into RESULTS/scaling-runs.csv: one row per (study, config, seed), kept
-      across sittings (a run whose folder is gone keeps its last row); a row
+      across sittings (a run whose folder is gone keeps its last row, while
+      its run key, the fingerprint of its settings, is the one the index
+      gives; an index of other settings replaces it); a row
       the study's index no longer lists (its configuration or seed left the
       sweep file, which `cic sweep` leaves out of index.csv too) is kept as
       status "superseded", which no table counts
@@ -65,7 +67,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import scaling_compare as sc   # noqa: E402 (the script's own folder)
 
-FIELDS = ["study", "config", "seed", "status", "best_ever", "evaluations", "wall_seconds", "run_dir", "commit"]
+FIELDS = ["study", "config", "seed", "status", "best_ever", "evaluations", "wall_seconds", "run_dir", "commit", "run_key"]
 
 
 def ledger(studies, results, names):
@@ -83,8 +85,10 @@ def ledger(studies, results, names):
             key = (name, r["config"], r["seed"])
             listed.add(key)
             old = rows.get(key)
-            if r["status"] != "done" and old and old["status"] == "done":
+            if (r["status"] != "done" and old and old["status"] == "done" and
+                    old.get("run_key", "") == r.get("run_key", "")):
                 continue   # a finished run of an earlier sitting whose folder is gone
+            # (a done row of another run key is of settings the sweep no longer asks: replaced)
             rows[key] = {"study": name, **{f: r.get(f, "") for f in FIELDS if f != "study"}}
         for key, row in rows.items():
             if key[0] == name and key not in listed:

@@ -45,7 +45,10 @@
 # run when its own ends; the ledger and summary are written after every run.
 # A run the committed ledger records as done is not run again, even when its
 # folder is gone (run folders are never committed: a study carried on from a
-# clean clone on another machine runs only what the ledger lacks).
+# clean clone on another machine runs only what the ledger lacks), but only if
+# the ledger's run key is the one the sweep now gives that run (`cic sweep
+# --dry-run`'s key=): a row of a run of other settings (an edited sweep or base
+# file, a changed robot file) or without a key proves nothing, and the run runs.
 # Environment: CIC (default build/cic), PYTHON (default python3).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -128,23 +131,46 @@ commit_results() {   # MESSAGE
 # as soon as its run ends (a study's runs differ in length by method, and
 # lockstep batches left a core idle); the ledger is written (and with --commit
 # committed) after every run. Tasks of one study running at once share its
-# index under its lock. A task whose run the ledger records as done is skipped:
-# its folder went with an earlier sitting's machine, and its row is the record.
+# index under its lock. A task whose run the ledger records as done, with the
+# run key the sweep gives it, is skipped: its folder went with an earlier
+# sitting's machine, and its row is the record.
 run_studies() {   # STUDY...
-  local s item tasks=() pending kept
+  local s item tasks=() pending kept verdicts skipped stale
   local ledger_csv="$HERE/results/scaling-runs.csv"
   [ -f "$ledger_csv" ] || ledger_csv=/dev/null
   for s in "$@"; do
     if [ -n "$only" ] && [[ "$s" == tune-* ]] && [[ "$s" != *-"$only" ]]; then continue; fi
+    # "TASK RUN_DIR KEY" of every run not done in its folder.
     mapfile -t pending < <("$CIC" sweep "$HERE/$s.xml" --output "$output/$s" --dry-run |
-                           awk '$1 ~ /^[0-9]+$/ && $3 ~ /^runs\// && $2 != "done" {print $1 " " $3}')
-    # "TASK RUN_DIR" lines whose run the ledger has done (matched by study and run folder).
-    mapfile -t kept < <(printf '%s\n' "${pending[@]}" |
-      awk -F, -v s="$s" 'NR == FNR { if ($1 == s && $4 == "done") done_run[$8] = 1; next }
-                         NF && !(($2 in done_run)) { print }' "$ledger_csv" FS=' ' -)
-    if [ ${#kept[@]} -lt ${#pending[@]} ]; then
-      echo "== $s: $(( ${#pending[@]} - ${#kept[@]} )) runs the ledger records as done are not run again" >&2
+                           awk '$1 ~ /^[0-9]+$/ && $3 ~ /^runs\// && $2 != "done" {
+                                  print $1 " " $3 " " ($4 ~ /^key=[0-9a-f]+$/ ? substr($4, 5) : "none") }')
+    if printf '%s\n' "${pending[@]}" | grep -q ' none$'; then
+      echo "scaling.sh: $CIC gives no run keys in \`cic sweep --dry-run\` (a cic older than this script): build cic from this checkout" >&2
+      exit 2
     fi
+    # Each pending run against the ledger's done rows (columns found by name), matched
+    # by study and run folder: "skip" (same run key), "stale TASK RUN_DIR" (a row of
+    # another key, or none: it runs again) or "run TASK RUN_DIR" (no done row).
+    mapfile -t verdicts < <(printf '%s\n' "${pending[@]}" |
+      awk -F, -v s="$s" 'NR == FNR { if (FNR == 1) { for (i = 1; i <= NF; i++) col[$i] = i; next }
+                                     if ($col["study"] == s && $col["status"] == "done")
+                                       done_key[$col["run_dir"]] = ("run_key" in col) ? $col["run_key"] : ""
+                                     next }
+                         !NF { next }
+                         !($2 in done_key) { print "run " $1 " " $2; next }
+                         done_key[$2] == $3 && $3 != "" { print "skip"; next }
+                         { print "stale " $1 " " $2 }' "$ledger_csv" FS=' ' -)
+    kept=() skipped=0 stale=0
+    for item in "${verdicts[@]}"; do
+      case "$item" in
+        skip) skipped=$((skipped + 1)) ;;
+        stale\ *) stale=$((stale + 1)); kept+=("${item#stale }") ;;
+        run\ *) kept+=("${item#run }") ;;
+      esac
+    done
+    [ "$skipped" = 0 ] || echo "== $s: $skipped runs the ledger records as done are not run again" >&2
+    [ "$stale" = 0 ] ||
+      echo "== $s: $stale runs the ledger records as done, but of other settings (its run key is not the sweep's), run again" >&2
     echo "== $s: ${#kept[@]} runs to go" >&2
     # Every run already in the store (another study ran it): link them, so the ledger sees the study.
     if [ ${#pending[@]} = 0 ] && [ "$dry_run" = 0 ]; then "$CIC" --quiet sweep "$HERE/$s.xml" --output "$output/$s" --index-only; fi

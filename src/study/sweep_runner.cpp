@@ -120,7 +120,7 @@ int dry_run(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int work
         ++counts[to_string(st)];
         std::string sets;
         for (const auto& s : plan.overrides(t)) sets += " --set " + s;
-        fmt::print("{:>5} {:<12} {} {}\n", t.index, to_string(st), t.run_dir.string(),
+        fmt::print("{:>5} {:<12} {} key={} {}\n", t.index, to_string(st), t.run_dir.string(), run_key(plan, t),
                    st == TaskStatus::Done ? std::string("(skipped)") : "cic --settings " + plan.base.string() + sets);
         for (const auto& d : state.mismatch) fmt::print("{:>5} {:<12}   {}\n", "", "", d);
     }

@@ -226,15 +226,15 @@ void write_index(const SweepPlan& plan) {
     std::string text = "run_dir,config";
     for (const auto& k : plan.varied_keys) text += "," + csv_cell(k);
     // best_ever last: it came after the others, and readers find columns by name.
-    text += ",seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit\n";
+    text += ",seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit,run_key\n";
     for (const SweepTask& t : plan.tasks()) {
         const TaskState st = task_state(plan, t);
         const SweepConfig& cfg = plan.configs[t.config];
         text += csv_cell(t.run_dir.string()) + "," + csv_cell(cfg.name);
         for (const auto& [key, value] : cfg.varied) text += "," + csv_cell(value);
-        text += fmt::format(",{},{},{},{},{},{:.3f},{},{}\n", t.seed, to_string(st.status), st.final_best,
+        text += fmt::format(",{},{},{},{},{},{:.3f},{},{},{}\n", t.seed, to_string(st.status), st.final_best,
                             st.generations, st.evaluations, st.wall_seconds, st.best_ever,
-                            csv_cell(run::recorded_commit(plan.study / t.run_dir)));
+                            csv_cell(run::recorded_commit(plan.study / t.run_dir)), run_key(plan, t));
     }
     io::xml::write_file_atomically(plan.study / "index.csv", text);
 }
@@ -287,9 +287,11 @@ const std::map<std::string, fs::path>& store_index(const fs::path& store) {
 
 } // namespace
 
+std::string run_key(const SweepPlan& plan, const SweepTask& task) { return run_fingerprint(plan.settings(task)); }
+
 fs::path store_dir(const SweepPlan& plan, const SweepTask& task) {
     if (plan.store.empty()) throw std::logic_error("store_dir: the sweep has no <store>");
-    const std::string key = run_fingerprint(plan.settings(task));
+    const std::string key = run_key(plan, task);
     if (fs::exists(plan.store / key)) return plan.store / key;
     const auto& known = store_index(plan.store);
     if (auto it = known.find(key); it != known.end()) return it->second;

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Scripts.ScalingReportLedgerAndEstimate: scripts/scaling-report.py merges a
-study's index.csv into the ledger, keeps a finished run whose folder is gone,
-keeps a run that left the sweep file as superseded (counted nowhere),
+study's index.csv into the ledger, keeps a finished run whose folder is gone
+(while the index gives it the same run key; an index of other settings replaces it), keeps a run that left the sweep file as superseded (counted nowhere),
 lets a row found again replace its own, names the winner by median best_ever,
 and multiplies the plan out from seconds per evaluation.
 
@@ -29,12 +29,14 @@ def check(condition, message):
         sys.exit(1)
 
 
-HEADER = "run_dir,config,Gait.optimizer,seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit\n"
+HEADER = "run_dir,config,Gait.optimizer,seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit,run_key\n"
 
 
-def index(rows):
+def index(rows, keys=None):
+    """Rows (config, seed, status, best, wall); each run's key is k<config><seed> unless keys says otherwise."""
+    keys = keys or {}
     text = HEADER + "".join(
-        f"runs/{c}/s{s},{c},x,{s},{st},{b},10,2500,{w},{b},abc\n" for c, s, st, b, w in rows)
+        f"runs/{c}/s{s},{c},x,{s},{st},{b},10,2500,{w},{b},abc,{keys.get((c, s), f'k{c}{s}')}\n" for c, s, st, b, w in rows)
     (work / "studies" / "tune-direct-c8" / "index.csv").write_text(text)
 
 
@@ -62,6 +64,19 @@ index([("a", 101, "pending", "", 0), ("a", 102, "done", 5.0, 100.0), ("b", 101, 
        ("b", 102, "done", 6.0, 50.0)])
 n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
 check(n == 4, f"b back in the sweep: its runs count again, 4 expected, got {n}")
+# The sweep was edited: a's s101 is now a run of other settings (another key), still to do.
+# The done row of the old settings proves nothing about it and gives way; with the old key back, nothing changes.
+index([("a", 101, "pending", "", 0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
+       ("b", 102, "done", 6.0, 50.0)], keys={("a", 101): "kother"})
+n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+rows = {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results" / "scaling-runs.csv"))}
+check(n == 3 and rows[("a", "101")]["status"] == "pending" and rows[("a", "101")]["run_key"] == "kother",
+      f"a done row of other settings is kept ({n}, {rows[('a', '101')]})")
+check(rows[("a", "102")]["run_key"] == "ka102", f"the ledger keeps the run key: {rows[('a', '102')]}")
+index([("a", 101, "done", 3.0, 100.0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
+       ("b", 102, "done", 6.0, 50.0)])
+n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+check(n == 4, f"a's s101 of the first settings, found again: 4 expected, got {n}")
 sr.summary(str(work / "results"))
 md = (work / "results" / "tune-direct.md").read_text()
 check("| b | 2 | 5.25 |" in md, "b's median of 4.5 and 6.0\n" + md)
@@ -71,7 +86,7 @@ check("| a | 2 | 4.00 | [3.50, 4.50] | 100 | 40.0 |" in md, "a's row: median, IQ
 # A hybrid study tunes two methods: a winner for each, not one over both.
 (work / "studies" / "tune-hybrid-c8").mkdir()
 (work / "studies" / "tune-hybrid-c8" / "index.csv").write_text(HEADER + "".join(
-    f"runs/{c}/s{s},{c},x,{s},done,{b},10,2500,50,{b},abc\n"
+    f"runs/{c}/s{s},{c},x,{s},done,{b},10,2500,50,{b},abc,k{c}{s}\n"
     for c, s, b in [("offset-s0.1", 101, 7.0), ("offset-s0.3", 101, 8.0), ("switch-0.3", 101, 20.0),
                     ("switch-0.5", 101, 25.0)]))
 sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8", "tune-hybrid-c8"])

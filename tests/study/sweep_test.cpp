@@ -287,7 +287,7 @@ TEST(Sweep, RunsEveryTaskInItsFolderAndMatchesAPlainRun) {
     ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --jobs 2", dir / "log"), 0) << read_text(dir / "log");
     const std::string index = read_text(dir / "study" / "index.csv");
     EXPECT_EQ(index.rfind("run_dir,config,GP.elitism,Neural.sampleAverageCount,seed,status,final_best,generations,"
-                          "evaluations,wall_seconds,best_ever,commit\n",
+                          "evaluations,wall_seconds,best_ever,commit,run_key\n",
                           0),
               0u)
         << index;
@@ -298,7 +298,7 @@ TEST(Sweep, RunsEveryTaskInItsFolderAndMatchesAPlainRun) {
     const std::string commit = version.substr(at, version.find('\n', at) - at);
     ASSERT_FALSE(commit.empty()) << version;
     std::size_t rows = 0;
-    for (std::size_t p = index.find('\n'); (p = index.find("," + commit + "\n", p)) != std::string::npos; ++p) ++rows;
+    for (std::size_t p = index.find('\n'); (p = index.find("," + commit + ",", p)) != std::string::npos; ++p) ++rows;
     EXPECT_EQ(rows, 12u) << index;
     // best_ever is the largest best of the run's generations, as stats.csv writes it.
     {
@@ -406,6 +406,18 @@ TEST(Sweep, EditedSweepUsesTheRunsOfItsNewSettings) {
     write_text(dir / "s.xml", text);
     ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "first.log"), 0) << read_text(dir / "first.log");
     const fs::path run = dir / "e/runs/R0/s4", old = fs::canonical(run);
+    // The run's key, the name of its store folder, is in index.csv and in the dry run:
+    // a record kept elsewhere (scripts/scaling.sh's ledger) can tell the run the sweep asks for.
+    const std::string old_key = old.filename().string();
+    ASSERT_EQ(old_key.size(), 16u) << old;
+    auto last_cell = [&] {   // index.csv's one row ends with the run's key
+        const std::string index = read_text(dir / "e/index.csv");
+        return index.substr(index.rfind(',') + 1);
+    };
+    EXPECT_EQ(last_cell(), old_key + "\n");
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --dry-run", dir / "dry0.log"), 0);
+    EXPECT_NE(read_text(dir / "dry0.log").find(" done         runs/R0/s4 key=" + old_key + " (skipped)\n"), std::string::npos)
+        << read_text(dir / "dry0.log");
     std::string edited = text;
     edited.replace(edited.find("GP.tournament_size=3"), 20, "GP.tournament_size=4");
     write_text(dir / "s.xml", edited);
@@ -417,6 +429,11 @@ TEST(Sweep, EditedSweepUsesTheRunsOfItsNewSettings) {
     EXPECT_NE(fs::canonical(run), old);
     EXPECT_NE(read_text(run / "settings.xml").find("<tournament_size>4</tournament_size>"), std::string::npos);
     EXPECT_TRUE(fs::exists(old / "summary.txt"));
+    const std::string new_key = fs::canonical(run).filename().string();
+    EXPECT_NE(new_key, old_key);
+    EXPECT_NE(read_text(dir / "dry.log").find(" pending      runs/R0/s4 key=" + new_key + " cic --settings "), std::string::npos)
+        << read_text(dir / "dry.log");
+    EXPECT_EQ(last_cell(), new_key + "\n");
     write_text(dir / "s.xml", text);   // back to the first settings: their run is found, nothing runs
     ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string(), dir / "third.log"), 0) << read_text(dir / "third.log");
     EXPECT_NE(read_text(dir / "third.log").find("0 of 1 runs to do"), std::string::npos) << read_text(dir / "third.log");

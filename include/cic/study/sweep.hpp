@@ -97,16 +97,22 @@ TaskState task_state(const SweepPlan& plan, const SweepTask& task);
 // sweep file): index.csv and `cic export` leave them out, so the sweep says so.
 std::vector<std::filesystem::path> runs_outside_the_plan(const SweepPlan& plan);
 
+// What a task computes, as 16 hex digits: the FNV-1a of cic's version and the
+// task's settings that differ from the defaults (without the run's name, output
+// folder and worker count, which change no result; a file key by its bytes, not
+// its path). The run store's KEY; in index.csv and --dry-run, so that a record of
+// a run kept elsewhere (a ledger) can tell whether the sweep still asks for it.
+std::string run_key(const SweepPlan& plan, const SweepTask& task);
+
 // Rewrites STUDY/index.csv (atomically, under a lock shared by every task):
-// run_dir,config,<varied keys>,seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit
-// (commit: the cic build of the run's last session, from its run.log; provenance.hpp)
+// run_dir,config,<varied keys>,seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit,run_key
+// (commit: the cic build of the run's last session, from its run.log; provenance.hpp;
+// run_key: the settings the sweep asks of the task, run_key above)
 void write_index(const SweepPlan& plan);
 
-// The run store folder of a task (plan.store must be set): STORE/KEY, KEY the
-// FNV-1a of cic's version and the task's settings that differ from the
-// defaults (without the run's name, output folder and worker count, which
-// change no result); or the store folder whose settings.xml has that
-// fingerprint, when an older cic named it otherwise.
+// The run store folder of a task (plan.store must be set): STORE/KEY, KEY its
+// run_key; or the store folder whose settings.xml has that fingerprint, when an
+// older cic named it otherwise.
 std::filesystem::path store_dir(const SweepPlan& plan, const SweepTask& task);
 
 // With a store: makes every task's runs/CONFIG/sSEED a relative link to its
