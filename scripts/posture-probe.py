@@ -147,7 +147,9 @@ def variants(run, work):
         d.mkdir(parents=True)
         shutil.copy(where, d / "settings.xml")
         y = list(x)
-        for j, o in enumerate(offsets[name]):
+        # The original keeps its genes as the run saved them (re-encoding its offsets
+        # could move the last bits), so its replay is the run's own raw eq. 7.1.
+        for j, o in enumerate(offsets[name] if name != "original" else []):
             y[3 + 3 * j] = (max(-1.0, min(1.0, o / (math.pi / 2))) + 1) / 2
         edited = text[:m.start(2)] + " ".join(repr(t) for t in y) + text[m.end(2):]
         # The champion is edited on purpose: the copy drops the checkpoint's
