@@ -9,7 +9,9 @@ runs of the same configuration on the same robot (centipede-8 and R1 were tuned 
 comparison's budgets), else of the robot's finished runs, else results/estimate.md's CPU figure
 for the robot (which the finished runs matched within about 10 %: docs/scaling.md, "Run-time
 estimate"). Nothing is written and no
-run folder is read, so it is safe beside a running study."""
+run folder is read, so it is safe beside a running study. It does not ask cic for run keys: a
+done row of settings the sweep no longer asks (an edit keeping a configuration's name) counts
+as done here, though `scaling.sh compare` runs it again (its --dry-run lists exactly what will run)."""
 import os
 import re
 import statistics
