@@ -151,15 +151,20 @@ run_studies() {   # STUDY...
     # Each pending run against the ledger's done rows (columns found by name), matched
     # by study and run folder: "skip" (same run key), "stale TASK RUN_DIR" (a row of
     # another key, or none: it runs again) or "run TASK RUN_DIR" (no done row).
+    # (The ledger is read in BEGIN: with NR == FNR an empty or missing ledger would
+    # take the pending runs for its own rows, and nothing would run.)
     mapfile -t verdicts < <(printf '%s\n' "${pending[@]}" |
-      awk -F, -v s="$s" 'NR == FNR { if (FNR == 1) { for (i = 1; i <= NF; i++) col[$i] = i; next }
-                                     if ($col["study"] == s && $col["status"] == "done")
-                                       done_key[$col["run_dir"]] = ("run_key" in col) ? $col["run_key"] : ""
-                                     next }
-                         !NF { next }
-                         !($2 in done_key) { print "run " $1 " " $2; next }
-                         done_key[$2] == $3 && $3 != "" { print "skip"; next }
-                         { print "stale " $1 " " $2 }' "$ledger_csv" FS=' ' -)
+      awk -v s="$s" -v ledger="$ledger_csv" 'BEGIN {
+            while ((getline line < ledger) > 0) {
+              n = split(line, f, ",")
+              if (++row == 1) { for (i = 1; i <= n; i++) col[f[i]] = i; continue }
+              if (f[col["study"]] == s && f[col["status"]] == "done")
+                done_key[f[col["run_dir"]]] = ("run_key" in col) ? f[col["run_key"]] : ""
+            } }
+          !NF { next }
+          !($2 in done_key) { print "run " $1 " " $2; next }
+          done_key[$2] == $3 && $3 != "" { print "skip"; next }
+          { print "stale " $1 " " $2 }')
     kept=() skipped=0 stale=0
     for item in "${verdicts[@]}"; do
       case "$item" in

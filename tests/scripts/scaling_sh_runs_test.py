@@ -8,7 +8,8 @@ variant, seeds 1 and 2) and a ledger that has every run done but two (one
 missing, one failed), and two done rows that prove nothing of the run the
 sweep now asks for (one of another run key, as after an edit of the sweep,
 one without a key):
-  --dry-run lists exactly those four and writes nothing;
+  --dry-run lists exactly those four and writes nothing (and, before there is
+  a ledger, all twenty);
   --dry-run with another stage, --commit or --summary-only, or with a cic
   whose dry run gives no run keys, is refused (exit 2);
   the real stage runs those four (done in the ledger after it, with the
@@ -80,19 +81,25 @@ for robot in ROBOTS:
         rows.append(dict(study=study, config="direct", seed=seed, status=status, best_ever="1.5" if status == "done" else "",
                          evaluations="16", wall_seconds="1.000", run_dir=f"runs/direct/s{seed}", commit="earlier",
                          run_key=key))
-ledger = results / "scaling-runs.csv"
-with open(ledger, "w", newline="") as f:
-    w = csv.DictWriter(f, FIELDS, lineterminator="\n")
-    w.writeheader()
-    w.writerows(rows)
-before = ledger.read_bytes()
-
 env = {"PATH": "/usr/bin:/bin", "CIC": cic, "PYTHON": sys.executable}
 
 
 def scaling(*args):
     return subprocess.run(["bash", str(root / "scripts" / "scaling.sh"), "--output", str(studies), *args],
                           capture_output=True, text=True, env=env)
+
+
+# No ledger yet (a new study): every run is to go.
+p = scaling("--dry-run", "compare")
+check(p.returncode == 0 and len(p.stdout.splitlines()) == 20 and "not run again" not in p.stderr,
+      f"--dry-run without a ledger lists {len(p.stdout.splitlines())} runs, not all 20\n{p.stdout}{p.stderr}")
+
+ledger = results / "scaling-runs.csv"
+with open(ledger, "w", newline="") as f:
+    w = csv.DictWriter(f, FIELDS, lineterminator="\n")
+    w.writeheader()
+    w.writerows(rows)
+before = ledger.read_bytes()
 
 
 p = scaling("--dry-run", "compare")
