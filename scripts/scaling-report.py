@@ -85,8 +85,9 @@ def ledger(studies, results, names):
             key = (name, r["config"], r["seed"])
             listed.add(key)
             old = rows.get(key)
+            key_now = r.get("run_key", "")   # none in an index of a cic older than run keys
             if (r["status"] != "done" and old and old["status"] == "done" and
-                    old.get("run_key", "") == r.get("run_key", "")):
+                    (not key_now or old.get("run_key", "") == key_now)):
                 continue   # a finished run of an earlier sitting whose folder is gone
             # (a done row of another run key is of settings the sweep no longer asks: replaced)
             rows[key] = {"study": name, **{f: r.get(f, "") for f in FIELDS if f != "study"}}

@@ -77,6 +77,18 @@ index([("a", 101, "done", 3.0, 100.0), ("a", 102, "done", 5.0, 100.0), ("b", 101
        ("b", 102, "done", 6.0, 50.0)])
 n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
 check(n == 4, f"a's s101 of the first settings, found again: 4 expected, got {n}")
+# An index of a cic older than run keys (no run_key column) says nothing of the settings: a done
+# row whose folder is gone stays.
+index([("a", 101, "pending", "", 0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
+       ("b", 102, "done", 6.0, 50.0)])
+path = work / "studies" / "tune-direct-c8" / "index.csv"
+path.write_text("\n".join(line.rsplit(",", 1)[0] for line in path.read_text().splitlines()) + "\n")
+check(path.read_text().startswith("run_dir,config,Gait.optimizer,seed,status,final_best,generations,evaluations,"
+                                  "wall_seconds,best_ever,commit\n"), path.read_text())
+n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+rows = {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results" / "scaling-runs.csv"))}
+check(n == 4 and rows[("a", "101")]["status"] == "done",
+      f"an older cic's index dropped a done row ({n}, {rows[('a', '101')]})")
 sr.summary(str(work / "results"))
 md = (work / "results" / "tune-direct.md").read_text()
 check("| b | 2 | 5.25 |" in md, "b's median of 4.5 and 6.0\n" + md)
