@@ -8,7 +8,9 @@ own finished runs: the median wall_seconds / evaluations of the same method, els
 runs of the same configuration on the same robot (centipede-8 and R1 were tuned at the
 comparison's budgets), else of the robot's finished runs, else results/estimate.md's CPU figure
 for the robot (which the finished runs matched within about 10 %: docs/scaling.md, "Run-time
-estimate"). Nothing is written and no
+estimate"), scaled by its twin's measured over estimated seconds when the twin (the regular robot
+of an irregular one, or the other way) has finished runs: the 96-hinge centipede's runs took 1.17
+times its figure, so its 88-hinge twin's are expected to as well. Nothing is written and no
 run folder is read, so it is safe beside a running study. It does not ask cic for run keys: a
 done row of settings the sweep no longer asks (an edit keeping a configuration's name) counts
 as done here, though `scaling.sh compare` runs it again (its --dry-run lists exactly what will run)."""
@@ -39,6 +41,18 @@ def per_evaluation(done):
     return statistics.median(float(r["wall_seconds"]) / int(r["evaluations"]) for r in done)
 
 
+def twin(robot):
+    return robot[:-len("-irregular")] if robot.endswith("-irregular") else robot + "-irregular"
+
+
+def twin_scale(robot, measured, figures):
+    """The twin's measured over estimated seconds per evaluation, or 1 (no twin with finished runs)."""
+    other = twin(robot)
+    if other in measured and figures.get(other):
+        return measured[other] / figures[other]
+    return 1.0
+
+
 def status(results, sweeps, jobs):
     """The table's lines: per compare sweep what is done, what is to go and its core-hours; the total."""
     ledger = os.path.join(results, "scaling-runs.csv")
@@ -50,15 +64,21 @@ def status(results, sweeps, jobs):
     finished_rows = finished(ledger_rows(results))
     done_rows = {(r["study"], r["config"], r["seed"]): r for r in finished_rows if r["study"].startswith("compare-")}
     figures = estimate_figures(results)
+    plans = {}   # robot: its sweep's name and (study, config, seed) runs
+    for robot in robots:
+        sweep = sc.read_sweep(os.path.join(sweeps, f"compare-{robot}.xml"))
+        plans[robot] = [(sweep["name"], v, str(seed)) for v in sweep["variants"] for seed in sweep["seeds"]]
+    # robot: the median s per evaluation of its finished runs (of the sweep as it is)
+    measured = {robot: per_evaluation([done_rows[k] for k in planned if k in done_rows])
+                for robot, planned in plans.items() if any(k in done_rows for k in planned)}
     out = ["| study | runs | done | to go | s per evaluation | core-hours left |", "|---|---|---|---|---|---|"]
     totals = [0, 0, 0, 0.0]
     for robot in robots:
-        sweep = sc.read_sweep(os.path.join(sweeps, f"compare-{robot}.xml"))
-        planned = [(sweep["name"], v, str(seed)) for v in sweep["variants"] for seed in sweep["seeds"]]
+        planned = plans[robot]
         done = [done_rows[k] for k in planned if k in done_rows]
         left = [k for k in planned if k not in done_rows]
         budget = sc.R_BUDGET if robot in sc.R_ROBOTS else sc.CENTIPEDE_BUDGET
-        robot_sec = per_evaluation(done) if done else None
+        robot_sec = measured.get(robot)
         hours = 0.0
         for _, config, _ in left:
             same = [d for d in done if method_of(d["config"]) == method_of(config)]
@@ -70,7 +90,7 @@ def status(results, sweeps, jobs):
             elif robot_sec is not None:
                 sec = robot_sec
             elif robot in figures:
-                sec = figures[robot]
+                sec = figures[robot] * twin_scale(robot, measured, figures)
             else:
                 raise sc.Refusal(f"status: compare-{robot} has runs to go, no finished run to time them by and "
                                  f"no figure for {robot} in {os.path.join(results, 'estimate.md')} "
@@ -78,6 +98,9 @@ def status(results, sweeps, jobs):
             hours += budget * sec / 3600
         if robot_sec is not None:
             spe = f"{robot_sec:.3f}"
+        elif robot in figures and twin_scale(robot, measured, figures) != 1.0:
+            scale = twin_scale(robot, measured, figures)
+            spe = f"{figures[robot] * scale:.3f} (estimate.md's {figures[robot]:.3f} × {scale:.2f}, as its twin's runs took)"
         else:
             spe = f"{figures[robot]:.3f} (estimate.md)" if robot in figures else ""
         out.append(f"| compare-{robot} | {len(planned)} | {len(done)} | {len(left)} | {spe} | {hours:.1f} |")

@@ -2,7 +2,8 @@
 """Scripts.ScalingStatus: scripts/scaling-report.py status counts each compare sweep's runs
 (variants times seeds) against the ledger's finished ones, ignores ledger rows of variants
 the sweep no longer runs, times the runs to go by the same method's finished runs, else the
-robot's, else results/estimate.md, and refuses bad input with exit 2.
+robot's, else results/estimate.md (scaled by the twin robot's measured over estimated
+seconds when the twin has finished runs), and refuses bad input with exit 2.
 
     scaling_status_test.py SOURCE_DIR WORK_DIR
 """
@@ -51,8 +52,10 @@ def run(*extra):
 
 
 sweep("centipede-2", ["direct.a", "hypergp-gait"])
+sweep("centipede-2-irregular", ["direct.a"])
 sweep("r1", ["direct.sepcmaes-s0.15", "offset-hybrid.b", "switch-hybrid.c"])
-(results / "estimate.md").write_text("| robot | s per evaluation |\n|---|---|\n| R1 | 0.036 |\n| centipede-2 | 9.000 |\n")
+(results / "estimate.md").write_text("| robot | s per evaluation |\n|---|---|\n| R1 | 0.036 |\n| centipede-2 | 0.100 |\n"
+                                     "| centipede-2-irregular | 0.300 |\n")
 ledger([("compare-centipede-2", "direct.a", 1, "done", 250),          # 0.1 s per evaluation
         ("compare-centipede-2", "direct.a", 2, "done", 500),          # 0.2
         ("compare-centipede-2", "hypergp-gait", 1, "done", 1000),     # 0.4
@@ -68,13 +71,17 @@ lines = p.stdout.splitlines()
 # centipede-2: direct seed 3 at its own 0.15, HyperGP-gait seeds 2 and 3 at its own 0.4:
 # 2500 * (0.15 + 0.8) / 3600 = 0.66 core-hours; the robot's median of 0.1, 0.2, 0.4 is 0.200.
 check("| compare-centipede-2 | 6 | 3 | 3 | 0.200 | 0.7 |" in lines, "timed by the same method first\n" + p.stdout)
-# R1: nothing finished; the direct runs at their tuning runs' 0.05, the hybrids at estimate.md's 0.036,
+# The 11-hinge twin: nothing finished; estimate.md's 0.3 times its twin's 0.200 measured over 0.100
+# estimated: 0.6 s per evaluation, 3 * 2500 * 0.6 / 3600 = 1.25 core-hours.
+check("| compare-centipede-2-irregular | 3 | 0 | 3 | 0.600 (estimate.md's 0.300 × 2.00, as its twin's runs took) | 1.2 |"
+      in lines, "scaled by its twin's measured over estimated time\n" + p.stdout)
+# R1: nothing finished (and no twin); the direct runs at their tuning runs' 0.05, the hybrids at estimate.md's 0.036,
 # 15,000 evaluations: 3 * 15000 * 0.05 / 3600 + 6 * 15000 * 0.036 / 3600 = 1.525 core-hours.
 check("| compare-r1 | 9 | 0 | 9 | 0.036 (estimate.md) | 1.5 |" in lines,
       "the tuning runs of the same configuration, else estimate.md\n" + p.stdout)
-check("| **total** | 15 | 3 | 12 | | **2.2** |" in lines, "the total\n" + p.stdout)
-check(lines[-1].startswith("About 1.1 hours of wall time at 2 runs at a time"), "wall time at --jobs 2\n" + p.stdout)
-check(run("--jobs", "1").stdout.splitlines()[-1].startswith("About 2.2 hours of wall time at 1 run at a time"),
+check("| **total** | 18 | 3 | 15 | | **3.4** |" in lines, "the total\n" + p.stdout)
+check(lines[-1].startswith("About 1.7 hours of wall time at 2 runs at a time"), "wall time at --jobs 2\n" + p.stdout)
+check(run("--jobs", "1").stdout.splitlines()[-1].startswith("About 3.4 hours of wall time at 1 run at a time"),
       "wall time at --jobs 1")
 check(not any(results.glob("*.tmp*")) and sorted(x.name for x in results.iterdir()) == ["estimate.md",
                                                                                         "scaling-runs.csv"],
@@ -85,7 +92,8 @@ for extra, want in ((["--jobs", "0"], "--jobs takes a positive whole number, got
                     (["--bogus", "1"], "unknown or incomplete option '--bogus'")):
     p = run(*extra)
     check(p.returncode == 2 and want in p.stderr and p.stdout == "", f"{extra}: {p.returncode} {p.stderr}")
-(results / "estimate.md").write_text("| robot | s per evaluation |\n|---|---|\n| centipede-2 | 9.000 |\n")
+(results / "estimate.md").write_text("| robot | s per evaluation |\n|---|---|\n| centipede-2 | 9.000 |\n"
+                                     "| centipede-2-irregular | 9.000 |\n")
 p = run()
 check(p.returncode == 2 and "compare-r1 has runs to go" in p.stderr and "scripts/scaling.sh estimate" in p.stderr,
       f"no way to time R1: {p.returncode} {p.stderr}")
