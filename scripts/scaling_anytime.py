@@ -26,7 +26,7 @@ import statistics
 import sys
 
 import scaling_compare as sc
-from scaling_results import LABELS, compare_rows, finished, method_of, robot_of, save_svg
+from scaling_results import LABELS, compare_rows, finished, method_of, read_cache, robot_of, save_svg
 
 STEPS = [5 * k for k in range(1, 21)]   # per cent of the budget
 TABLE_STEPS = [10, 20, 30, 50, 70, 100]
@@ -60,9 +60,7 @@ def anytime_rows(results, studies, ledger):
     """{(study, config, seed): [value or None per STEPS]} of LEDGER's finished compare runs (superseded
     rows left out), reading the new ones' stats.csv and caching them in RESULTS."""
     cache_path = os.path.join(results, "compare-anytime.csv")
-    cache = {}
-    if os.path.exists(cache_path):
-        cache = {(r["study"], r["config"], r["seed"], r["best_ever"]): r for r in csv.DictReader(open(cache_path))}
+    cache = read_cache(cache_path)
     changed = False
     out = {}
     for r in ledger:

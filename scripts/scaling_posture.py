@@ -34,7 +34,7 @@ import sys
 import tempfile
 
 import scaling_compare as sc
-from scaling_results import compare_rows, finished, method_of, robot_of
+from scaling_results import compare_rows, finished, method_of, read_cache, robot_of
 
 PROBE = os.path.join(sc.ROOT, "scripts", "posture-probe.py")
 VARIANTS = ["offsets 0", "smooth, 2 terms", "smooth, 4 terms", "by axis, 2 terms", "mirrored"]
@@ -57,13 +57,6 @@ def method_runs(results, studies, method):
         key = (r["study"], r["config"], r["seed"], r["best_ever"])
         out.setdefault(robot_of(r["study"]), []).append((key, os.path.join(studies, r["study"], r["run_dir"])))
     return out
-
-
-def read_cache(results):
-    path = os.path.join(results, CACHE)
-    if not os.path.exists(path):
-        return {}
-    return {(r["study"], r["config"], r["seed"], r["best_ever"]): r for r in csv.DictReader(open(path))}
 
 
 def to_replay(runs_by_robot, cache):
@@ -187,7 +180,7 @@ def posture(results, studies, cic, command):
         raise sc.Refusal(f"posture: {os.path.join(results, 'scaling-runs.csv')} has no finished direct run of a "
                          "compare study")
     hybrid_runs = method_runs(results, studies, "offset-hybrid")
-    cache = read_cache(results)
+    cache = read_cache(os.path.join(results, CACHE))
     # Replay what is not cached yet: the probe per robot, the hybrids in one cic assess.
     fresh = {}
     for robot, paths in to_replay(runs, cache).items():

@@ -79,6 +79,7 @@ def status(results, sweeps, jobs):
         left = [k for k in planned if k not in done_rows]
         budget = sc.R_BUDGET if robot in sc.R_ROBOTS else sc.CENTIPEDE_BUDGET
         robot_sec = measured.get(robot)
+        scale = twin_scale(robot, measured, figures)   # for estimate.md's figure
         hours = 0.0
         for _, config, _ in left:
             same = [d for d in done if method_of(d["config"]) == method_of(config)]
@@ -90,7 +91,7 @@ def status(results, sweeps, jobs):
             elif robot_sec is not None:
                 sec = robot_sec
             elif robot in figures:
-                sec = figures[robot] * twin_scale(robot, measured, figures)
+                sec = figures[robot] * scale
             else:
                 raise sc.Refusal(f"status: compare-{robot} has runs to go, no finished run to time them by and "
                                  f"no figure for {robot} in {os.path.join(results, 'estimate.md')} "
@@ -98,8 +99,7 @@ def status(results, sweeps, jobs):
             hours += budget * sec / 3600
         if robot_sec is not None:
             spe = f"{robot_sec:.3f}"
-        elif robot in figures and twin_scale(robot, measured, figures) != 1.0:
-            scale = twin_scale(robot, measured, figures)
+        elif robot in figures and scale != 1.0:
             spe = f"{figures[robot] * scale:.3f} (estimate.md's {figures[robot]:.3f} × {scale:.2f}, as its twin's runs took)"
         else:
             spe = f"{figures[robot]:.3f} (estimate.md)" if robot in figures else ""
