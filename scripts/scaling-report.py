@@ -86,10 +86,12 @@ def ledger(studies, results, names):
             listed.add(key)
             old = rows.get(key)
             key_now = r.get("run_key", "")   # none in an index of a cic older than run keys
-            if (r["status"] != "done" and old and old["status"] == "done" and
+            if (r["status"] == "pending" and old and old["status"] == "done" and
                     (not key_now or old.get("run_key", "") == key_now)):
                 continue   # a finished run of an earlier sitting whose folder is gone
-            # (a done row of another run key is of settings the sweep no longer asks: replaced)
+            # A done row of another run key is of settings the sweep no longer asks, and a folder
+            # that is there but not done (interrupted, running, failed) says the row was wrong:
+            # both are replaced.
             rows[key] = {"study": name, **{f: r.get(f, "") for f in FIELDS if f != "study"}}
         for key, row in rows.items():
             if key[0] == name and key not in listed:

@@ -47,7 +47,7 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
     cmd.option("--workers", o->workers, "worker processes per run (default: cores / jobs, at least 1)")
         .range(0, 4096);
     cmd.option("--output", o->output, "study folder (default: the sweep file's <output>, else runs/NAME)");
-    cmd.flag("--dry-run", o->dry_run, "list every run with its status and command; run nothing");
+    cmd.flag("--dry-run", o->dry_run, "list every run with its status, run key (key=) and command; run nothing");
     cmd.flag("--index-only", o->index_only,
                   "rewrite STUDY/index.csv from the run folders, linking runs already stored; run nothing");
     cmd.flag("--slurm", o->slurm, "write STUDY/slurm.sh, a job array with one task per run");

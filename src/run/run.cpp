@@ -71,7 +71,7 @@ int run_experiment(PreparedRun prepared, const RunOptions& opt) {
         if (stop.done()) break;
         emit(search->step());
     }
-    console.summary(search->summary(stop));
+    console.summary(search->summary(stop), stop.interrupted ? RunEnd::Interrupted : RunEnd::Done);
     if (stop.interrupted) return console.interrupted();
     finish_run(s, opt, console);
     return 0;

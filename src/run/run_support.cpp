@@ -77,9 +77,10 @@ void RunConsole::warn(const std::string& line) {
     else progress_.message(line);
 }
 
-void RunConsole::summary(const std::string& result) {
-    // Where it came from, after the result: never in population files or anything hashed.
-    const std::string text = result + summary_tail(started_, std::chrono::system_clock::now());
+void RunConsole::summary(const std::string& result, RunEnd end) {
+    // How the run ended (the loop's word, not the search's text), then where it
+    // came from: never in population files or anything hashed.
+    const std::string text = result + status_line(end) + summary_tail(started_, std::chrono::system_clock::now());
     io::xml::write_file_atomically(opt_.run_dir / "summary.txt", text);
     progress_.finish();
     log_ << text << std::flush;

@@ -13,6 +13,7 @@
 #include "cic/run/progress.hpp"
 #include "cic/run/provenance.hpp"
 #include "cic/run/run.hpp"
+#include "cic/run/run_status.hpp"
 #include "cic/experiments/experiment.hpp"
 #include "cic/gp/evolution.hpp"
 #include "cic/io/gait_xml.hpp"
@@ -50,8 +51,9 @@ public:
     // run.log only.
     void log(const std::string& line);
     void progress(const ProgressLine& line) { progress_(line); }
-    // summary.txt (atomically), run.log, and stdout even with --quiet.
-    void summary(const std::string& text);
+    // summary.txt (atomically), run.log, and stdout even with --quiet: the
+    // search's TEXT, how the run ended (run_status.hpp) and where it came from.
+    void summary(const std::string& text, RunEnd end);
     // After a stop signal: says where the state was saved; returns the exit
     // code (130 for SIGINT, 143 for SIGTERM).
     int interrupted();

@@ -19,6 +19,7 @@
 
 #include "cic/run/provenance.hpp"
 #include "cic/run/run.hpp"
+#include "cic/run/run_status.hpp"
 #include "cic/run/settings_diff.hpp"
 #include "cic/study/sweep.hpp"
 #include "cic/core/error.hpp"
@@ -55,11 +56,9 @@ private:
     int fd_ = -1;
 };
 
-std::string first_line(const fs::path& p) {
-    std::ifstream in(p);
-    std::string line;
-    std::getline(in, line);
-    return line;
+std::string read_text(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 std::vector<std::string> split(const std::string& line) {
@@ -164,8 +163,9 @@ TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
         const FileLock probe(dir / ".lock", false);
         st.status = probe.held() ? TaskStatus::Extend : TaskStatus::Running;
     } else if (fs::exists(dir / "summary.txt")) {
-        st.status = first_line(dir / "summary.txt").rfind("stopped: interrupted", 0) == 0 ? TaskStatus::Interrupted
-                                                                                           : TaskStatus::Done;
+        st.status = run::run_end_of_summary(read_text(dir / "summary.txt")) == run::RunEnd::Interrupted
+                        ? TaskStatus::Interrupted
+                        : TaskStatus::Done;
     } else {
         // No summary: running if some process holds the task's lock, else killed.
         const FileLock probe(dir / ".lock", false);

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Scripts.ScalingReportLedgerAndEstimate: scripts/scaling-report.py merges a
 study's index.csv into the ledger, keeps a finished run whose folder is gone
-(while the index gives it the same run key; an index of other settings replaces it), keeps a run that left the sweep file as superseded (counted nowhere),
+(while the index gives it the same run key; an index of other settings replaces it, and so
+does a folder that is there but not done), keeps a run that left the sweep file as superseded (counted nowhere),
 lets a row found again replace its own, names the winner by median best_ever,
 and multiplies the plan out from seconds per evaluation.
 
@@ -89,6 +90,17 @@ n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
 rows = {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results" / "scaling-runs.csv"))}
 check(n == 4 and rows[("a", "101")]["status"] == "done",
       f"an older cic's index dropped a done row ({n}, {rows[('a', '101')]})")
+# A done row whose folder is there and says interrupted was never done (cic before the run loop's
+# status line read a Switch-HybrID run stopped in its gait phase as done): the index's row wins.
+index([("a", 101, "interrupted", 2.0, 40.0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
+       ("b", 102, "done", 6.0, 50.0)])
+n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+rows = {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results" / "scaling-runs.csv"))}
+check(n == 3 and rows[("a", "101")]["status"] == "interrupted",
+      f"an interrupted folder kept its wrong done row ({n}, {rows[('a', '101')]})")
+index([("a", 101, "done", 3.0, 100.0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
+       ("b", 102, "done", 6.0, 50.0)])
+sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
 sr.summary(str(work / "results"))
 md = (work / "results" / "tune-direct.md").read_text()
 check("| b | 2 | 5.25 |" in md, "b's median of 4.5 and 6.0\n" + md)

@@ -17,6 +17,7 @@
 #include "cic/study/sweep.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/io/xml.hpp"
+#include "support/expect_has.hpp"
 #include "support/run_helpers.hpp"
 
 namespace cic {
@@ -666,6 +667,48 @@ TEST(Sweep, SignalToTheSweepAloneStopsItsRunningTasks) {
     EXPECT_EQ(std::count(index.begin(), index.end(), '\n'), 3) << index;
     EXPECT_EQ(index.find(",done,"), std::string::npos) << index;
     EXPECT_NE(index.find(",interrupted,"), std::string::npos) << index;
+    fs::remove_all(dir);
+}
+
+// A Switch-HybrID run stopped in its gait phase is interrupted, not done: its
+// summary opens with the HyperGP phase's text, and index.csv once took that for a
+// finished run (issue 38's study recorded one such run as done, 1,101 of 2,500
+// evaluations in). A summary of cic before the run loop's status line is read by
+// its stop lines.
+TEST(Sweep, ASwitchHybridRunStoppedInItsGaitPhaseIsInterruptedNotDone) {
+    const auto dir = temp_dir("sweep-switch-term");
+    const std::string sets =
+        "<set>Neural.substrate=gait</set>\n  <set>Neural.switchPatience=2</set>\n  "
+        "<set>Gait.evaluations=1000000</set>\n  <set>Gait.populationSize=7</set>\n  "
+        "<set>Gait.restarts=ipop</set>\n  <variant name=\"switch\"/>";
+    write_text(dir / "s.xml", tiny_sweep_text("switch", dir / "study", 6, 100000, 2.5, sets, 1));
+    const pid_t pid = start_sweep(dir / "s.xml", dir / "sweep.log");
+    ASSERT_GE(pid, 0);
+    const fs::path run = dir / "study" / "runs" / "switch" / "s1";
+    const auto gait_rows = [&] {   // stats.csv rows after the hand-over
+        const std::string log = read_text(run / "run.log");
+        const auto at = log.find("switch: HyperGP hands over");
+        return at == std::string::npos ? 0 : lines(log.substr(at));
+    };
+    for (int i = 0; i < 2400 && gait_rows() < 3; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    ASSERT_GE(gait_rows(), 3) << "no hand-over in a minute\n" << read_text(run / "run.log");
+    kill(-pid, SIGTERM);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << read_text(dir / "sweep.log");
+    EXPECT_EQ(WEXITSTATUS(status), 143) << read_text(dir / "sweep.log");
+    const std::string summary = read_text(run / "summary.txt");
+    ASSERT_EQ(summary.rfind("HyperGP phase:\n", 0), 0u) << summary;
+    EXPECT_HAS(summary, "\nstatus: interrupted\n");
+    const std::string index = read_text(dir / "study" / "index.csv");
+    EXPECT_EQ(index.find(",done,"), std::string::npos) << index;
+    EXPECT_HAS(index, ",interrupted,");
+    // The same folder as an older cic left it: no status line.
+    const auto cut = summary.find("status: interrupted\n");
+    write_text(run / "summary.txt", summary.substr(0, cut) + summary.substr(cut + 20));
+    ASSERT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --dry-run", dir / "dry.log"), 0)
+        << read_text(dir / "dry.log");
+    EXPECT_HAS(read_text(dir / "dry.log"), "interrupted  runs/switch/s1");
     fs::remove_all(dir);
 }
 
