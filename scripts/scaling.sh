@@ -23,7 +23,9 @@
 #                and strips: results/compare.md, anytime.md, posture.md,
 #                strips.md and docs/img/scaling-*); Debian's python3 (scipy,
 #                numpy, matplotlib) unless PYTHON says otherwise, and the strips
-#                need the viewer build; every page is tried, a failed one named
+#                need the viewer build; every page is tried, a failed one named;
+#                when all are written, docs/scaling.md's quoted tables follow
+#                them (scripts/docs-blocks.py)
 #   status       run nothing: what is left of the comparison, from its sweeps
 #                and the committed ledger (safe beside a running study): per
 #                study the runs done and to go, core-hours left at the measured
@@ -259,7 +261,9 @@ main() {
           echo "== report: $page" >&2
           "$rpy" "$ROOT/scripts/scaling-report.py" "$page" "${args[@]}" || failed+=("$page")
         done
-        [ ${#failed[@]} = 0 ] || { echo "scaling.sh: report: ${failed[*]} failed (see above)" >&2; exit 1; } ;;
+        [ ${#failed[@]} = 0 ] || { echo "scaling.sh: report: ${failed[*]} failed (see above)" >&2; exit 1; }
+        # Every page written: docs/scaling.md's quoted tables follow them.
+        "$rpy" "$ROOT/scripts/docs-blocks.py" "$ROOT/docs/scaling.md" || { echo "scaling.sh: report: docs/scaling.md's quoted parts could not be written (see above)" >&2; exit 1; } ;;
       status)
         "$PY" "$ROOT/scripts/scaling-report.py" status --results "$HERE/results" --sweeps "$HERE" --jobs "$jobs" ;;
       estimate)
