@@ -85,7 +85,13 @@ public:
             const io::GaitHandover h = *gait->gait.handover;   // checked by io::check_compatible
             resumed_gait_line_ = fmt::format("Switch-HybrID: continuing the gait phase (HyperGP handed over after "
                                              "generation {}, {} evaluations)", h.generation, h.evaluations);
-            es_ = std::make_unique<EvolutionStrategy>(services, std::move(gait), h);
+            // The HyperGP phase's own summary went with the session that ran it (its run.log);
+            // this one says where it handed over, so every Switch-HybrID summary names both phases.
+            es_ = std::make_unique<EvolutionStrategy>(
+                services, std::move(gait), h,
+                fmt::format("HyperGP phase:\nhanded over after generation {} ({} evaluations; its summary is in the "
+                            "run.log of the session that ran it)\n\ngait phase ({} from the best's gait):\n",
+                            h.generation, h.evaluations, optimizer_name(s)));
             return;
         }
         std::unique_ptr<PopulationCheckpoint> population(static_cast<PopulationCheckpoint*>(resume.release()));

@@ -23,6 +23,7 @@
 #include "cic/io/population_xml.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/report/replay.hpp"
+#include "support/expect_has.hpp"
 #include "support/run_helpers.hpp"
 
 namespace cic {
@@ -232,6 +233,10 @@ TEST(SwitchHybrid, ResumingBeforeAtOrAfterTheSwitchGivesTheSameBytes) {
                                                                           "</populationXmlLoadFrom>"));
         ASSERT_EQ(r.rc, 0) << r.log;
         EXPECT_EQ(read_text(r.run / "population.xml"), want) << "resumed from generation " << from;
+        // Resumed before or after the switch, the summary names both phases, as the whole run's does.
+        const std::string summary = read_text(r.run / "summary.txt");
+        EXPECT_EQ(summary.rfind("HyperGP phase:\n", 0), 0u) << "resumed from generation " << from << "\n" << summary;
+        EXPECT_HAS(summary, "\n\ngait phase (cmaes from the best's gait):\nstopped: ");
     }
     // `cic resume` in place: a smaller budget, then the rest.
     const auto part = run_settings(dir, "part", switch_settings(60, 1, kPatience));
