@@ -33,6 +33,12 @@ def check(condition, message):
 HEADER = "run_dir,config,Gait.optimizer,seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit,run_key\n"
 
 
+def merge():
+    """Merge the index into the ledger: (finished runs, the ledger's rows by (config, seed))."""
+    n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+    return n, {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results" / "scaling-runs.csv"))}
+
+
 def index(rows, keys=None):
     """Rows (config, seed, status, best, wall); each run's key is k<config><seed> unless keys says otherwise."""
     keys = keys or {}
@@ -43,40 +49,37 @@ def index(rows, keys=None):
 
 index([("a", 101, "done", 3.0, 100.0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.0, 50.0),
        ("b", 102, "pending", "", 0)])
-n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+n, rows = merge()
 check(n == 3, f"3 finished runs expected, got {n}")
 # A later sitting: a's s101 folder is gone (pending again), b's s102 finished, b's s101 found again, changed.
 index([("a", 101, "pending", "", 0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
        ("b", 102, "done", 6.0, 50.0)])
-n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
-rows = {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results" / "scaling-runs.csv"))}
+n, rows = merge()
 check(n == 4, f"4 finished runs expected, got {n}")
 check(rows[("a", "101")]["best_ever"] == "3.0", "a finished run whose folder is gone keeps its row")
 check(rows[("b", "101")]["best_ever"] == "4.5", "a run found again replaces its row")
 # A configuration that left the sweep file (cic sweep leaves it out of index.csv): its rows are
 # kept as superseded and no longer count; listed again, it counts again.
 index([("a", 101, "pending", "", 0), ("a", 102, "done", 5.0, 100.0)])
-n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
-rows = {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results" / "scaling-runs.csv"))}
+n, rows = merge()
 check(n == 2 and rows[("b", "101")]["status"] == "superseded" and rows[("b", "101")]["best_ever"] == "4.5",
       f"b left the sweep: kept, superseded, not counted ({n}, {rows[('b', '101')]})")
 check(rows[("a", "101")]["status"] == "done", "a run whose folder is gone is still not superseded")
 index([("a", 101, "pending", "", 0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
        ("b", 102, "done", 6.0, 50.0)])
-n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+n, rows = merge()
 check(n == 4, f"b back in the sweep: its runs count again, 4 expected, got {n}")
 # The sweep was edited: a's s101 is now a run of other settings (another key), still to do.
 # The done row of the old settings proves nothing about it and gives way; with the old key back, nothing changes.
 index([("a", 101, "pending", "", 0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
        ("b", 102, "done", 6.0, 50.0)], keys={("a", 101): "kother"})
-n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
-rows = {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results" / "scaling-runs.csv"))}
+n, rows = merge()
 check(n == 3 and rows[("a", "101")]["status"] == "pending" and rows[("a", "101")]["run_key"] == "kother",
       f"a done row of other settings is kept ({n}, {rows[('a', '101')]})")
 check(rows[("a", "102")]["run_key"] == "ka102", f"the ledger keeps the run key: {rows[('a', '102')]}")
 index([("a", 101, "done", 3.0, 100.0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
        ("b", 102, "done", 6.0, 50.0)])
-n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+n, rows = merge()
 check(n == 4, f"a's s101 of the first settings, found again: 4 expected, got {n}")
 # An index of a cic older than run keys (no run_key column) says nothing of the settings: a done
 # row whose folder is gone stays.
@@ -86,21 +89,19 @@ path = work / "studies" / "tune-direct-c8" / "index.csv"
 path.write_text("\n".join(line.rsplit(",", 1)[0] for line in path.read_text().splitlines()) + "\n")
 check(path.read_text().startswith("run_dir,config,Gait.optimizer,seed,status,final_best,generations,evaluations,"
                                   "wall_seconds,best_ever,commit\n"), path.read_text())
-n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
-rows = {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results" / "scaling-runs.csv"))}
+n, rows = merge()
 check(n == 4 and rows[("a", "101")]["status"] == "done",
       f"an older cic's index dropped a done row ({n}, {rows[('a', '101')]})")
 # A done row whose folder is there and says interrupted was never done (cic before the run loop's
 # status line read a Switch-HybrID run stopped in its gait phase as done): the index's row wins.
 index([("a", 101, "interrupted", 2.0, 40.0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
        ("b", 102, "done", 6.0, 50.0)])
-n = sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
-rows = {(r["config"], r["seed"]): r for r in csv.DictReader(open(work / "results" / "scaling-runs.csv"))}
+n, rows = merge()
 check(n == 3 and rows[("a", "101")]["status"] == "interrupted",
       f"an interrupted folder kept its wrong done row ({n}, {rows[('a', '101')]})")
 index([("a", 101, "done", 3.0, 100.0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
        ("b", 102, "done", 6.0, 50.0)])
-sr.ledger(str(work / "studies"), str(work / "results"), ["tune-direct-c8"])
+merge()
 sr.summary(str(work / "results"))
 md = (work / "results" / "tune-direct.md").read_text()
 check("| b | 2 | 5.25 |" in md, "b's median of 4.5 and 6.0\n" + md)
