@@ -159,11 +159,17 @@ def cells(g):
     return out
 
 
-def score(g):
-    """Per cell: n, p, Holm-adjusted p, A12 and its interval, ratio of medians and its interval."""
+def score(g, waiting=frozenset()):
+    """Per cell: n, p, Holm-adjusted p, A12 and its interval, ratio of medians and its interval. The
+    cells of a robot in WAITING (runs still to come) get no Holm-adjusted p and stay out of the
+    family, so a robot's verdicts do not move with another robot's partial runs; when every run is
+    in, the family is every cell."""
     cs = cells(g)
     ps = [mann_whitney_p(g[r][m], g[r]["direct"]) for r, m in cs]
-    adj = holm(ps)
+    family = [i for i, (r, _) in enumerate(cs) if r not in waiting]
+    adj = [None] * len(cs)
+    for i, q in zip(family, holm([ps[i] for i in family])):
+        adj[i] = q
     out = {}
     for (r, m), p, q in zip(cs, ps, adj):
         x, y = g[r][m], g[r]["direct"]
@@ -180,7 +186,9 @@ def n_text(g, robot):
 
 
 def verdict(cell, g, robot, against=LABELS["direct"]):
-    if cell["holm"] is not None and cell["holm"] < ALPHA:
+    if cell["holm"] is None:
+        return f"runs to come ({n_text(g, robot)} so far)"
+    if cell["holm"] < ALPHA:
         return f"better than {against}" if cell["a12"] > 0.5 else f"worse than {against}"
     return f"no difference shown at {n_text(g, robot)}"
 
@@ -202,7 +210,8 @@ def table(g, sc_cells, against=LABELS["direct"], short="direct"):
             if c is None:
                 row += " | | | | |" if m == "direct" else " | | | | no direct runs to face |"
             else:
-                row += (f" {c['p']:.3g} | {c['holm']:.3g} | {c['a12']:.2f} [{c['a12_ci'][0]:.2f}, {c['a12_ci'][1]:.2f}] |"
+                holm_text = "" if c["holm"] is None else f"{c['holm']:.3g}"
+                row += (f" {c['p']:.3g} | {holm_text} | {c['a12']:.2f} [{c['a12_ci'][0]:.2f}, {c['a12_ci'][1]:.2f}] |"
                         f" {c['ratio']:.2f} [{c['ratio_ci'][0]:.2f}, {c['ratio_ci'][1]:.2f}] |"
                         f" {verdict(c, g, robot, against)} |")
             out.append(row)
@@ -212,7 +221,8 @@ def table(g, sc_cells, against=LABELS["direct"], short="direct"):
 def crossover(g, sc_cells, waiting):
     """The issue's question in one line: the smallest robot (by hinges) on which some HyperGP method beats
     the best direct one after Holm, or none; 'so far' while the study has runs to come (WAITING)."""
-    wins = sorted((sc.hinges(r), r, m) for (r, m), c in sc_cells.items() if c["holm"] < ALPHA and c["a12"] > 0.5)
+    wins = sorted((sc.hinges(r), r, m) for (r, m), c in sc_cells.items()
+                  if c["holm"] is not None and c["holm"] < ALPHA and c["a12"] > 0.5)
     lead = "Crossover so far" if waiting else "Crossover"
     if not wins:
         top = max(sc.hinges(r) for r in g)
@@ -239,21 +249,24 @@ def ipop_runs(baselines):
     return out
 
 
-def against_ipop(g, ipop, waiting):
+def against_ipop(g, ipop, waiting, unfinished=frozenset()):
     """The issue's second goal, cell by cell: each hybrid on R1 and R2 against issue 21's IPOP-CMA-ES,
     whichever direct method won R1's tuning. Holm runs over these cells only, a family apart from the
-    table's; WAITING says "so far"."""
+    table's, and, as there, not over a robot in UNFINISHED (runs to come); WAITING says "so far"."""
     h = {r: dict({m: g[r][m] for m in HYBRIDS if m in g.get(r, {})}, direct=ipop[r])
          for r in sc.R_ROBOTS if r in ipop and any(m in g.get(r, {}) for m in HYBRIDS)}
     if not h:
         return []
-    s = score(h)
+    s = score(h, unfinished)
+    tested = sum(c["holm"] is not None for c in s.values())
     out = ["", "## The second goal: a hybrid against IPOP-CMA-ES on R1 and R2", "",
            "Each hybrid faces issue 21's IPOP-CMA-ES runs at the same 15,000 evaluations (study "
            "walk-15000-cmaes-gait in", "experiments/baselines/results/walk-runs.csv, the method docs/baselines.md "
-           f"found 2-3 times ahead), with Holm over these {len(s)} cells only.", ""]
+           f"found 2-3 times ahead), with Holm over these {tested} cells only"
+           + ("" if tested == len(s) else " (a robot with runs to come waits for them)") + ".", ""]
     out += table(h, s, IPOP_LABEL, "IPOP")
-    won = [r for r in sc.R_ROBOTS if any(c["holm"] < ALPHA and c["a12"] > 0.5 for (rr, _), c in s.items() if rr == r)]
+    won = [r for r in sc.R_ROBOTS if any(c["holm"] is not None and c["holm"] < ALPHA and c["a12"] > 0.5
+                                         for (rr, _), c in s.items() if rr == r)]
     lead = "So far, a" if waiting else "A"
     if len(won) == len(sc.R_ROBOTS):
         head = f"{lead} hybrid beats IPOP-CMA-ES on R1 and R2 after Holm."
@@ -338,16 +351,20 @@ def results(results_dir, studies, cic, figure_path, baselines):
     g, borrowed = groups(raw_scores(results_dir, studies, cic), baselines, planned)
     if not g:
         raise sc.Refusal(f"results: no finished compare run in {os.path.join(results_dir, 'scaling-runs.csv')}")
-    s = score(g)
+    rows = compare_rows(results_dir)
+    unfinished = unfinished_robots(rows)
+    s = score(g, unfinished)
+    tested = sum(c["holm"] is not None for c in s.values())
+    family = (f"all {tested} cells of the table" if tested == len(s) else
+              f"the {tested} cells of the robots whose runs are all in (a robot with runs to come shows its p "
+              "but no verdict until they are in)")
     out = ["# The comparison of issue 38 (docs/scaling.md)", "",
            "Written by `scripts/scaling-report.py results` from `scaling-runs.csv`'s compare rows. Every run is",
            "scored on the raw eq. 7.1 of its replayed best (`cic assess`, cached in `compare-raw.csv`). Each",
            "HyperGP method faces the best direct method on the same robot: two-sided Mann-Whitney U, Holm over",
-           f"all {len(s)} cells of the table, A12 (the chance that the HyperGP method's run beats the direct one's)",
+           f"{family}, A12 (the chance that the HyperGP method's run beats the direct one's)",
            "and the ratio of medians with bootstrap 95 % intervals."]
     # "so far" while any of the design's robots, a planned method or a listed run is not in yet
-    rows = compare_rows(results_dir)
-    unfinished = unfinished_robots(rows)
     any_waiting = (bool(unfinished) or any(r not in g for r in sc.ROBOTS) or
                    any(m not in g.get(robot, {}) for robot, ms in planned.items() for m in ms))
     for robot in sorted(g):
@@ -362,7 +379,7 @@ def results(results_dir, studies, cic, figure_path, baselines):
     out.append("")
     out += table(g, s)
     out += evaluation_counts(results_dir)
-    quiet = [r for r in g if any((r, m) in s for m in sc.METHODS) and
+    quiet = [r for r in g if r not in unfinished and any((r, m) in s for m in sc.METHODS) and
              not any(s[(r, m)]["holm"] < ALPHA for m in sc.METHODS if (r, m) in s)]
     if quiet:
         out += ["", "No difference shown after Holm: " + "; ".join(f"{r} ({n_text(g, r)})" for r in quiet) + "."]
@@ -374,7 +391,7 @@ def results(results_dir, studies, cic, figure_path, baselines):
                 "runs are in."]
     r_waiting = (bool(unfinished & set(sc.R_ROBOTS)) or any(r not in g for r in sc.R_ROBOTS) or
                  any(m not in g.get(robot, {}) for robot in sc.R_ROBOTS for m in HYBRIDS))
-    out += against_ipop(g, ipop_runs(baselines), r_waiting)
+    out += against_ipop(g, ipop_runs(baselines), r_waiting, unfinished)
     sc.write_atomically(os.path.join(results_dir, "compare.md"), "\n".join(out) + "\n")
     figure(g, s, figure_path, shown)
     print(f"scaling-report.py: wrote {os.path.join(results_dir, 'compare.md')} and {figure_path}", file=sys.stderr)
