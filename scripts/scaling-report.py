@@ -50,12 +50,14 @@
       had found by 5 %, 10 %, ..., 100 % of the budget (their stats.csv, cached
       in RESULTS/compare-anytime.csv), against the best direct method's
       (scaling_anytime.py; matplotlib)
-  scaling-report.py status --results DIR [--sweeps DIR] [--jobs N]
+  scaling-report.py status --results DIR [--sweeps DIR] [--jobs N] [--cic CIC]
       print what is left of the comparison, read from the compare sweeps in SWEEPS
       (default experiments/scaling) and the ledger alone (safe beside a running
       study): per sweep its runs, those done and those to go, the core-hours left
       at the seconds per evaluation its finished runs took (else RESULTS/estimate.md's
-      figure), and the wall time at N runs at a time (default 2) (scaling_status.py)
+      figure), and the wall time at N runs at a time (default 2); with CIC a done row
+      counts only under the run key the sweep gives its run now (cic sweep --dry-run)
+      (scaling_status.py)
 Standard library only, but for results and anytime (and numpy for posture)."""
 import csv
 import os
@@ -220,7 +222,7 @@ def main(argv):
                  "strips": {"--results", "--studies", "--cic", "--out-images", "--robots", "--at"},
                  "posture": {"--results", "--studies", "--cic"},
                  "anytime": {"--results", "--studies", "--figure"},
-                 "status": {"--results", "--sweeps", "--jobs"}}[argv[1]]
+                 "status": {"--results", "--sweeps", "--jobs", "--cic"}}[argv[1]]
         args, i = {}, 2
         while i < len(argv):
             if argv[i] in flags:
@@ -251,7 +253,8 @@ def main(argv):
                 if not re.fullmatch(r"[1-9][0-9]*", jobs):
                     usage(f"scaling-report.py status: --jobs takes a positive whole number, got '{jobs}'")
                 print("\n".join(scaling_status.status(
-                    args["--results"], args.get("--sweeps", os.path.join(sc.ROOT, "experiments", "scaling")), int(jobs))))
+                    args["--results"], args.get("--sweeps", os.path.join(sc.ROOT, "experiments", "scaling")), int(jobs),
+                    args.get("--cic"))))
             elif argv[1] == "anytime":
                 import scaling_anytime
                 scaling_anytime.anytime(args["--results"], args["--studies"],

@@ -7,16 +7,18 @@ bound). A run to go costs its budget times the seconds per evaluation measured o
 own finished runs: the median wall_seconds / evaluations of the same method, else of the tuning
 runs of the same configuration on the same robot (centipede-8 and R1 were tuned at the
 comparison's budgets), else of the robot's finished runs, else results/estimate.md's CPU figure
-for the robot (which the finished runs matched within about 10 %: docs/scaling.md, "Run-time
-estimate"), scaled by its twin's measured over estimated seconds when the twin (the regular robot
+for the robot (which the finished runs matched within about 10 %: docs/scaling.md, "The study's
+record"), scaled by its twin's measured over estimated seconds when the twin (the regular robot
 of an irregular one, or the other way) has finished runs: the 96-hinge centipede's runs took 1.17
-times its figure, so its 88-hinge twin's are expected to as well. Nothing is written and no
-run folder is read, so it is safe beside a running study. It does not ask cic for run keys: a
-done row of settings the sweep no longer asks (an edit keeping a configuration's name) counts
-as done here, though `scaling.sh compare` runs it again (its --dry-run lists exactly what will run)."""
+times its figure, so its 88-hinge twin's are expected to as well. Nothing is written, so it is
+safe beside a running study. Given a cic (--cic), a done row
+counts only when its run key is the one `cic sweep --dry-run` gives the run now, as `scaling.sh
+compare` decides; a row of other settings (an edit that kept a configuration's name) counts as
+to go, and the page says how many. Without one, the ledger's done rows are taken as they are."""
 import os
 import re
 import statistics
+import subprocess
 
 import scaling_compare as sc
 from scaling_results import finished, ledger_rows, method_of
@@ -53,8 +55,23 @@ def twin_scale(robot, measured, figures):
     return 1.0
 
 
-def status(results, sweeps, jobs):
-    """The table's lines: per compare sweep what is done, what is to go and its core-hours; the total."""
+def sweep_keys(cic, path):
+    """{run_dir: run key} of every run of the sweep at PATH, from `cic sweep --dry-run` (writes nothing)."""
+    try:
+        p = subprocess.run([cic, "--quiet", "sweep", path, "--dry-run"], capture_output=True, text=True)
+    except OSError as e:
+        raise sc.Refusal(f"status: cannot run {cic}: {e}")
+    if p.returncode != 0:
+        raise sc.Refusal(f"status: {cic} sweep {path} --dry-run failed: {p.stderr.strip()}")
+    keys = dict(re.findall(r"(?m)^\s*\d+ \S+\s+(\S+) key=([0-9a-f]+) ", p.stdout))
+    if not keys:
+        raise sc.Refusal(f"status: {cic} sweep {path} --dry-run gives no run keys (a cic older than them?)")
+    return keys
+
+
+def status(results, sweeps, jobs, cic=None):
+    """The table's lines: per compare sweep what is done, what is to go and its core-hours; the total.
+    With CIC, a done row counts only under the run key the sweep now gives its run."""
     ledger = os.path.join(results, "scaling-runs.csv")
     if not os.path.exists(ledger):
         raise sc.Refusal(f"status: no ledger at {ledger}")
@@ -65,9 +82,18 @@ def status(results, sweeps, jobs):
     done_rows = {(r["study"], r["config"], r["seed"]): r for r in finished_rows if r["study"].startswith("compare-")}
     figures = estimate_figures(results)
     plans = {}   # robot: its sweep's name and (study, config, seed) runs
+    stale = 0    # done rows of other settings than the sweep's now (with cic)
     for robot in robots:
-        sweep = sc.read_sweep(os.path.join(sweeps, f"compare-{robot}.xml"))
+        path = os.path.join(sweeps, f"compare-{robot}.xml")
+        sweep = sc.read_sweep(path)
         plans[robot] = [(sweep["name"], v, str(seed)) for v in sweep["variants"] for seed in sweep["seeds"]]
+        if cic:
+            keys = sweep_keys(cic, path)
+            for study, config, seed in plans[robot]:
+                row = done_rows.get((study, config, seed))
+                if row and row.get("run_key", "") != keys.get(f"runs/{config}/s{seed}"):
+                    del done_rows[(study, config, seed)]
+                    stale += 1
     # robot: the median s per evaluation of its finished runs (of the sweep as it is)
     measured = {robot: per_evaluation([done_rows[k] for k in planned if k in done_rows])
                 for robot, planned in plans.items() if any(k in done_rows for k in planned)}
@@ -106,6 +132,9 @@ def status(results, sweeps, jobs):
         out.append(f"| compare-{robot} | {len(planned)} | {len(done)} | {len(left)} | {spe} | {hours:.1f} |")
         totals = [totals[0] + len(planned), totals[1] + len(done), totals[2] + len(left), totals[3] + hours]
     out.append(f"| **total** | {totals[0]} | {totals[1]} | {totals[2]} | | **{totals[3]:.1f}** |")
+    if stale:
+        out += ["", f"{stale} done row{'s' if stale > 1 else ''} of the ledger {'are' if stale > 1 else 'is'} of other "
+                "settings than the sweeps give now (another run key): counted as to go."]
     out += ["", f"About {totals[3] / jobs:.1f} hours of wall time at {jobs} run{'s' if jobs > 1 else ''} at a time "
             "(runs under way or interrupted count whole: an upper bound)."]
     return out

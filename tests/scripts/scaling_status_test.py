@@ -3,9 +3,10 @@
 (variants times seeds) against the ledger's finished ones, ignores ledger rows of variants
 the sweep no longer runs, times the runs to go by the same method's finished runs, else the
 robot's, else results/estimate.md (scaled by the twin robot's measured over estimated
-seconds when the twin has finished runs), and refuses bad input with exit 2.
+seconds when the twin has finished runs), and refuses bad input with exit 2. Given cic, a
+done row counts only under the run key the shipped sweep gives its run now.
 
-    scaling_status_test.py SOURCE_DIR WORK_DIR
+    scaling_status_test.py SOURCE_DIR CIC WORK_DIR
 """
 import csv
 import pathlib
@@ -13,7 +14,7 @@ import shutil
 import subprocess
 import sys
 
-source, work = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
+source, cic, work = pathlib.Path(sys.argv[1]), sys.argv[2], pathlib.Path(sys.argv[3])
 shutil.rmtree(work, ignore_errors=True)
 results, sweeps = work / "results", work / "sweeps"
 results.mkdir(parents=True)
@@ -108,4 +109,37 @@ p = subprocess.run(["bash", str(source / "scripts" / "scaling.sh"), "status", "-
                    text=True, env={"PATH": "/usr/bin:/bin", "CIC": str(work / "no-cic"), "PYTHON": sys.executable})
 check(p.returncode == 0 and "| compare-centipede-16 | 40 |" in p.stdout and "| **total** | " in p.stdout and
       "hours of wall time at 2 runs at a time" in p.stdout, f"scaling.sh status: {p.returncode} {p.stderr}\n{p.stdout}")
+
+# ---- with cic: the shipped sweeps' run keys decide what is done ----
+shipped = source / "experiments" / "scaling"
+dry = subprocess.run([cic, "--quiet", "sweep", str(shipped / "compare-centipede-2.xml"), "--dry-run"],
+                     capture_output=True, text=True)
+key = {d: k for d, k in (line.split()[2:4] for line in dry.stdout.splitlines() if " key=" in line)}
+check(dry.returncode == 0 and key, f"the shipped sweep's dry run: {dry.returncode} {dry.stderr}")
+runs = sorted(key)[:2]   # e.g. runs/direct.sepcmaes-s0.15/s1 and .../s10
+keyed = results / "keyed"
+keyed.mkdir()
+(keyed / "estimate.md").write_text((shipped / "results" / "estimate.md").read_text())   # every robot timed
+with open(keyed / "scaling-runs.csv", "w", newline="") as f:
+    w = csv.DictWriter(f, FIELDS + ["run_key"], lineterminator="\n")
+    w.writeheader()
+    for d, k in ((runs[0], key[runs[0]][4:]), (runs[1], "0123456789abcdef")):   # the sweep's key; another
+        config, seed = d.split("/")[1], d.split("/")[2][1:]
+        w.writerow({"study": "compare-centipede-2", "config": config, "seed": seed, "status": "done", "best_ever": 1,
+                    "evaluations": 2500, "wall_seconds": 250, "run_dir": d, "commit": "x", "run_key": k})
+
+
+def keyed_status(*extra):
+    return subprocess.run(REPORT + ["--results", str(keyed), "--sweeps", str(shipped), *extra],
+                          capture_output=True, text=True)
+
+
+p = keyed_status()
+check(p.returncode == 0 and "| compare-centipede-2 | 40 | 2 | 38 |" in p.stdout, f"without cic, rows as they are\n{p}")
+p = keyed_status("--cic", cic)
+check(p.returncode == 0 and "| compare-centipede-2 | 40 | 1 | 39 |" in p.stdout and
+      "1 done row of the ledger is of other settings than the sweeps give now (another run key): counted as to go."
+      in p.stdout, f"with cic, the row of another key is to go\n{p.stdout}\n{p.stderr}")
+p = keyed_status("--cic", str(work / "no-cic"))
+check(p.returncode == 2 and f"cannot run {work / 'no-cic'}" in p.stderr, f"a cic that cannot run: {p}")
 print("scaling_status_test: ok")
