@@ -15,7 +15,7 @@ The parts:
     docs-blocks.py DOC...           rewrite each marked part from its page (atomically)
     docs-blocks.py --check DOC...   change nothing: exit 1 naming each part that differs
 
-A doc with no marks is left alone. A mark the page cannot answer (no such file, table or
+A doc with no marks is left alone, and so is a mark inside a ``` code block (an example). A mark the page cannot answer (no such file, table or
 line), or one without its end, is refused with DOC:LINE, exit 2, and nothing is written.
 Standard library only."""
 import os
@@ -74,9 +74,10 @@ def part(page_path, m, where):
 def filled(doc):
     """(the doc's text with every marked part from its page, [the marks whose part differed])."""
     lines = open(doc).read().splitlines()
-    out, changed, i = [], [], 0
+    out, changed, i, fenced = [], [], 0, False
     while i < len(lines):
-        m = MARK.match(lines[i].strip())
+        fenced ^= lines[i].lstrip().startswith("```")   # a mark shown in a code block is an example
+        m = None if fenced else MARK.match(lines[i].strip())
         out.append(lines[i])
         if not m:
             i += 1

@@ -49,6 +49,12 @@ check(run("--check", doc).returncode == 0, "a doc just written differs")
 before = doc.read_text()
 check(run(doc).returncode == 0 and doc.read_text() == before, "a second rewrite changed the doc")
 
+# A mark shown as an example in a code block is not a mark.
+example = work / "docs" / "example.md"
+example.write_text("Mark a part:\n\n```\n<!-- from ../results/none.md, table 9 -->\n<!-- end -->\n```\n")
+p = run(example)
+check(p.returncode == 0 and "table 9" in example.read_text(), f"a mark in a code block was read: {p}")
+
 # The page changed: --check names it, a rewrite follows it.
 page.write_text(page.read_text().replace("| 1 | 2 |", "| 1 | 5 |"))
 check(run("--check", doc).returncode == 1, "a changed page went unnoticed")
