@@ -26,6 +26,11 @@ namespace {
 // The gait phase's evolution strategy (Gait.optimizer: cmaes, xnes or sepcmaes).
 std::string optimizer_name(const io::Settings& s) { return gait::to_string(gait::optimizer_of(s.gait.optimizer)); }
 
+// The summary's heading of the gait phase, after the HyperGP phase's part.
+std::string gait_phase_heading(const io::Settings& s) {
+    return "\ngait phase (" + optimizer_name(s) + " from the best's gait):\n";
+}
+
 // When the HyperGP phase hands over: the stagnation clock (best so far and the
 // first generation that reached it) and the budget.
 class HandoverRule {
@@ -90,8 +95,9 @@ public:
             es_ = std::make_unique<EvolutionStrategy>(
                 services, std::move(gait), h,
                 fmt::format("HyperGP phase:\nhanded over after generation {} ({} evaluations; its summary is in the "
-                            "run.log of the session that ran it)\n\ngait phase ({} from the best's gait):\n",
-                            h.generation, h.evaluations, optimizer_name(s)));
+                            "run.log of the session that ran it)\n",
+                            h.generation, h.evaluations) +
+                    gait_phase_heading(s));
             return;
         }
         std::unique_ptr<PopulationCheckpoint> population(static_cast<PopulationCheckpoint*>(resume.release()));
@@ -133,7 +139,7 @@ public:
             final_summary_ = gp_summary + "the budget leaves no room for the gait phase\n";
             return {"handed over", false};
         }
-        head_ = "HyperGP phase:\n" + gp_summary + "\ngait phase (" + optimizer_name(s) + " from the best's gait):\n";
+        head_ = "HyperGP phase:\n" + gp_summary + gait_phase_heading(s);
         if (signal) {   // stopped as HyperGP handed over: its checkpoint resumes
             final_summary_ = head_ + "stopped: interrupted before the gait phase began\n";
             return {"interrupted", true};

@@ -56,11 +56,6 @@ private:
     int fd_ = -1;
 };
 
-std::string read_text(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 std::vector<std::string> split(const std::string& line) {
     std::vector<std::string> out;
     std::stringstream in(line);
@@ -163,7 +158,7 @@ TaskState task_state(const SweepPlan& plan, const SweepTask& task) {
         const FileLock probe(dir / ".lock", false);
         st.status = probe.held() ? TaskStatus::Extend : TaskStatus::Running;
     } else if (fs::exists(dir / "summary.txt")) {
-        st.status = run::run_end_of_summary(read_text(dir / "summary.txt")) == run::RunEnd::Interrupted
+        st.status = run::run_end_of_summary(io::xml::read_file(dir / "summary.txt")) == run::RunEnd::Interrupted
                         ? TaskStatus::Interrupted
                         : TaskStatus::Done;
     } else {
