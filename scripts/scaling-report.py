@@ -58,6 +58,11 @@
       figure), and the wall time at N runs at a time (default 2); with CIC a done row
       counts only under the run key the sweep gives its run now (cic sweep --dry-run)
       (scaling_status.py)
+  scaling-report.py runs --sweep FILE --output DIR --cic CIC
+      print every run of the sweep FILE (its study in DIR) as "TASK STATUS
+      RUN_DIR RUN_KEY", one line each, from `cic sweep --dry-run --csv` (writes
+      nothing; scaling_status.sweep_runs): what scripts/scaling.sh starts runs
+      and reads their ends by
 Standard library only, but for results and anytime (and numpy for posture)."""
 import csv
 import os
@@ -214,15 +219,16 @@ def main(argv):
         estimate(argv[3])
     elif len(argv) == 4 and argv[1] == "summary" and argv[2] == "--results":
         summary(argv[3])
-    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results", "strips", "posture", "anytime", "status"):
+    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results", "strips", "posture", "anytime", "status", "runs"):
         flags = {"compare-sweeps": {"--provisional"}, "results": set(), "strips": {"--no-strips"},
-                 "posture": set(), "anytime": set(), "status": set()}[argv[1]]
+                 "posture": set(), "anytime": set(), "status": set(), "runs": set()}[argv[1]]
         known = {"compare-sweeps": {"--results", "--out", "--tuning", "--cic"},
                  "results": {"--results", "--studies", "--cic", "--figure", "--baselines"},
                  "strips": {"--results", "--studies", "--cic", "--out-images", "--robots", "--at"},
                  "posture": {"--results", "--studies", "--cic"},
                  "anytime": {"--results", "--studies", "--figure"},
-                 "status": {"--results", "--sweeps", "--jobs", "--cic"}}[argv[1]]
+                 "status": {"--results", "--sweeps", "--jobs", "--cic"},
+                 "runs": {"--sweep", "--output", "--cic"}}[argv[1]]
         args, i = {}, 2
         while i < len(argv):
             if argv[i] in flags:
@@ -236,7 +242,8 @@ def main(argv):
                       f"{', '.join(sorted(known | flags))})")
         need = {"compare-sweeps": ("--results", "--out"), "results": ("--results", "--studies", "--cic"),
                 "strips": ("--results", "--studies", "--cic"), "posture": ("--results", "--studies", "--cic"),
-                "anytime": ("--results", "--studies"), "status": ("--results",)}[argv[1]]
+                "anytime": ("--results", "--studies"), "status": ("--results",),
+                "runs": ("--sweep", "--output", "--cic")}[argv[1]]
         for n in need:
             if n not in args:
                 usage(f"scaling-report.py {argv[1]}: {n} is required")
@@ -247,6 +254,10 @@ def main(argv):
                                            args.get("--cic", os.path.join(sc.ROOT, "build", "cic")),
                                            args.get("--provisional", False)):
                     print(p)
+            elif argv[1] == "runs":
+                import scaling_status
+                for r in scaling_status.sweep_runs(args["--cic"], args["--sweep"], args["--output"]):
+                    print(r["task"], r["status"], r["run_dir"], r["run_key"])
             elif argv[1] == "status":
                 import scaling_status
                 jobs = args.get("--jobs", "2")

@@ -50,7 +50,7 @@
 # folder is gone (run folders are never committed: a study carried on from a
 # clean clone on another machine runs only what the ledger lacks), but only if
 # the ledger's run key is the one the sweep now gives that run (`cic sweep
-# --dry-run`'s key=): a row of a run of other settings (an edited sweep or base
+# --dry-run --csv`'s run_key): a row of a run of other settings (an edited sweep or base
 # file, a changed robot file) or without a key proves nothing, and the run runs.
 # Environment: CIC (default build/cic), PYTHON (default python3).
 set -euo pipefail
@@ -137,20 +137,22 @@ commit_results() {   # MESSAGE
 # index under its lock. A task whose run the ledger records as done, with the
 # run key the sweep gives it, is skipped: its folder went with an earlier
 # sitting's machine, and its row is the record.
+# "TASK STATUS RUN_DIR RUN_KEY" of every run of STUDY's sweep, read from
+# `cic sweep --dry-run --csv` by the one reader of it (scaling_status.sweep_runs).
+runs_of() {   # STUDY
+  "$PY" "$ROOT/scripts/scaling-report.py" runs --sweep "$HERE/$1.xml" --output "$output/$1" --cic "$CIC"
+}
+
 run_studies() {   # STUDY...
-  local s item tasks=() pending kept verdicts skipped stale
+  local s item listing tasks=() pending kept verdicts skipped stale
   local ledger_csv="$HERE/results/scaling-runs.csv"
   [ -f "$ledger_csv" ] || ledger_csv=/dev/null
   for s in "$@"; do
     if [ -n "$only" ] && [[ "$s" == tune-* ]] && [[ "$s" != *-"$only" ]]; then continue; fi
-    # "TASK RUN_DIR KEY" of every run not done in its folder.
-    mapfile -t pending < <("$CIC" sweep "$HERE/$s.xml" --output "$output/$s" --dry-run |
-                           awk '$1 ~ /^[0-9]+$/ && $3 ~ /^runs\// && $2 != "done" {
-                                  print $1 " " $3 " " ($4 ~ /^key=[0-9a-f]+$/ ? substr($4, 5) : "none") }')
-    if printf '%s\n' "${pending[@]}" | grep -q ' none$'; then
-      echo "scaling.sh: $CIC gives no run keys in \`cic sweep --dry-run\` (a cic older than this script): build cic from this checkout" >&2
-      exit 2
-    fi
+    # "TASK RUN_DIR KEY" of every run not done in its folder (a cic that cannot list
+    # its runs with their keys, as one older than this script, is refused: exit 2).
+    listing=$(runs_of "$s") || exit 2
+    mapfile -t pending < <(awk '$2 != "done" { print $1 " " $3 " " $4 }' <<< "$listing")
     # Each pending run against the ledger's done rows (columns found by name), matched
     # by study and run folder: "skip" (same run key), "stale TASK RUN_DIR" (a row of
     # another key, or none: it runs again) or "run TASK RUN_DIR" (no done row).
@@ -207,10 +209,9 @@ run_studies() {   # STUDY...
     running=$((running - 1))
     # A task started while another's index write probed its lock skips itself as
     # "running elsewhere" and ends pending: queue it again (three starts at most).
-    # awk reads the whole listing: stopping at the match would end cic with SIGPIPE, and
-    # under pipefail that failure would stop the study (it did, on a 40-run sweep).
-    status=$("$CIC" sweep "$HERE/$study.xml" --output "$output/$study" --dry-run |
-             awk -v t="$task" '$1 == t {print $2}') || status='?'
+    # awk reads the whole listing: stopping at the match would end the lister with SIGPIPE,
+    # and under pipefail that failure would stop the study (it did, on a 40-run sweep).
+    status=$(runs_of "$study" | awk -v t="$task" '$1 == t {print $2}') || status='?'
     [ "$status" != '?' ] || echo "scaling.sh: could not read $study task $task's status" >&2
     if [[ "$status" =~ ^(pending|interrupted)$ ]] && [ "${tries["$study $task"]}" -lt 3 ]; then
       echo "scaling.sh: $study $run ended $status; queued again" >&2

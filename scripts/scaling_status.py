@@ -12,9 +12,11 @@ record"), scaled by its twin's measured over estimated seconds when the twin (th
 of an irregular one, or the other way) has finished runs: the 96-hinge centipede's runs took 1.17
 times its figure, so its 88-hinge twin's are expected to as well. Nothing is written, so it is
 safe beside a running study. Given a cic (--cic), a done row
-counts only when its run key is the one `cic sweep --dry-run` gives the run now, as `scaling.sh
+counts only when its run key is the one `cic sweep --dry-run --csv` gives the run now, as `scaling.sh
 compare` decides; a row of other settings (an edit that kept a configuration's name) counts as
 to go, and the page says how many. Without one, the ledger's done rows are taken as they are."""
+import csv
+import io
 import os
 import re
 import statistics
@@ -55,18 +57,32 @@ def twin_scale(robot, measured, figures):
     return 1.0
 
 
-def sweep_keys(cic, path):
-    """{run_dir: run key} of every run of the sweep at PATH, from `cic sweep --dry-run` (writes nothing)."""
+def sweep_runs(cic, path, output=None):
+    """Every run of the sweep at PATH (its study in OUTPUT, else the sweep's own <output>), as
+    `cic sweep --dry-run --csv` lists it, which writes nothing: one dict per run by index.csv's
+    column names, with its `task` (the index --task takes), `status` and `run_key`. The one reader
+    of a sweep's runs for scaling.sh (scaling-report.py runs) and status."""
+    command = [cic, "--quiet", "sweep", path, "--dry-run", "--csv"] + (["--output", output] if output else [])
     try:
-        p = subprocess.run([cic, "--quiet", "sweep", path, "--dry-run"], capture_output=True, text=True)
+        p = subprocess.run(command, capture_output=True, text=True)
     except OSError as e:
-        raise sc.Refusal(f"status: cannot run {cic}: {e}")
+        raise sc.Refusal(f"cannot run {cic}: {e}")
     if p.returncode != 0:
-        raise sc.Refusal(f"status: {cic} sweep {path} --dry-run failed: {p.stderr.strip()}")
-    keys = dict(re.findall(r"(?m)^\s*\d+ \S+\s+(\S+) key=([0-9a-f]+) ", p.stdout))
-    if not keys:
-        raise sc.Refusal(f"status: {cic} sweep {path} --dry-run gives no run keys (a cic older than them?)")
-    return keys
+        raise sc.Refusal(f"{cic} sweep {path} --dry-run --csv failed (a cic older than this script? build cic from "
+                         f"this checkout): {p.stderr.strip()}")
+    rows = list(csv.DictReader(io.StringIO(p.stdout)))
+    if not rows or not {"task", "run_dir", "status", "run_key"} <= set(rows[0]):
+        raise sc.Refusal(f"{cic} sweep {path} --dry-run --csv gives no runs with their run keys (a cic older than "
+                         f"this script? build cic from this checkout)")
+    return rows
+
+
+def sweep_keys(cic, path):
+    """{run_dir: run key} of every run of the sweep at PATH."""
+    try:
+        return {r["run_dir"]: r["run_key"] for r in sweep_runs(cic, path)}
+    except sc.Refusal as e:
+        raise sc.Refusal(f"status: {e}") from None
 
 
 def status(results, sweeps, jobs, cic=None):

@@ -26,6 +26,7 @@ struct SweepOptions {
     int workers = 0;      // 0: cores / jobs
     long task = -1;       // >= 0: run this one task (Slurm array tasks, and the local runner's children)
     bool dry_run = false;
+    bool csv = false;     // with --dry-run: the listing as CSV
     bool slurm = false;
     bool index_only = false;
     bool status = false;
@@ -48,6 +49,9 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
         .range(0, 4096);
     cmd.option("--output", o->output, "study folder (default: the sweep file's <output>, else runs/NAME)");
     cmd.flag("--dry-run", o->dry_run, "list every run with its status, run key (key=) and command; run nothing");
+    cmd.flag("--csv", o->csv,
+             "with --dry-run: print the listing as CSV, index.csv's columns with `task` first and `command` last "
+             "(for scripts; a mismatched run's differing keys are in the plain listing)");
     cmd.flag("--index-only", o->index_only,
                   "rewrite STUDY/index.csv from the run folders, linking runs already stored; run nothing");
     cmd.flag("--slurm", o->slurm, "write STUDY/slurm.sh, a job array with one task per run");
@@ -64,6 +68,7 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
         .range(0L, 100000000L);
     cmd.on_run([o, &ctx] {
         run_guarded(ctx, "sweep", [&] {
+            if (o->csv && !o->dry_run) throw InputError("--csv goes with --dry-run (the listing it prints as CSV)");
             const study::SweepPlan plan = study::read_sweep_file(o->file, o->output);
             const int workers = o->workers > 0 ? o->workers : std::max(1, hardware_threads() / o->jobs);
             if (o->task >= 0) {
@@ -97,7 +102,8 @@ void add_sweep_command(Command& app, CommandContext& ctx) {
             }
             if (o->status) return study::print_status(plan, tasks, o->jobs);
             study::check_every_configuration(plan);
-            if (o->dry_run) return study::dry_run(plan, tasks, workers);
+            if (o->dry_run)
+                return study::dry_run(plan, tasks, workers, o->csv ? study::DryRunFormat::Csv : study::DryRunFormat::Text);
             if (o->index_only) {   // for summaries: the runs as they are, nothing run
                 fs::create_directories(plan.study);
                 study::link_to_store(plan, study::StoreLinks::StoredRunsOnly);

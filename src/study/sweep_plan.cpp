@@ -259,6 +259,12 @@ std::vector<std::string> SweepPlan::overrides(const SweepTask& task) const {
     return out;
 }
 
+std::string SweepPlan::command_line(const SweepTask& task) const {
+    std::string out = "cic --settings " + base.string();
+    for (const auto& s : overrides(task)) out += " --set " + s;
+    return out;
+}
+
 io::Settings SweepPlan::settings(const SweepTask& task, const std::vector<std::string>& extra) const {
     std::vector<std::string> all = overrides(task);
     all.insert(all.end(), extra.begin(), extra.end());

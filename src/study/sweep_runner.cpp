@@ -107,7 +107,11 @@ std::vector<SweepTask> selected_tasks(const SweepPlan& plan, const std::vector<s
     return out;
 }
 
-int dry_run(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int workers) {
+int dry_run(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int workers, DryRunFormat format) {
+    if (format == DryRunFormat::Csv) {   // for programs: index.csv's columns, nothing else on stdout
+        fmt::print("{}", index_text(plan, tasks, IndexColumns::WithTaskAndCommand));
+        return 0;
+    }
     fmt::print("sweep {} ({}): {} configurations x {} repeats = {} runs; base {}\nstudy {}\n", plan.name,
                plan.file.string(), plan.configs.size(), plan.repeats, plan.tasks().size(), plan.base.string(),
                plan.study.string());
@@ -118,10 +122,8 @@ int dry_run(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int work
         const TaskState state = task_state(plan, t);
         const TaskStatus st = state.status;
         ++counts[to_string(st)];
-        std::string sets;
-        for (const auto& s : plan.overrides(t)) sets += " --set " + s;
         fmt::print("{:>5} {:<12} {} key={} {}\n", t.index, to_string(st), t.run_dir.string(), run_key(plan, t),
-                   st == TaskStatus::Done ? std::string("(skipped)") : "cic --settings " + plan.base.string() + sets);
+                   st == TaskStatus::Done ? std::string("(skipped)") : plan.command_line(t));
         for (const auto& d : state.mismatch) fmt::print("{:>5} {:<12}   {}\n", "", "", d);
     }
     std::string summary;

@@ -215,23 +215,32 @@ std::vector<fs::path> runs_outside_the_plan(const SweepPlan& plan) {
     return out;
 }
 
+std::string index_text(const SweepPlan& plan, const std::vector<SweepTask>& tasks, IndexColumns columns) {
+    const bool dry = columns == IndexColumns::WithTaskAndCommand;
+    std::string text = dry ? "task,run_dir,config" : "run_dir,config";
+    for (const auto& k : plan.varied_keys) text += "," + csv_cell(k);
+    // best_ever last: it came after the others, and readers find columns by name.
+    text += ",seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit,run_key";
+    text += dry ? ",command\n" : "\n";
+    for (const SweepTask& t : tasks) {
+        const TaskState st = task_state(plan, t);
+        const SweepConfig& cfg = plan.configs[t.config];
+        if (dry) text += fmt::format("{},", t.index);
+        text += csv_cell(t.run_dir.string()) + "," + csv_cell(cfg.name);
+        for (const auto& [key, value] : cfg.varied) text += "," + csv_cell(value);
+        text += fmt::format(",{},{},{},{},{},{:.3f},{},{},{}", t.seed, to_string(st.status), st.final_best,
+                            st.generations, st.evaluations, st.wall_seconds, st.best_ever,
+                            csv_cell(run::recorded_commit(plan.study / t.run_dir)), run_key(plan, t));
+        if (dry) text += "," + csv_cell(st.status == TaskStatus::Done ? std::string() : plan.command_line(t));
+        text += "\n";
+    }
+    return text;
+}
+
 void write_index(const SweepPlan& plan) {
     fs::create_directories(plan.study);
     const FileLock lock(plan.study / ".index.lock", true);
-    std::string text = "run_dir,config";
-    for (const auto& k : plan.varied_keys) text += "," + csv_cell(k);
-    // best_ever last: it came after the others, and readers find columns by name.
-    text += ",seed,status,final_best,generations,evaluations,wall_seconds,best_ever,commit,run_key\n";
-    for (const SweepTask& t : plan.tasks()) {
-        const TaskState st = task_state(plan, t);
-        const SweepConfig& cfg = plan.configs[t.config];
-        text += csv_cell(t.run_dir.string()) + "," + csv_cell(cfg.name);
-        for (const auto& [key, value] : cfg.varied) text += "," + csv_cell(value);
-        text += fmt::format(",{},{},{},{},{},{:.3f},{},{},{}\n", t.seed, to_string(st.status), st.final_best,
-                            st.generations, st.evaluations, st.wall_seconds, st.best_ever,
-                            csv_cell(run::recorded_commit(plan.study / t.run_dir)), run_key(plan, t));
-    }
-    io::xml::write_file_atomically(plan.study / "index.csv", text);
+    io::xml::write_file_atomically(plan.study / "index.csv", index_text(plan, plan.tasks()));
 }
 
 namespace {

@@ -11,7 +11,8 @@ one without a key):
   --dry-run lists exactly those four and writes nothing (and, before there is
   a ledger, all twenty);
   --dry-run with another stage, --commit or --summary-only, or with a cic
-  whose dry run gives no run keys, is refused (exit 2);
+  that cannot list its runs with their keys (`cic sweep --dry-run --csv`), is
+  refused (exit 2);
   the real stage runs those four (done in the ledger after it, with the
   sweep's run keys), keeps the other sixteen rows as they were, and says how
   many it skipped, and how many it runs again, per study.
@@ -122,14 +123,19 @@ for args, says in ((["--dry-run", "ledger"], "--dry-run lists the runs"), (["--d
                    (["--dry-run", "--summary-only", "compare"], "choose one")):
     p = scaling(*args)
     check(p.returncode == 2 and says in p.stderr, f"{args}: exit {p.returncode}, {p.stderr}")
-# A cic older than run keys (its dry run gives no key=): refused, since no ledger row could be matched.
-older = work / "older-cic"
-older.write_text(f"#!/bin/sh\n'{cic}' \"$@\" | sed 's/ key=[0-9a-f]* / /'\n")
-older.chmod(0o755)
-p = subprocess.run(["bash", str(root / "scripts" / "scaling.sh"), "--output", str(studies), "--dry-run", "compare"],
-                   capture_output=True, text=True, env=dict(env, CIC=str(older)))
-check(p.returncode == 2 and "gives no run keys" in p.stderr and not p.stdout, f"an older cic: exit {p.returncode}, {p.stderr}")
-check(not studies.exists() and ledger.read_bytes() == before, "a refusal wrote something")
+# A cic older than this script: one without `--dry-run --csv`, and one whose listing has no
+# run keys. Both refused, since no ledger row could be matched.
+for name, body in (("no-csv", "case \"$*\" in *--csv*) echo 'The following argument was not expected: --csv' >&2; exit 109;; esac\n"
+                              f"exec '{cic}' \"$@\"\n"),
+                   ("no-keys", f"'{cic}' \"$@\" | sed '1s/,run_key,/,key,/'\n")):
+    older = work / f"older-cic-{name}"
+    older.write_text("#!/bin/sh\n" + body)
+    older.chmod(0o755)
+    p = subprocess.run(["bash", str(root / "scripts" / "scaling.sh"), "--output", str(studies), "--dry-run", "compare"],
+                       capture_output=True, text=True, env=dict(env, CIC=str(older)))
+    check(p.returncode == 2 and "build cic from this checkout" in p.stderr and not p.stdout,
+          f"an older cic ({name}): exit {p.returncode}, {p.stderr}")
+    check(not studies.exists() and ledger.read_bytes() == before, f"a refusal ({name}) wrote something")
 
 p = scaling("--jobs", "2", "compare")
 check(p.returncode == 0, f"compare: exit {p.returncode}\n{p.stderr}")

@@ -142,4 +142,19 @@ check(p.returncode == 0 and "| compare-centipede-2 | 40 | 1 | 39 |" in p.stdout 
       in p.stdout, f"with cic, the row of another key is to go\n{p.stdout}\n{p.stderr}")
 p = keyed_status("--cic", str(work / "no-cic"))
 check(p.returncode == 2 and f"cannot run {work / 'no-cic'}" in p.stderr, f"a cic that cannot run: {p}")
+
+# scaling-report.py runs: what scaling.sh starts runs by, every run of the sweep with its
+# status and key, as `cic sweep --dry-run --csv` gives them (writes nothing).
+p = subprocess.run([sys.executable, str(source / "scripts" / "scaling-report.py"), "runs", "--sweep",
+                    str(shipped / "compare-centipede-2.xml"), "--output", str(work / "c2-study"), "--cic", cic],
+                   capture_output=True, text=True)
+listed = [line.split() for line in p.stdout.splitlines()]
+check(p.returncode == 0 and [w[0] for w in listed] == [str(i) for i in range(40)] and
+      all(w[1] == "pending" for w in listed) and {w[2]: "key=" + w[3] for w in listed} == key,
+      f"runs: tasks 0..39, pending, with the text dry run's keys: {p.returncode} {p.stderr}\n{p.stdout}")
+check(not (work / "c2-study").exists(), "runs wrote the study folder")
+p = subprocess.run([sys.executable, str(source / "scripts" / "scaling-report.py"), "runs", "--sweep",
+                    str(shipped / "compare-centipede-2.xml"), "--output", str(work / "c2-study")],
+                   capture_output=True, text=True)
+check(p.returncode == 2 and "--cic is required" in p.stderr, f"runs without --cic: {p.returncode} {p.stderr}")
 print("scaling_status_test: ok")

@@ -32,14 +32,6 @@ namespace fs = std::filesystem;
 
 const fs::path kSlurmLocal = fs::path(CIC_SOURCE_DIR) / "scripts" / "slurm-local.sh";
 
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    for (std::string l; std::getline(in, l);)
-        if (!l.empty()) out.push_back(l);
-    return out;
-}
-
 // The namespace nodes of the local cluster (none when it is a single node).
 std::vector<std::string> cluster_nodes() {
     std::vector<std::string> out;

@@ -268,6 +268,45 @@ TEST(Sweep, DryRunListsEveryRunAndWritesNothing) {
     fs::remove_all(dir);
 }
 
+// `--dry-run --csv` is for scripts (scripts/scaling.sh reads it): index.csv's
+// columns, the task index first and the run's command last, and nothing else on
+// stdout; after the runs, its rows are index.csv's.
+TEST(Sweep, CsvDryRunIsTheIndexWithTaskAndCommand) {
+    const auto dir = temp_dir("sweep-dry-csv");
+    const std::string text = tiny_sweep_text("c", dir / "study", 6, 2, 2.5,
+                                             "<grid><vary key=\"GP.elitism\">0 1</vary></grid>", 2, 4);
+    write_text(dir / "s.xml", text);
+    const std::string dry = "--quiet sweep " + (dir / "s.xml").string() + " --dry-run --csv";
+    ASSERT_EQ(run_command(dry, dir / "before.csv"), 0) << read_text(dir / "before.csv");
+    EXPECT_FALSE(fs::exists(dir / "study"));
+    const auto before = lines_of(read_text(dir / "before.csv"));
+    ASSERT_EQ(before.size(), 5u) << read_text(dir / "before.csv");
+    EXPECT_EQ(before[0], "task,run_dir,config,GP.elitism,seed,status,final_best,generations,evaluations,"
+                         "wall_seconds,best_ever,commit,run_key,command");
+    EXPECT_EQ(before[4].rfind("3,runs/elitism=1/s5,elitism=1,1,5,pending,", 0), 0u) << before[4];
+    EXPECT_NE(before[4].find(",cic --settings "), std::string::npos) << before[4];
+    EXPECT_NE(before[4].find(" --set GP.elitism=1 --set Experiment.seed=5"), std::string::npos) << before[4];
+
+    ASSERT_EQ(run_command("--quiet sweep " + (dir / "s.xml").string(), dir / "run.log"), 0) << read_text(dir / "run.log");
+    ASSERT_EQ(run_command(dry, dir / "after.csv"), 0) << read_text(dir / "after.csv");
+    const auto after = lines_of(read_text(dir / "after.csv"));
+    const auto index = lines_of(read_text(dir / "study/index.csv"));
+    ASSERT_EQ(after.size(), index.size());
+    for (std::size_t i = 1; i < after.size(); ++i) {
+        // task first, an empty command last (the run is done): between them, the index row.
+        EXPECT_EQ(after[i], std::to_string(i - 1) + "," + index[i] + ",") << i;
+        EXPECT_NE(index[i].find(",done,"), std::string::npos) << index[i];
+    }
+
+    // --csv alone is refused before anything is read or written.
+    fs::remove_all(dir / "study");
+    EXPECT_EQ(run_command("sweep " + (dir / "s.xml").string() + " --csv", dir / "alone.log"), 2);
+    EXPECT_NE(read_text(dir / "alone.log").find("--csv goes with --dry-run"), std::string::npos)
+        << read_text(dir / "alone.log");
+    EXPECT_FALSE(fs::exists(dir / "study"));
+    fs::remove_all(dir);
+}
+
 // Issue 39, class 7: a configuration dropped from an edited sweep file leaves
 // its runs on disk, which index.csv and export leave out: the sweep says so.
 TEST(Sweep, RunsOfADroppedConfigurationAreNamed) {

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -194,6 +195,15 @@ inline std::string tiny_sweep_text(const std::string& name, const std::filesyste
            std::to_string(generations) + "</set>\n  <set>Simulator.sample_to=" + sample_to +
            "</set>\n  <set>Simulator.delayed_start=0.5</set>\n  " + grid + "\n  <repeats count=\"" +
            std::to_string(repeats) + "\" firstSeed=\"" + std::to_string(first_seed) + "\"/>\n</sweep>\n";
+}
+
+// A text's lines, empty ones left out.
+inline std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);)
+        if (!l.empty()) out.push_back(l);
+    return out;
 }
 
 // 64-bit FNV-1a of a file's bytes, as 16 hex digits: the golden hashes.

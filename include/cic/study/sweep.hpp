@@ -55,6 +55,8 @@ struct SweepPlan {
     std::vector<SweepTask> tasks() const;
     // Every --set of a task: common, the configuration's, then its seed.
     std::vector<std::string> overrides(const SweepTask& task) const;
+    // The command a task's run is: "cic --settings BASE --set K=V ..." (as the dry run shows it).
+    std::string command_line(const SweepTask& task) const;
     // The settings a task asks for: the base as read with the plan (an edit of
     // the base file while a task runs changes neither that run nor what its
     // index says of it), then overrides(task), then `extra`.
@@ -109,6 +111,14 @@ std::string run_key(const SweepPlan& plan, const SweepTask& task);
 // (commit: the cic build of the run's last session, from its run.log; provenance.hpp;
 // run_key: the settings the sweep asks of the task, run_key above)
 void write_index(const SweepPlan& plan);
+
+// index.csv's text for `tasks`, as write_index writes it. WithTaskAndCommand
+// (`cic sweep --dry-run --csv`) adds a first column `task` (the plan index that
+// --task takes) and a last column `command` (the run's cic command line, empty
+// when it is done): one format for every program that reads a study's runs.
+enum class IndexColumns { Index, WithTaskAndCommand };
+std::string index_text(const SweepPlan& plan, const std::vector<SweepTask>& tasks,
+                       IndexColumns columns = IndexColumns::Index);
 
 // The run store folder of a task (plan.store must be set): STORE/KEY, KEY its
 // run_key; or the store folder whose settings.xml has that fingerprint, when an

@@ -17,8 +17,12 @@ std::vector<SweepTask> selected_tasks(const SweepPlan& plan, const std::vector<s
 // before anything is written. Throws cic::InputError naming the configuration.
 void check_every_configuration(const SweepPlan& plan);
 
-// Prints each task's status and command; runs nothing. Returns 0.
-int dry_run(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int workers);
+// Prints each task's status, run key and command; runs nothing. Returns 0.
+// Text: for people, with the plan's head and each mismatched key. Csv: for
+// programs, index_text(..., IndexColumns::WithTaskAndCommand) and nothing else.
+enum class DryRunFormat { Text, Csv };
+int dry_run(const SweepPlan& plan, const std::vector<SweepTask>& tasks, int workers,
+            DryRunFormat format = DryRunFormat::Text);
 
 // What a cluster asks of a job, beside what cic sets itself (array, CPUs,
 // output, requeue, the SIGTERM before the time limit). Empty: not written.
