@@ -56,13 +56,20 @@
       study): per sweep its runs, those done and those to go, the core-hours left
       at the seconds per evaluation its finished runs took (else RESULTS/estimate.md's
       figure), and the wall time at N runs at a time (default 2); with CIC a done row
-      counts only under the run key the sweep gives its run now (cic sweep --dry-run)
+      counts only under the run key the sweep gives its run now (cic sweep --dry-run --csv)
       (scaling_status.py)
   scaling-report.py runs --sweep FILE --output DIR --cic CIC
       print every run of the sweep FILE (its study in DIR) as "TASK STATUS
-      RUN_DIR RUN_KEY", one line each, from `cic sweep --dry-run --csv` (writes
-      nothing; scaling_status.sweep_runs): what scripts/scaling.sh starts runs
-      and reads their ends by
+      RUN_DIR RUN_KEY BEST_EVER" (BEST_EVER empty until it has one), one line
+      each, from `cic sweep --dry-run --csv` (writes nothing;
+      scaling_status.sweep_runs): what scripts/scaling.sh starts runs and reads
+      their ends by
+  scaling-report.py posture-runs --results DIR --studies DIR --cic CIC [--sweeps DIR]
+      print "STUDY TASK RUN_DIR BEST_EVER", one line per finished compare run the
+      posture page needs (the best direct method's and Offset-HybrID's) whose
+      folder is gone and whose replays are not in RESULTS/compare-posture.csv:
+      what scripts/scaling.sh posture-runs reruns, each to end on BEST_EVER, the
+      ledger's; SWEEPS (default experiments/scaling) holds the compare sweeps
 Standard library only, but for results and anytime (and numpy for posture)."""
 import csv
 import os
@@ -219,16 +226,18 @@ def main(argv):
         estimate(argv[3])
     elif len(argv) == 4 and argv[1] == "summary" and argv[2] == "--results":
         summary(argv[3])
-    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results", "strips", "posture", "anytime", "status", "runs"):
+    elif len(argv) >= 2 and argv[1] in ("compare-sweeps", "results", "strips", "posture", "anytime", "status", "runs",
+                                             "posture-runs"):
         flags = {"compare-sweeps": {"--provisional"}, "results": set(), "strips": {"--no-strips"},
-                 "posture": set(), "anytime": set(), "status": set(), "runs": set()}[argv[1]]
+                 "posture": set(), "anytime": set(), "status": set(), "runs": set(), "posture-runs": set()}[argv[1]]
         known = {"compare-sweeps": {"--results", "--out", "--tuning", "--cic"},
                  "results": {"--results", "--studies", "--cic", "--figure", "--baselines"},
                  "strips": {"--results", "--studies", "--cic", "--out-images", "--robots", "--at"},
                  "posture": {"--results", "--studies", "--cic"},
                  "anytime": {"--results", "--studies", "--figure"},
                  "status": {"--results", "--sweeps", "--jobs", "--cic"},
-                 "runs": {"--sweep", "--output", "--cic"}}[argv[1]]
+                 "runs": {"--sweep", "--output", "--cic"},
+                 "posture-runs": {"--results", "--studies", "--cic", "--sweeps"}}[argv[1]]
         args, i = {}, 2
         while i < len(argv):
             if argv[i] in flags:
@@ -243,7 +252,8 @@ def main(argv):
         need = {"compare-sweeps": ("--results", "--out"), "results": ("--results", "--studies", "--cic"),
                 "strips": ("--results", "--studies", "--cic"), "posture": ("--results", "--studies", "--cic"),
                 "anytime": ("--results", "--studies"), "status": ("--results",),
-                "runs": ("--sweep", "--output", "--cic")}[argv[1]]
+                "runs": ("--sweep", "--output", "--cic"),
+                "posture-runs": ("--results", "--studies", "--cic")}[argv[1]]
         for n in need:
             if n not in args:
                 usage(f"scaling-report.py {argv[1]}: {n} is required")
@@ -257,7 +267,12 @@ def main(argv):
             elif argv[1] == "runs":
                 import scaling_status
                 for r in scaling_status.sweep_runs(args["--cic"], args["--sweep"], args["--output"]):
-                    print(r["task"], r["status"], r["run_dir"], r["run_key"])
+                    print(r["task"], r["status"], r["run_dir"], r["run_key"], r["best_ever"])
+            elif argv[1] == "posture-runs":
+                import scaling_posture
+                for run in scaling_posture.reruns(args["--results"], args["--studies"], args["--cic"],
+                                                  args.get("--sweeps", os.path.join(sc.ROOT, "experiments", "scaling"))):
+                    print(*run)
             elif argv[1] == "status":
                 import scaling_status
                 jobs = args.get("--jobs", "2")

@@ -16,6 +16,12 @@
 #                experiments/scaling/compare-*.xml, smallest robot first, R1 and
 #                R2 last; write them first with `scaling-report.py compare-sweeps`
 #                (refused while one is provisional)
+#   posture-runs rerun the finished compare runs the posture page needs (the
+#                best direct method's and Offset-HybrID's) whose folders are gone
+#                and whose replays are not cached in results/compare-posture.csv,
+#                so that `report` can write every robot's rows again; each must
+#                end on the best_ever the ledger scores it by, else the stage
+#                stops (exit 1) before the ledger is written
 #   ledger       run nothing: merge the studies' index.csv (tuning and compare)
 #                into results/scaling-runs.csv and write results/tune-direct.md
 #   report       run nothing: the comparison's pages from the ledger and the
@@ -69,15 +75,15 @@ while [ $# -gt 0 ]; do
     --only) only="$2"; shift 2
             [[ "$only" =~ ^(c8|r1)$ ]] || { echo "scaling.sh: --only takes c8 or r1, got '$only'" >&2; exit 2; } ;;
     -h|--help) sed -n '2,/^set /p' "$0" | grep '^#' | sed 's/^# \{0,1\}//'; exit 0 ;;
-    tune-direct|tune-hybrid|compare|ledger|report|status|estimate) stages+=("$1"); shift ;;
+    tune-direct|tune-hybrid|compare|posture-runs|ledger|report|status|estimate) stages+=("$1"); shift ;;
     *) echo "scaling.sh: unknown option or stage '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-[ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, tune-hybrid, compare, ledger, report, status, estimate (see --help)" >&2; exit 2; }
+[ ${#stages[@]} -gt 0 ] || { echo "scaling.sh: name a stage: tune-direct, tune-hybrid, compare, posture-runs, ledger, report, status, estimate (see --help)" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scaling.sh: --jobs takes a positive number, got '$jobs'" >&2; exit 2; }
 # The pool of runs waits for whichever run ends first: `wait -n -p`, bash 5.1 on
 # (only the stages that run something need it).
-if [ "$summary_only$dry_run" = 00 ] && [[ " ${stages[*]} " =~ \ (tune-direct|tune-hybrid|compare)\  ]] &&
+if [ "$summary_only$dry_run" = 00 ] && [[ " ${stages[*]} " =~ \ (tune-direct|tune-hybrid|compare|posture-runs)\  ]] &&
    ! (( BASH_VERSINFO[0] > 5 || (BASH_VERSINFO[0] == 5 && BASH_VERSINFO[1] >= 1) )); then
   echo "scaling.sh: running a study needs bash 5.1 or later (wait -n -p); this is bash $BASH_VERSION" >&2; exit 2
 fi
@@ -86,8 +92,8 @@ if [ "${stages[*]}" != status ]; then   # status reads files only
 fi
 if [ "$dry_run" = 1 ]; then
   for stage in "${stages[@]}"; do
-    [[ "$stage" =~ ^(tune-direct|tune-hybrid|compare)$ ]] ||
-      { echo "scaling.sh: --dry-run lists the runs of tune-direct, tune-hybrid and compare; '$stage' runs none" >&2; exit 2; }
+    [[ "$stage" =~ ^(tune-direct|tune-hybrid|compare|posture-runs)$ ]] ||
+      { echo "scaling.sh: --dry-run lists the runs of tune-direct, tune-hybrid, compare and posture-runs; '$stage' runs none" >&2; exit 2; }
   done
   [ "$summary_only" = 0 ] || { echo "scaling.sh: --dry-run and --summary-only: choose one" >&2; exit 2; }
   [ "$commit" = 0 ] || { echo "scaling.sh: --dry-run writes nothing, so nothing to --commit" >&2; exit 2; }
@@ -186,15 +192,25 @@ run_studies() {   # STUDY...
     if [ ${#pending[@]} = 0 ] && [ "$dry_run" = 0 ]; then "$CIC" --quiet sweep "$HERE/$s.xml" --output "$output/$s" --index-only; fi
     for item in "${kept[@]}"; do tasks+=("$s $item"); done   # "STUDY TASK RUN_DIR"
   done
+  run_pool "${tasks[@]}"
+}
+
+# Runs TASKs ("STUDY TASK RUN_DIR [BEST_EVER]") --jobs at a time, the ledger and its
+# commit after each; with --dry-run, lists them. A task with BEST_EVER (posture-runs:
+# a rerun of a run the ledger scores) must end done on exactly that best_ever: if it
+# does not, the other runs are stopped and the stage exits 1 before the ledger is
+# written, so the ledger keeps the row it scores.
+run_pool() {   # TASK...
+  local tasks=("$@")
   if [ "$dry_run" = 1 ]; then
     [ ${#tasks[@]} = 0 ] || printf '%s\n' "${tasks[@]}"
     return 0
   fi
-  local next=0 running=0 pid study task run status done_now
-  local -A what=() tries=()   # running pid -> "STUDY TASK RUN_DIR"; "STUDY TASK" -> starts
+  local next=0 running=0 pid study task run expect status got done_now
+  local -A what=() tries=()   # running pid -> "STUDY TASK RUN_DIR [BEST_EVER]"; "STUDY TASK" -> starts
   while [ $next -lt ${#tasks[@]} ] || [ $running -gt 0 ]; do
     while [ $running -lt "$jobs" ] && [ $next -lt ${#tasks[@]} ]; do
-      read -r study task run <<< "${tasks[next]}"
+      read -r study task run expect <<< "${tasks[next]}"
       "$CIC" --quiet sweep "$HERE/$study.xml" --output "$output/$study" --task "$task" --workers 1 >&2 &
       what[$!]="${tasks[next]}"
       tries["$study $task"]=$(( ${tries["$study $task"]:-0} + 1 ))
@@ -204,18 +220,25 @@ run_studies() {   # STUDY...
     pid=''
     wait -n -p pid "${!what[@]}" || true
     [ -n "$pid" ] || { echo "scaling.sh: wait -n gave no finished run (bash ${BASH_VERSION}); stopping" >&2; exit 1; }
-    read -r study task run <<< "${what[$pid]}"
+    read -r study task run expect <<< "${what[$pid]}"
+    local item="${what[$pid]}"
     unset "what[$pid]"
     running=$((running - 1))
     # A task started while another's index write probed its lock skips itself as
     # "running elsewhere" and ends pending: queue it again (three starts at most).
     # awk reads the whole listing: stopping at the match would end the lister with SIGPIPE,
     # and under pipefail that failure would stop the study (it did, on a 40-run sweep).
-    status=$(runs_of "$study" | awk -v t="$task" '$1 == t {print $2}') || status='?'
+    read -r status got < <(runs_of "$study" | awk -v t="$task" '$1 == t {print $2, $5}') || status='?'
     [ "$status" != '?' ] || echo "scaling.sh: could not read $study task $task's status" >&2
     if [[ "$status" =~ ^(pending|interrupted)$ ]] && [ "${tries["$study $task"]}" -lt 3 ]; then
       echo "scaling.sh: $study $run ended $status; queued again" >&2
-      tasks+=("$study $task $run")
+      tasks+=("$item")
+    fi
+    if [ -n "$expect" ] && [ "$status" = done ] && [ "$got" != "$expect" ]; then
+      echo "scaling.sh: $study $run was rerun and ended on best_ever $got, but the ledger scores it $expect: not the same run (one seed should fix it; see docs/scaling.md). Stopping before the ledger is written; the rerun's folder is $output/$study/$run, and the next ledger (any stage) would take its row" >&2
+      for pid in "${!what[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
+      wait || true
+      exit 1
     fi
     # The other slot's run goes on whatever the ledger does; the next run's commit retries it.
     ledger || echo "scaling.sh: the ledger failed after $study $run (the next run's retries it)" >&2
@@ -251,6 +274,15 @@ main() {
           run_studies "${compare_studies[@]}"
         fi
         [ "$dry_run" = 1 ] || { ledger; commit_results "Ledger (issue 38): compare summary"; } ;;
+      posture-runs)
+        # "STUDY TASK RUN_DIR BEST_EVER" of each run to rerun (refused, exit 2, when a sweep
+        # now gives such a run another run key than the ledger's).
+        listing=$("$PY" "$ROOT/scripts/scaling-report.py" posture-runs --results "$HERE/results" --studies "$output" \
+                  --cic "$CIC" --sweeps "$HERE") || exit 2
+        items=(); [ -z "$listing" ] || mapfile -t items <<< "$listing"
+        echo "== posture-runs: ${#items[@]} runs to rerun" >&2
+        [ "$summary_only" = 1 ] || run_pool "${items[@]}"
+        [ "$dry_run" = 1 ] || [ ${#items[@]} = 0 ] || { ledger; commit_results "Ledger (issue 38): posture-runs summary"; } ;;
       ledger)
         ledger ;;
       report)

@@ -170,8 +170,41 @@ def left_out(gone, hybrid_gone):
         counts = [f"{n[robot]} {what}" for n, what in ((gone, "direct"), (hybrid_gone, "Offset-HybrID")) if robot in n]
         parts.append(f"{robot} ({' and '.join(counts)} runs)")
     return ("Left out, for finished runs whose folders are gone and that have no row in `" + CACHE + "`: "
-            + ", ".join(parts) + ". Rerun those runs (`cic sweep` of the robot's compare sweep with --config; "
-            "one seed fixes a run) to put their robots back.\n\n")
+            + ", ".join(parts) + ". `scripts/scaling.sh posture-runs` reruns them (one seed fixes a run, and each must end on its "
+            "ledger's best) to put their robots back.\n\n")
+
+
+def reruns(results, studies, cic, sweeps):
+    """[(study, task, run_dir, best_ever)] of the finished runs the page needs (the best direct method's and
+    Offset-HybrID's) whose folder is gone and whose replays are not cached, each with its task in the study's
+    sweep (SWEEPS/STUDY.xml) and the ledger's best_ever, which its rerun must end on (scaling.sh posture-runs).
+    Refused when the sweep now gives such a run another run key than the ledger's: its rerun would be
+    another run, not this one."""
+    import scaling_status
+    cache = read_cache(os.path.join(results, CACHE))
+    keys = {(r["study"], r["config"], r["seed"]): r.get("run_key", "") for r in compare_rows(results)}
+    wanted = {}   # study: [(config, seed, best_ever, run_dir)]
+    for method in ("direct", "offset-hybrid"):
+        for runs in method_runs(results, studies, method).values():
+            for (study, config, seed, best), path in runs:
+                if (study, config, seed, best) not in cache and not os.path.isdir(path):
+                    wanted.setdefault(study, []).append((config, seed, best, os.path.relpath(path, os.path.join(studies, study))))
+    out = []
+    for study in sorted(wanted):
+        sweep = os.path.join(sweeps, study + ".xml")
+        if not os.path.exists(sweep):
+            raise sc.Refusal(f"posture-runs: {study}'s sweep {sweep} is missing")
+        listed = {r["run_dir"]: r for r in scaling_status.sweep_runs(cic, sweep, os.path.join(studies, study))}
+        for config, seed, best, run_dir in sorted(wanted[study], key=lambda w: (w[0], int(w[1]))):
+            row = listed.get(run_dir)
+            if row is None:
+                raise sc.Refusal(f"posture-runs: {study} {run_dir} is in the ledger but no run of {sweep}")
+            if row["run_key"] != keys[(study, config, seed)]:
+                raise sc.Refusal(f"posture-runs: {sweep} now gives {run_dir} the run key {row['run_key']}, the "
+                                 f"ledger's row has {keys[(study, config, seed)] or 'none'}: a rerun would be "
+                                 "another run than the one the ledger scores")
+            out.append((study, row["task"], run_dir, best))
+    return out
 
 
 def posture(results, studies, cic, command):

@@ -153,7 +153,7 @@ check(p.returncode == 0 and (results / "posture.md").read_bytes() == before,
 write_ledger(rows + [dict(rows[4], seed=2, run_dir=f"runs/{D}/s2")])
 p = run(posture)
 text = (results / "posture.md").read_text()
-check(p.returncode == 0 and "no row in `compare-posture.csv`: r1 (1 direct runs). Rerun" in text and "| r1 |" not in text
+check(p.returncode == 0 and "no row in `compare-posture.csv`: r1 (1 direct runs). `scripts/scaling.sh posture-runs` reruns them" in text and "| r1 |" not in text
       and "| centipede-2 | 12 | 2 |" in text, f"a run with no folder and no row: {p.returncode} {p.stderr}\n{text}")
 
 # Refusals: exit 2, one line, posture.md untouched.
