@@ -13,11 +13,11 @@
 #include <fstream>
 #include <optional>
 #include <set>
-#include <sstream>
 
 #include "cic/core/error.hpp"
 #include "cic/io/experiment_types.hpp"
 #include "cic/io/settings_io.hpp"
+#include "cic/io/xml.hpp"
 #include "cic/report/archive_plot.hpp"
 #include "cic/report/gait_assessment.hpp"
 #include "cic/report/path_plot.hpp"
@@ -82,17 +82,10 @@ private:
     fs::path path_;
 };
 
-std::string read_bytes(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 // A figure file as an <img> whose source is the file itself (a data URI).
 std::string image(const fs::path& file, const std::string& alt) {
     const std::string type = file.extension() == ".svg" ? "image/svg+xml" : "image/png";
-    return fmt::format("<img alt=\"{}\" src=\"data:{};base64,{}\">\n", html_escape(alt), type, base64(read_bytes(file)));
+    return fmt::format("<img alt=\"{}\" src=\"data:{};base64,{}\">\n", html_escape(alt), type, base64(io::xml::read_file(file)));
 }
 
 std::string note(const std::string& text) { return "<p class=\"note\">" + html_escape(text) + "</p>\n"; }
@@ -369,8 +362,9 @@ std::string report_html(const fs::path& folder, const ReportOptions& options) {
         html += table({"run", std::string("last ") + report::x_axis_name(report::search_kind_of(folder)), "its best", "best so far",
                        "evaluations", "wall seconds"},
                       rows);
-        const std::string summary = read_bytes(folder / "summary.txt");
-        if (!summary.empty()) html += "<pre>" + html_escape(summary) + "</pre>\n";
+        // A run still going has no summary yet; one that cannot be read is an error, not a blank.
+        if (fs::exists(folder / "summary.txt"))
+            html += "<pre>" + html_escape(io::xml::read_file(folder / "summary.txt")) + "</pre>\n";
     }
     html += "</body>\n</html>\n";
     return html;
