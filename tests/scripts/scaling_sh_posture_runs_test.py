@@ -17,27 +17,14 @@ direct, an Offset-HybrID and a HyperGP-gait variant, seeds 1 and 2) run by
     scaling_sh_posture_runs_test.py SOURCE_DIR CIC WORK_DIR
 """
 import csv
-import pathlib
 import shutil
 import subprocess
-import sys
 
-source, cic, work = pathlib.Path(sys.argv[1]), sys.argv[2], pathlib.Path(sys.argv[3])
-shutil.rmtree(work, ignore_errors=True)
-work.mkdir(parents=True)
+from scaling_scratch import Scratch
 
-
-def check(condition, message):
-    if not condition:
-        print(f"scaling_sh_posture_runs_test: {message}", file=sys.stderr)
-        sys.exit(1)
-
-
-root, studies = work / "root", work / "studies"
-shutil.copytree(source / "scripts", root / "scripts")
-here = root / "experiments" / "scaling"
-results = here / "results"
-results.mkdir(parents=True)
+scratch = Scratch("scaling_sh_posture_runs_test")
+check, scaling = scratch.check, scratch.scaling
+source, cic, studies, here, results = scratch.source, scratch.cic, scratch.studies, scratch.here, scratch.results
 SWEEP = here / "compare-centipede-2.xml"
 sweep_text = f"""<?xml version="1.0" encoding="UTF-8"?>
 <sweep name="compare-centipede-2">
@@ -56,14 +43,6 @@ sweep_text = f"""<?xml version="1.0" encoding="UTF-8"?>
 </sweep>
 """
 SWEEP.write_text(sweep_text)
-env = {"PATH": "/usr/bin:/bin", "CIC": cic, "PYTHON": sys.executable}
-
-
-def scaling(*args):
-    return subprocess.run(["bash", str(root / "scripts" / "scaling.sh"), "--output", str(studies), *args],
-                          capture_output=True, text=True, env=env)
-
-
 def ledger_rows():
     return {(r["config"], r["seed"]): r for r in csv.DictReader(open(results / "scaling-runs.csv"))}
 

@@ -10,12 +10,10 @@ and the stage says which page failed and exits 1 after trying them all.
 Exit 77 (skipped) without scipy, numpy or matplotlib.
 """
 import csv
-import pathlib
 import shutil
 import subprocess
 import sys
 
-source, cic, work = pathlib.Path(sys.argv[1]), sys.argv[2], pathlib.Path(sys.argv[3])
 try:
     import matplotlib  # noqa: F401
     import numpy  # noqa: F401
@@ -23,24 +21,18 @@ try:
 except ImportError as e:
     print(f"scaling_sh_report_test: skipped: {e}")
     sys.exit(77)
-shutil.rmtree(work, ignore_errors=True)
-work.mkdir(parents=True)
+from scaling_scratch import Scratch  # noqa: E402 (after the skip)
 
-
-def check(condition, message):
-    if not condition:
-        print(f"scaling_sh_report_test: {message}", file=sys.stderr)
-        sys.exit(1)
+scratch = Scratch("scaling_sh_report_test")
+check = scratch.check
+source, cic, work, root, studies, results = (scratch.source, scratch.cic, scratch.work, scratch.root, scratch.studies,
+                                             scratch.results)
 
 
 def run(args, **kw):
     return subprocess.run(args, capture_output=True, text=True, **kw)
 
 
-root, studies = work / "root", work / "studies"
-shutil.copytree(source / "scripts", root / "scripts")
-results = root / "experiments" / "scaling" / "results"
-results.mkdir(parents=True)
 D = "direct.sepcmaes-s0.15"
 rows = []
 for seed in ("1", "2"):
@@ -62,8 +54,7 @@ with open(results / "scaling-runs.csv", "w", newline="") as f:
     w.writeheader()
     w.writerows(rows)
 
-p = run(["bash", str(root / "scripts" / "scaling.sh"), "report", "--output", str(studies)],
-        env={"PATH": "/usr/bin:/bin", "CIC": cic, "PYTHON": sys.executable})
+p = scratch.scaling("report")
 check(p.returncode == 1, f"report: exit {p.returncode} (strips has no centipede-16 run to show)\n{p.stderr}")
 check("scaling.sh: report: strips failed" in p.stderr, f"the failed page is not named: {p.stderr}")
 for page in ("compare.md", "anytime.md", "posture.md"):

@@ -20,27 +20,15 @@ one without a key):
     scaling_sh_runs_test.py SOURCE_DIR CIC WORK_DIR
 """
 import csv
-import pathlib
 import shutil
 import subprocess
-import sys
 
-source, cic, work = pathlib.Path(sys.argv[1]), sys.argv[2], pathlib.Path(sys.argv[3])
-shutil.rmtree(work, ignore_errors=True)
-work.mkdir(parents=True)
+from scaling_scratch import Scratch
 
-
-def check(condition, message):
-    if not condition:
-        print(f"scaling_sh_runs_test: {message}", file=sys.stderr)
-        sys.exit(1)
-
-
-root, studies = work / "root", work / "studies"
-shutil.copytree(source / "scripts", root / "scripts")
-here = root / "experiments" / "scaling"
-results = here / "results"
-results.mkdir(parents=True)
+scratch = Scratch("scaling_sh_runs_test")
+check, scaling = scratch.check, scratch.scaling
+source, cic, work, studies, here, results = (scratch.source, scratch.cic, scratch.work, scratch.studies, scratch.here,
+                                             scratch.results)
 ROBOTS = ["centipede-2", "centipede-2-irregular", "centipede-4", "centipede-4-irregular", "centipede-8",
           "centipede-8-irregular", "centipede-16", "centipede-16-irregular", "r1", "r2"]
 for robot in ROBOTS:
@@ -82,12 +70,6 @@ for robot in ROBOTS:
         rows.append(dict(study=study, config="direct", seed=seed, status=status, best_ever="1.5" if status == "done" else "",
                          evaluations="16", wall_seconds="1.000", run_dir=f"runs/direct/s{seed}", commit="earlier",
                          run_key=key))
-env = {"PATH": "/usr/bin:/bin", "CIC": cic, "PYTHON": sys.executable}
-
-
-def scaling(*args):
-    return subprocess.run(["bash", str(root / "scripts" / "scaling.sh"), "--output", str(studies), *args],
-                          capture_output=True, text=True, env=env)
 
 
 # No ledger yet (a new study): every run is to go.
@@ -131,8 +113,7 @@ for name, body in (("no-csv", "case \"$*\" in *--csv*) echo 'The following argum
     older = work / f"older-cic-{name}"
     older.write_text("#!/bin/sh\n" + body)
     older.chmod(0o755)
-    p = subprocess.run(["bash", str(root / "scripts" / "scaling.sh"), "--output", str(studies), "--dry-run", "compare"],
-                       capture_output=True, text=True, env=dict(env, CIC=str(older)))
+    p = scaling("--dry-run", "compare", cic=older)
     check(p.returncode == 2 and "build cic from this checkout" in p.stderr and not p.stdout,
           f"an older cic ({name}): exit {p.returncode}, {p.stderr}")
     check(not studies.exists() and ledger.read_bytes() == before, f"a refusal ({name}) wrote something")
