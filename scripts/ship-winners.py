@@ -6,11 +6,12 @@ experiments/baselines/results/walk-winners.csv (`scripts/walk-report.py winners`
 
 Each file is the winning study's configuration for that robot, exactly as the
 comparison ran it (its base with the sweep's overrides, seed 1), budget
-included: `cic sweep --dry-run` gives the command, so this script reads no sweep
+included: `cic sweep --dry-run --csv` gives the command, so this script reads no sweep
 file itself. The test SweepFile.ShippedBestSettingsAreTheComparisonWinners
 holds the shipped files to the CSV.
 """
 import csv
+import io
 import os
 import pathlib
 import shlex
@@ -39,13 +40,12 @@ def command_of(study, config):
     """(base settings file, [overrides]) of the study's seed-1 run of config, as cic sweep plans it."""
     with tempfile.TemporaryDirectory() as tmp:
         out = subprocess.run([CIC, "--quiet", "sweep", str(ROOT / "experiments" / "baselines" / f"{study}.xml"),
-                              "--output", tmp, "--dry-run"], capture_output=True, text=True)
+                              "--output", tmp, "--dry-run", "--csv"], capture_output=True, text=True)
     if out.returncode != 0:
-        fail(f"{study}: cic sweep --dry-run failed: {out.stderr.strip()}")
-    for line in out.stdout.splitlines():
-        words = line.split()
-        if len(words) > 3 and words[2] == f"runs/{config}/s1":
-            argv = shlex.split(line[line.index(" cic ") + 1:])
+        fail(f"{study}: cic sweep --dry-run --csv failed: {out.stderr.strip()}")
+    for row in csv.DictReader(io.StringIO(out.stdout)):
+        if row["run_dir"] == f"runs/{config}/s1":
+            argv = shlex.split(row["command"])
             base = argv[argv.index("--settings") + 1]
             sets = [argv[i + 1] for i, a in enumerate(argv) if a == "--set"]
             return base, [s for s in sets if not s.startswith("Experiment.seed=")]

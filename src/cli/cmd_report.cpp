@@ -15,6 +15,7 @@
 #include "cic/cli/command_guard.hpp"
 #include "cic/cli/commands.hpp"
 #include "cic/core/error.hpp"
+#include "cic/core/shell_words.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/run/self_path.hpp"
 #include "cic/study/compare_table.hpp"
@@ -24,12 +25,6 @@ namespace cic::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string shell_quote(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
 
 #ifdef CIC_HAVE_VIEWER
 // The strip through `cic view --screenshot --strip`, in a process of its own:

@@ -7,6 +7,7 @@
 
 #include "cic/study/sweep.hpp"
 #include "cic/core/error.hpp"
+#include "cic/core/shell_words.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/io/settings_table.hpp"
 #include "cic/io/strict_xml.hpp"
@@ -260,9 +261,9 @@ std::vector<std::string> SweepPlan::overrides(const SweepTask& task) const {
 }
 
 std::string SweepPlan::command_line(const SweepTask& task) const {
-    std::string out = "cic --settings " + base.string();
-    for (const auto& s : overrides(task)) out += " --set " + s;
-    return out;
+    std::vector<std::string> argv{"cic", "--settings", base.string()};
+    for (const auto& s : overrides(task)) argv.insert(argv.end(), {"--set", s});
+    return shell_words(argv);
 }
 
 io::Settings SweepPlan::settings(const SweepTask& task, const std::vector<std::string>& extra) const {

@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "cic/core/error.hpp"
+#include "cic/core/shell_words.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/io/settings_table.hpp"
 #include "cic/run/settings_diff.hpp"
@@ -39,16 +40,6 @@ std::vector<std::string> task_argv(const SweepPlan& plan, const SweepTask& t, in
                                    const std::string& program = run::self_path()) {
     return {program, "--quiet",  "sweep", plan.file.string(), "--task", std::to_string(t.index), "--workers",
             std::to_string(workers), "--output", plan.study.string()};
-}
-
-std::string shell_words(const std::vector<std::string>& argv) {
-    std::string out;
-    for (const auto& a : argv) {
-        const bool plain = a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./=:") ==
-                           std::string::npos;
-        out += (out.empty() ? "" : " ") + (plain ? a : "'" + a + "'");
-    }
-    return out;
 }
 
 } // namespace

@@ -231,7 +231,7 @@ std::string index_text(const SweepPlan& plan, const std::vector<SweepTask>& task
         text += fmt::format(",{},{},{},{},{},{:.3f},{},{},{}", t.seed, to_string(st.status), st.final_best,
                             st.generations, st.evaluations, st.wall_seconds, st.best_ever,
                             csv_cell(run::recorded_commit(plan.study / t.run_dir)), run_key(plan, t));
-        if (dry) text += "," + csv_cell(st.status == TaskStatus::Done ? std::string() : plan.command_line(t));
+        if (dry) text += "," + csv_cell(plan.command_line(t));
         text += "\n";
     }
     return text;

@@ -13,8 +13,10 @@ the table's verdicts and the figure.
 Exit 77 (skipped) without scipy or matplotlib.
 """
 import csv
+import io
 import pathlib
 import re
+import shlex
 import shutil
 import statistics
 import subprocess
@@ -156,11 +158,11 @@ for name in files:
 
 
 def effective(sweep, config, seed):
-    """`cic settings` of the command `cic sweep --dry-run` gives for one run, seed left out."""
-    p = run([cic, "sweep", str(sweep), "--output", str(work / "dry" / sweep.stem), "--dry-run"])
-    line = next(ln for ln in p.stdout.splitlines() if f" runs/{config}/s{seed} " in ln)
-    args = line.split(" cic ", 1)[1].split()
-    q = run([cic, "settings", args[1]] + [a for a in args[2:]])
+    """`cic settings` of the command `cic sweep --dry-run --csv` gives for one run, seed left out."""
+    p = run([cic, "sweep", str(sweep), "--output", str(work / "dry" / sweep.stem), "--dry-run", "--csv"])
+    row = next(r for r in csv.DictReader(io.StringIO(p.stdout)) if r["run_dir"] == f"runs/{config}/s{seed}")
+    args = shlex.split(row["command"])
+    q = run([cic, "settings", args[2]] + args[3:])
     check(q.returncode == 0, f"cic settings of {config}: {q.stderr}")
     return re.sub(r"<seed>\d+</seed>", "", q.stdout)
 

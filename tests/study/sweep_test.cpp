@@ -293,8 +293,9 @@ TEST(Sweep, CsvDryRunIsTheIndexWithTaskAndCommand) {
     const auto index = lines_of(read_text(dir / "study/index.csv"));
     ASSERT_EQ(after.size(), index.size());
     for (std::size_t i = 1; i < after.size(); ++i) {
-        // task first, an empty command last (the run is done): between them, the index row.
-        EXPECT_EQ(after[i], std::to_string(i - 1) + "," + index[i] + ",") << i;
+        // task first, the command last (as before the run): between them, the index row.
+        const std::string command = before[i].substr(before[i].rfind(",cic --settings "));
+        EXPECT_EQ(after[i], std::to_string(i - 1) + "," + index[i] + command) << i;
         EXPECT_NE(index[i].find(",done,"), std::string::npos) << index[i];
     }
 

@@ -114,8 +114,8 @@ void write_index(const SweepPlan& plan);
 
 // index.csv's text for `tasks`, as write_index writes it. WithTaskAndCommand
 // (`cic sweep --dry-run --csv`) adds a first column `task` (the plan index that
-// --task takes) and a last column `command` (the run's cic command line, empty
-// when it is done): one format for every program that reads a study's runs.
+// --task takes) and a last column `command` (the run's cic command line, shell
+// quoted, done or not): one format for every program that reads a study's runs.
 enum class IndexColumns { Index, WithTaskAndCommand };
 std::string index_text(const SweepPlan& plan, const std::vector<SweepTask>& tasks,
                        IndexColumns columns = IndexColumns::Index);
