@@ -135,6 +135,12 @@ commit_results() {   # MESSAGE
   echo "scaling.sh: could not commit the ledger (the next run's commit will carry it)" >&2
 }
 
+# "TASK STATUS RUN_DIR RUN_KEY BEST_EVER" of every run of STUDY's sweep, read from
+# `cic sweep --dry-run --csv` by the one reader of it (scaling_status.sweep_runs).
+runs_of() {   # STUDY
+  "$PY" "$ROOT/scripts/scaling-report.py" runs --sweep "$HERE/$1.xml" --output "$output/$1" --cic "$CIC"
+}
+
 # The studies' pending tasks (`cic sweep --task`, each resumable) run in one
 # pool of --jobs slots across the studies, in order: a slot takes the next task
 # as soon as its run ends (a study's runs differ in length by method, and
@@ -143,12 +149,6 @@ commit_results() {   # MESSAGE
 # index under its lock. A task whose run the ledger records as done, with the
 # run key the sweep gives it, is skipped: its folder went with an earlier
 # sitting's machine, and its row is the record.
-# "TASK STATUS RUN_DIR RUN_KEY" of every run of STUDY's sweep, read from
-# `cic sweep --dry-run --csv` by the one reader of it (scaling_status.sweep_runs).
-runs_of() {   # STUDY
-  "$PY" "$ROOT/scripts/scaling-report.py" runs --sweep "$HERE/$1.xml" --output "$output/$1" --cic "$CIC"
-}
-
 run_studies() {   # STUDY...
   local s item listing tasks=() pending kept verdicts skipped stale
   local ledger_csv="$HERE/results/scaling-runs.csv"
