@@ -36,7 +36,9 @@
       and method the finished compare run with the highest raw eq. 7.1 in
       RESULTS/compare-raw.csv, its `cic assess` verdicts and a strip by
       scripts/screenshot-strip.sh (OUT-IMAGES, default docs/img:
-      scaling-strip-<robot>-<method>.png; frames at --at, default "2 5 8 11 14")
+      scaling-strip-<robot>-<method>.png; frames at --at, default "2 5 8 11 14");
+      each pick's assess row is cached in RESULTS/compare-strips.csv, so a pick
+      whose folder is gone keeps its row and the strip drawn before
   scaling-report.py posture --results DIR --studies DIR --cic CIC
       RESULTS/posture.md: scripts/posture-probe.py on every finished run of the
       best direct method of the comparison, per robot the median share of its

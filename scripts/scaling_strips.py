@@ -9,8 +9,14 @@ best_ever; ties: the lowest seed). Each pick is replayed by `cic assess`, whose
 own columns are its verdicts (nothing is judged here), and drawn by
 scripts/screenshot-strip.sh into IMAGES/scaling-strip-<robot>-<method>.png.
 RESULTS/strips.md gets one table per robot, the strips and the command.
+Each pick's `cic assess` row is cached in RESULTS/compare-strips.csv (keyed like
+compare-raw.csv by study, config, seed and best_ever), so the page can be
+written again on a machine whose run folders are gone (they are never
+committed): such a pick keeps its cached row and the strip drawn before (in
+IMAGES), and the page says so.
 Everything is checked before anything is written: a missing file, a robot
-without scored runs or a picked run whose folder is gone is refused (exit 2)."""
+without scored runs, or a picked run whose folder is gone and that has no
+cached row (or, when drawing, no strip) is refused (exit 2)."""
 import csv
 import os
 import shutil
@@ -22,11 +28,13 @@ import scaling_compare as sc
 from scaling_results import LABELS, finished, ledger_rows, method_of, read_cache
 
 LARGEST = ["centipede-16", "centipede-16-irregular"]
+CACHE = "compare-strips.csv"
 STRIP_TIMES = "2 5 8 11 14"   # seconds of the 15 s replay (screenshot-strip.sh's default)
 # `cic assess`'s columns shown in the table, in its order, with their units.
 ASSESS_COLUMNS = [("verdict", "verdict"), ("distance", "distance (m)"), ("elevation", "elevation (m)"),
                   ("dominant_hz", "dominant Hz"), ("mean_height", "mean height"), ("min_height", "min height"),
                   ("final_up", "final up"), ("flipped", "flipped"), ("shaking", "shaking")]
+CACHE_FIELDS = ["study", "config", "seed", "best_ever", "raw_fitness", "duty_factors"] + [c for c, _ in ASSESS_COLUMNS]
 
 
 def picks(results, studies, robots):
@@ -46,19 +54,31 @@ def picks(results, studies, robots):
                 continue   # another robot, or a score of a run since rerun (its best_ever differs)
             raw, m = float(c["raw_fitness"]), method_of(key[1])
             if m not in best or (raw, -int(key[2])) > (best[m]["raw"], -int(best[m]["seed"])):
-                best[m] = {"study": key[0], "config": key[1], "seed": key[2], "raw": raw,
+                best[m] = {"study": key[0], "config": key[1], "seed": key[2], "raw": raw, "key": key,
                            "run_dir": done[key]["run_dir"], "path": os.path.join(studies, key[0], done[key]["run_dir"])}
         if not best:
             raise sc.Refusal(f"strips: {robot}: no finished compare-{robot} run is scored in {cache_path} "
                              f"(run scaling-report.py results first; robots: {', '.join(robots)})")
-        for m, p in best.items():
-            if not os.path.isdir(p["path"]):
-                sweep = os.path.join(sc.ROOT, "experiments", "scaling", f"{p['study']}.xml")
-                raise sc.Refusal(f"strips: {robot} {p['config']} seed {p['seed']} is the best {m} run, "
-                                 f"but {p['path']} is gone: one seed fixes a run, so rerun it with `cic sweep {sweep} "
-                                 f"--output {os.path.join(studies, p['study'])} --task N` (its N from --dry-run)")
         out[robot] = {m: best[m] for m in sc.METHODS if m in best}
     return out
+
+
+def check_gone(chosen, strip_cache, images, draw):
+    """The picks whose folder is gone: each needs its cached assess row and, when drawing, its strip
+    drawn before; else refused, saying how to get the folder back."""
+    for robot, by_method in chosen.items():
+        for m, p in by_method.items():
+            if os.path.isdir(p["path"]):
+                continue
+            png = os.path.join(images, image_name(robot, m))
+            lacks = (f"{CACHE} has no row for it" if p["key"] not in strip_cache else
+                     f"its strip {png} is missing" if draw and not os.path.exists(png) else None)
+            if lacks:
+                sweep = os.path.join(sc.ROOT, "experiments", "scaling", f"{p['study']}.xml")
+                raise sc.Refusal(f"strips: {robot} {p['config']} seed {p['seed']} is the best {m} run, "
+                                 f"but {p['path']} is gone, and {lacks}: one seed fixes a run, so rerun it "
+                                 f"with `cic sweep {sweep} --output {os.path.dirname(os.path.dirname(os.path.dirname(p['path'])))} "
+                                 "--task N` (its N from --dry-run)")
 
 
 def assess(cic, paths):
@@ -117,6 +137,9 @@ def robot_section(robot, chosen, rows, results, images, drawn):
         out.append(f"| {LABELS[m]} | {p['study']}/{p['run_dir']} | {p['seed']} | {p['raw']:.3f} | "
                    + " | ".join(a[c] for c, _ in ASSESS_COLUMNS) + " |")
         replayed = float(a["raw_fitness"])
+        if a.get("cached"):
+            notes.append(f"- {LABELS[m]}: the run's folder is gone here; its row is the one `cic assess` gave "
+                         f"when it was there (`{CACHE}`), and its strip the one drawn then.")
         if abs(replayed - p["raw"]) > 1e-9 * max(1.0, abs(p["raw"])):
             notes.append(f"- {LABELS[m]}: `cic assess` now replays this run to raw {replayed:.6g}, "
                          f"compare-raw.csv has {p['raw']:.6g} (a different cic build?).")
@@ -144,17 +167,26 @@ def strips(results, studies, cic, images, robots, times, command, draw=True):
     if not ok:
         raise sc.Refusal(f"strips: --at takes seconds >= 0 separated by spaces, e.g. \"{STRIP_TIMES}\"; got '{times}'")
     chosen = picks(results, studies, robots)
-    if draw:
+    strip_cache = read_cache(os.path.join(results, CACHE))
+    check_gone(chosen, strip_cache, images, draw)
+    present = [p for by_method in chosen.values() for p in by_method.values() if os.path.isdir(p["path"])]
+    if draw and present:
         why = viewer_missing(cic)
         if why:
             raise sc.Refusal(f"strips: cannot draw strips: {why} (--no-strips writes the verdicts only)")
-    paths = [p["path"] for by_method in chosen.values() for p in by_method.values()]
-    rows = assess(cic, paths)
+    rows = assess(cic, [p["path"] for p in present]) if present else {}
+    for by_method in chosen.values():
+        for p in by_method.values():
+            if p["path"] not in rows:
+                rows[p["path"]] = dict(strip_cache[p["key"]], cached=True)
+            else:
+                strip_cache[p["key"]] = {**dict(zip(CACHE_FIELDS[:4], p["key"])),
+                                         **{c: rows[p["path"]].get(c, "") for c in CACHE_FIELDS[4:]}}
     if draw:
         os.makedirs(images, exist_ok=True)
-        for robot, by_method in chosen.items():
-            for m, p in by_method.items():
-                strip(cic, p["path"], os.path.join(images, image_name(robot, m)), times)
+        for p in present:
+            robot = p["study"][len("compare-"):]
+            strip(cic, p["path"], os.path.join(images, image_name(robot, method_of(p["config"]))), times)
     out = ["# The best gaits on the largest robots (issue 38)", "",
            "Written by `scripts/scaling-report.py strips`: per robot and method the finished comparison run with",
            "the highest raw eq. 7.1 of its replayed best (`compare-raw.csv`, from `scaling-report.py results`),",
@@ -166,9 +198,9 @@ def strips(results, studies, cic, images, robots, times, command, draw=True):
         out += ["No strips were drawn (--no-strips).", ""]
     for robot in robots:
         out += robot_section(robot, chosen[robot], rows, results, images, draw)
+    if present:
+        sc.write_rows_atomically(os.path.join(results, CACHE), CACHE_FIELDS, strip_cache)
     path = os.path.join(results, "strips.md")
-    with open(path + ".tmp", "w") as f:
-        f.write("\n".join(out))
-    os.replace(path + ".tmp", path)
+    sc.write_atomically(path, "\n".join(out))
     print(f"scaling-report.py: wrote {path}" + (f" and {sum(map(len, chosen.values()))} strips in {images}"
                                                if draw else ""), file=sys.stderr)

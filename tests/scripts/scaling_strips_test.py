@@ -5,8 +5,10 @@ and method the finished run with the highest cached raw eq. 7.1 (a score of a
 run since rerun, a failed run and other robots do not count; ties: the lowest
 seed), `cic assess`'s own verdict columns in results/strips.md, the strip PNGs
 and their links (only when `cic view` can render: the viewer build and an X
-display or xvfb-run; otherwise that part is skipped, saying so), and the
-refusals: exit 2, one line, nothing written.
+display or xvfb-run; otherwise that part is skipped, saying so), the cache
+(compare-strips.csv, one assess row per pick: with the run folders gone the
+page comes out of it, keeping the strips drawn before byte for byte, and says
+so per pick), and the refusals: exit 2, one line, nothing written.
 
     scaling_strips_test.py SOURCE_DIR CIC WORK_DIR
 """
@@ -134,7 +136,7 @@ refused(strips(results, studies, "--at", "1 x"), "--at takes seconds >= 0", resu
 make_results(work / "gone", None)   # the same scores, but no run folder on disk
 refused(strips(work / "gone", work / "nowhere", "--no-strips"),
         f"centipede-16 {D} seed 2 is the best direct run, but {work / 'nowhere'}/compare-centipede-16/runs/{D}/s2 "
-        f"is gone: one seed fixes a run, so rerun it with `cic sweep {source}/experiments/scaling/compare-centipede-16.xml "
+        f"is gone, and compare-strips.csv has no row for it: one seed fixes a run, so rerun it with `cic sweep {source}/experiments/scaling/compare-centipede-16.xml "
         f"--output {work / 'nowhere'}/compare-centipede-16 --task N`", work / "gone")
 p = run(REPORT + ["strips", "--results", str(results), "--cic", cic])
 check(p.returncode == 2 and "--studies is required" in p.stderr, f"--studies is required: {p.stderr}")
@@ -185,6 +187,20 @@ check(not (work / "unused").exists(), "no images without strips")
 check(f"scripts/scaling-report.py strips --results {results} --studies {studies} --cic {cic} --no-strips" in md,
       "the command that made it\n" + md)
 
+# ---- the picks' folders gone: their cached assess rows (compare-strips.csv, one per pick) ----
+cached_rows = list(csv.DictReader(open(results / "compare-strips.csv")))
+check(len(cached_rows) == 7 and {r["verdict"] for r in cached_rows} == {assessed["a"]["verdict"], assessed["b"]["verdict"]},
+      f"compare-strips.csv: one row per pick, assess's own: {cached_rows}")
+shutil.copy(results / "compare-strips.csv", work / "gone" / "compare-strips.csv")
+p = strips(work / "gone", work / "nowhere", "--no-strips")
+check(p.returncode == 0, f"strips from the cache: {p.stderr}")
+gone_md = (work / "gone" / "strips.md").read_text()
+check_tables(gone_md)
+check(gone_md.count("the run's folder is gone here; its row is the one `cic assess` gave") == 7,
+      "each pick from the cache says so\n" + gone_md)
+check((work / "gone" / "compare-strips.csv").read_bytes() == (results / "compare-strips.csv").read_bytes(),
+      "nothing replayed, so the cache is unchanged")
+
 
 # ---- with strips, when cic view can render ----
 def viewer_missing():
@@ -222,4 +238,16 @@ else:
     check(f"![centipede-16, best direct: compare-centipede-16/runs/{D}/s2](../img/scaling-strip-centipede-16-direct.png)"
           in md, "the strip's link, relative to results/\n" + md)
     check("scaling-strip-centipede-16-irregular-switch-hybrid.png" not in md, "no link without a run")
+    # The folders gone: the strips drawn before stay, byte for byte; without them, refused.
+    drawn = {f.name: f.read_bytes() for f in images.iterdir()}
+    (work / "gone" / "strips.md").unlink()
+    p = strips(work / "gone", work / "nowhere", "--out-images", str(images))
+    check(p.returncode == 0 and {f.name: f.read_bytes() for f in images.iterdir()} == drawn,
+          f"strips with the folders gone keep the strips drawn before: {p.stderr}")
+    check("(../img/scaling-strip-centipede-16-direct.png)" in (work / "gone" / "strips.md").read_text(),
+          "the kept strips are linked")
+    (work / "gone" / "strips.md").unlink()
+    refused(strips(work / "gone", work / "nowhere", "--out-images", str(work / "no-img")),
+            f"is gone, and its strip {work / 'no-img'}/scaling-strip-centipede-16-direct.png is missing", work / "gone",
+            work / "no-img")
 print("scaling_strips_test: ok")
