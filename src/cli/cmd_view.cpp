@@ -32,7 +32,11 @@ void reexec_under_xvfb() {
     for (std::string arg; std::getline(in, arg, '\0');) args.push_back(arg);
     if (args.empty()) return;
     args[0] = run::self_path();   // this binary's file: under xvfb-run, /proc/self/exe would be its shell
-    std::vector<std::string> cmd = {"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
+    // -a takes the first free display from -n on; two views started at once from the
+    // same number can both take it (xvfb-run checks, then starts), so each starts from
+    // a number of its own process id.
+    const std::string first_display = std::to_string(100 + getpid() % 10000);
+    std::vector<std::string> cmd = {"xvfb-run", "-a", "-n", first_display, "-s", "-screen 0 1280x1024x24"};
     cmd.insert(cmd.end(), args.begin(), args.end());
     std::vector<char*> argv;
     for (auto& a : cmd) argv.push_back(a.data());
