@@ -262,8 +262,9 @@ def against_ipop(g, ipop, waiting, unfinished=frozenset()):
     out = ["", "## The second goal: a hybrid against IPOP-CMA-ES on R1 and R2", "",
            "Each hybrid faces issue 21's IPOP-CMA-ES runs at the same 15,000 evaluations (study "
            "walk-15000-cmaes-gait in", "experiments/baselines/results/walk-runs.csv, the method docs/baselines.md "
-           f"found 2-3 times ahead), with Holm over these {tested} cells only"
-           + ("" if tested == len(s) else " (a robot with runs to come waits for them)") + ".", ""]
+           "found 2-3 times ahead), with Holm over these cells only"
+           + ("" if tested == len(s) else
+              f" ({tested} of {len(s)} so far: a robot with runs to come waits for them)") + ".", ""]
     out += table(h, s, IPOP_LABEL, "IPOP")
     won = [r for r in sc.R_ROBOTS if any(c["holm"] is not None and c["holm"] < ALPHA and c["a12"] > 0.5
                                          for (rr, _), c in s.items() if rr == r)]

@@ -346,7 +346,7 @@ goal = {"r1": {"direct": [v + 100 for v in direct], "offset-hybrid": [v - 20 for
 lines = sr.against_ipop(goal, ipop, False)
 text = "\n".join(lines)
 want = sr.score({r: dict({m: goal[r][m] for m in sr.HYBRIDS}, direct=direct) for r in ("r1", "r2")})
-check(len(want) == 4 and "Holm over these 4 cells only" in text, "Holm over the section's 4 cells\n" + text)
+check(len(want) == 4 and "Holm over these cells only." in text, "Holm over the section's 4 cells\n" + text)
 check(f"| r1 | 12 | IPOP-CMA-ES (issue 21) | 10 | {statistics.median(direct):.2f} |" in text,
       "the reference row is issue 21's IPOP runs\n" + text)
 check(f"{want[('r1', 'switch-hybrid')]['holm']:.3g} | 1.00 [1.00, 1.00] |" in text and
