@@ -25,7 +25,7 @@ import sys
 import tempfile
 
 import scaling_compare as sc
-from scaling_results import LABELS, finished, ledger_rows, method_of, read_cache
+from scaling_results import LABELS, finished, ledger_rows, method_of, read_cache, robot_of
 
 LARGEST = ["centipede-16", "centipede-16-irregular"]
 CACHE = "compare-strips.csv"
@@ -55,6 +55,7 @@ def picks(results, studies, robots):
             raw, m = float(c["raw_fitness"]), method_of(key[1])
             if m not in best or (raw, -int(key[2])) > (best[m]["raw"], -int(best[m]["seed"])):
                 best[m] = {"study": key[0], "config": key[1], "seed": key[2], "raw": raw, "key": key,
+                           "study_dir": os.path.join(studies, key[0]),
                            "run_dir": done[key]["run_dir"], "path": os.path.join(studies, key[0], done[key]["run_dir"])}
         if not best:
             raise sc.Refusal(f"strips: {robot}: no finished compare-{robot} run is scored in {cache_path} "
@@ -77,7 +78,7 @@ def check_gone(chosen, strip_cache, images, draw):
                 sweep = os.path.join(sc.ROOT, "experiments", "scaling", f"{p['study']}.xml")
                 raise sc.Refusal(f"strips: {robot} {p['config']} seed {p['seed']} is the best {m} run, "
                                  f"but {p['path']} is gone, and {lacks}: one seed fixes a run, so rerun it "
-                                 f"with `cic sweep {sweep} --output {os.path.dirname(os.path.dirname(os.path.dirname(p['path'])))} "
+                                 f"with `cic sweep {sweep} --output {p['study_dir']} "
                                  "--task N` (its N from --dry-run)")
 
 
@@ -185,8 +186,8 @@ def strips(results, studies, cic, images, robots, times, command, draw=True):
     if draw:
         os.makedirs(images, exist_ok=True)
         for p in present:
-            robot = p["study"][len("compare-"):]
-            strip(cic, p["path"], os.path.join(images, image_name(robot, method_of(p["config"]))), times)
+            strip(cic, p["path"], os.path.join(images, image_name(robot_of(p["study"]), method_of(p["config"]))),
+                  times)
     out = ["# The best gaits on the largest robots (issue 38)", "",
            "Written by `scripts/scaling-report.py strips`: per robot and method the finished comparison run with",
            "the highest raw eq. 7.1 of its replayed best (`compare-raw.csv`, from `scaling-report.py results`),",
