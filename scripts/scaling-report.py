@@ -50,8 +50,10 @@
       RESULTS/anytime.md and the figure (default docs/img/scaling-anytime.svg):
       per robot and method the median best fitness the finished compare runs
       had found by 5 %, 10 %, ..., 100 % of the budget (their stats.csv, cached
-      in RESULTS/compare-anytime.csv), against the best direct method's
-      (scaling_anytime.py; matplotlib)
+      in RESULTS/compare-anytime.csv), against the best direct method's; and what
+      each Switch-HybrID run handed over, against the best HyperGP had found
+      (run.log and stats.csv, cached in RESULTS/compare-handover.csv)
+      (scaling_anytime.py, scaling_handover.py; matplotlib)
   scaling-report.py status --results DIR [--sweeps DIR] [--jobs N] [--cic CIC]
       print what is left of the comparison, read from the compare sweeps in SWEEPS
       (default experiments/scaling) and the ledger alone (safe beside a running

@@ -19,13 +19,15 @@ eq. 7.1. The page lists both, so the cost of losing the best shows.
 
 Each run's points are cached in RESULTS/compare-anytime.csv (keyed like
 compare-raw.csv by study, config, seed and best_ever), so the table and the
-figure can be written again without the run folders."""
+figure can be written again without the run folders. The page's third table,
+what Switch-HybrID handed over, is scaling_handover.py's."""
 import csv
 import os
 import statistics
 import sys
 
 import scaling_compare as sc
+from scaling_handover import handover_gap_table, handover_records
 from scaling_results import LABELS, compare_rows, finished, method_of, read_cache, robot_of, save_svg
 
 STEPS = [5 * k for k in range(1, 21)]   # per cent of the budget
@@ -268,6 +270,21 @@ def anytime(results, studies, figure_path, command):
                 "Descriptive: no test, and no part of the Holm family.",
                 ""]
         out += pairs
+    gaps, unrecorded = handover_gap_table(handover_records(results, studies, ledger))
+    if gaps or unrecorded:
+        out += ["", "## What Switch-HybrID handed over", "",
+                "Switch-HybrID starts its gait phase from the best gait of HyperGP's last generation, which with",
+                "elitism 0 can be below the best HyperGP had found. Per robot, from each finished run's run.log",
+                "and stats.csv (cached in compare-handover.csv): when it handed over (median evaluations; *on",
+                "stagnation*: 10 generations without a better best, else at 30 % of the budget), how many handed",
+                "over a gait below the best found by then, the shortfall in per cent of that best (median over",
+                "the runs that handed over, zeros included, and the largest), and how many gait phases found a",
+                "gait better than that best. *Runs recorded*: finished runs whose folder was here to read."]
+        if unrecorded:
+            out.append("No Switch-HybrID run of " + ", ".join(unrecorded) + " is recorded: their folders were gone "
+                       "before this table existed.")
+        if gaps:
+            out += [""] + gaps
     sc.write_atomically(os.path.join(results, "anytime.md"), "\n".join(out) + "\n")
     figure(g, figure_path)
     print(f"scaling-report.py: wrote {os.path.join(results, 'anytime.md')} and {figure_path}", file=sys.stderr)

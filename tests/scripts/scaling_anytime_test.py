@@ -7,9 +7,13 @@ no generation by a share counted as "(k of n)", the ratio to the direct
 method at the same share, and the final best's raw eq. 7.1 from
 compare-raw.csv; and the hand-over table, Switch-HybrID against HyperGP-gait
 seed by seed (their points agreeing to 20 %, their gains from 30 % to the end,
-which ends ahead). One stats.csv comes from a real tiny gait run, so the
+which ends ahead); and what each Switch-HybrID run handed over, read from
+its run.log against the best of its stats.csv up to the hand-over (a
+hand-over logged twice by a resumed session is one; two different ones are
+refused, as is a folder without its run.log). One stats.csv comes from a real tiny gait run, so the
 columns cic writes are the ones read. The points are cached: with the run
-folders gone the page and the figure come out byte for byte the same. The
+folders gone the page and the figure come out byte for byte the same, and
+hand-overs never recorded are named as such. The
 refusals (a finished run with neither folder nor cached points): exit 2, one
 line, nothing written.
 
@@ -50,11 +54,20 @@ results.mkdir()
 rows, raw = [], []
 
 
-def add(study, config, seed, generations, status="done", final=None):
-    """A run of STUDY whose generation k ends at generations[k] = (cumulative evaluations, best)."""
+def add(study, config, seed, generations, status="done", final=None, handover=None):
+    """A run of STUDY whose generation k ends at generations[k] = (cumulative evaluations, best); a
+    Switch-HybrID run's HANDOVER = (generation, why, fitness handed over) goes in its run.log."""
     run_dir = f"runs/{config}/s{seed}"
     folder = studies / study / run_dir
     folder.mkdir(parents=True)
+    if config.startswith("switch-hybrid"):
+        lines = ["cic: a run.log"]
+        if handover:
+            g, why, fitness = handover
+            lines.append(f"switch: HyperGP hands over after generation {g} ({generations[g][0]} evaluations): {why}; "
+                         f"sepcmaes starts from individual 7's gait (fitness {fitness!r}) for the remaining "
+                         f"{2500 - generations[g][0]} evaluations")
+        (folder / "run.log").write_text("\n".join(lines) + "\n")
     with open(folder / "stats.csv", "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
         w.writerow(STATS)
@@ -77,15 +90,24 @@ add(C2, D, 2, [(250, 4.0), (500, 6.0), (750, 8.0), (1250, 10.0), (2500, 12.0)], 
 add(C2, H, 1, [(200, 5.0), (500, 5.0), (700, 7.0), (1300, 7.0), (2400, 8.0), (2600, 99.0)], final=6.0)
 add(C2, H, 2, [(300, 3.0), (450, 4.0), (760, 9.0), (1250, 4.0), (2500, 4.0)], final=4.0)
 # Switch-HybrID: the gait phase continues the HyperGP phase's count.
-add(C2, S, 1, [(250, 5.0), (765, 6.0), (821, 6.5), (2500, 20.0)], final=20.0)
+add(C2, S, 1, [(250, 5.0), (765, 6.0), (821, 6.5), (2500, 20.0)], final=20.0,
+    handover=(1, "it has spent 765 of 2500 evaluations (switchShare 0.3)", 6.0))
+# Stopped as it handed over and resumed: the same hand-over logged twice is one.
+C2_LOG = studies / C2 / "runs" / S / "s1" / "run.log"
+HANDOVER_LINE = C2_LOG.read_text().splitlines()[1]
+C2_LOG.write_text(C2_LOG.read_text() + HANDOVER_LINE + "\n")
 # The hand-over table's pairs (Switch-HybrID and HyperGP-gait of one seed) on centipede-4: seed 1 the
 # same to 20 %, its Switch-HybrID gaining nothing after 30 % and ending behind; seed 2 apart at 10 %,
 # Switch-HybrID ahead; seed 3 without a partner.
 C4 = "compare-centipede-4"
 add(C4, H, 1, [(250, 5.0), (600, 6.0), (1000, 8.0), (2500, 10.0)], final=9.0)
-add(C4, S, 1, [(250, 5.0), (600, 6.0), (700, 7.0), (2500, 7.0)], final=6.5)
+# What they handed over: seed 1 on stagnation, 5.6 against the 7.0 found by then (20 % short), its gait
+# phase never passing 7.0; seed 2 at its share, its last generation's best the best found.
+add(C4, S, 1, [(250, 5.0), (600, 6.0), (700, 7.0), (2500, 7.0)], final=6.5,
+    handover=(2, "its best (7, generation 2) has not improved for 10 generations", 5.6))
 add(C4, H, 2, [(250, 4.0), (600, 5.0), (2500, 6.0)], final=6.0)
-add(C4, S, 2, [(250, 4.5), (600, 5.0), (2500, 12.0)], final=12.0)
+add(C4, S, 2, [(250, 4.5), (600, 5.0), (2500, 12.0)], final=12.0,
+    handover=(1, "it has spent 600 of 2500 evaluations (switchShare 0.3)", 5.0))
 add(C4, H, 3, [(250, 4.0), (2500, 6.0)], final=6.0)
 # Not counted: a superseded configuration, a failed run, a tuning run.
 add(C2, "switch-hybrid.switch-0.3", 1, [(250, 50.0), (2500, 50.0)], status="superseded")
@@ -126,6 +148,7 @@ p = run(anytime)
 check(p.returncode == 0, f"anytime failed: {p.stderr}")
 text = (results / "anytime.md").read_text()
 first, _, handover = text.partition("## The hand-over, seed by seed")
+handover, _, handed = handover.partition("## What Switch-HybrID handed over")
 
 
 def cells(part):
@@ -143,6 +166,14 @@ check(set(table) == {("centipede-2", "best direct"), ("centipede-2", "HyperGP-ga
 check(cells(handover) == [["centipede-2", "12", "1", "1 of 1", "5.00", "+1.00", "+15.00", "0 of 1", "1 of 1", "3.33"],
                           ["centipede-4", "24", "2", "1 of 2", "6.00", "+2.50", "+3.50", "1 of 2", "1 of 2", "1.36"]],
       f"the hand-over table: {cells(handover)}\n{text}")
+# What was handed over: robot, hinges, runs recorded, handed over, at evaluations (median), on stagnation,
+# below the best found, shortfall median [max], gait phase passed the best found.
+check(cells(handed) == [["centipede-2", "12", "1 of 1", "1 of 1", "765", "0 of 1", "0 of 1", "0.0 % [0.0 %]",
+                         "1 of 1"],
+                        ["centipede-4", "24", "2 of 2", "2 of 2", "650", "1 of 2", "1 of 2", "10.0 % [20.0 %]",
+                         "1 of 2"]],
+      f"what was handed over: {cells(handed)}\n{text}")
+check("is recorded" not in handed, f"every Switch-HybrID run is recorded here: {handed}")
 # robot, hinges, method, n, 10 %, 20 %, 30 %, 50 %, 70 %, 100 %, final
 check(table[("centipede-2", "best direct")][1:] == ["12", "best direct", "2", "3.00", "5.00", "7.00", "9.00",
                                                     "9.00", "11.00", "11.00"], f"direct: {table[('centipede-2', 'best direct')]}")
@@ -166,6 +197,40 @@ p = run(anytime)
 check(p.returncode == 0, f"anytime from the cache failed: {p.stderr}")
 check((results / "anytime.md").read_bytes() == page, "the page changed when read from the cache")
 check(figure.read_bytes() == svg, "the figure's bytes changed when read from the cache")
+check((results / "compare-handover.csv").is_file(), "the hand-overs were not cached")
+
+# Hand-overs not recorded before the folders went: the page says so, and the other tables stay.
+handover_cache = (results / "compare-handover.csv").read_bytes()
+(results / "compare-handover.csv").unlink()
+p = run(anytime)
+check(p.returncode == 0, f"anytime without the hand-over records failed: {p.stderr}")
+unrecorded = (results / "anytime.md").read_text()
+check("No Switch-HybrID run of centipede-2, centipede-4 is recorded" in unrecorded and
+      unrecorded.partition("## What Switch-HybrID handed over")[0] == page.decode().partition(
+          "## What Switch-HybrID handed over")[0] and
+      not cells(unrecorded.partition("## What Switch-HybrID handed over")[2]), f"unrecorded hand-overs: {unrecorded}")
+
+# Refusal: a Switch-HybrID run's folder without its run.log, so what it handed over cannot be read.
+check(not (results / "compare-handover.csv").exists(), "nothing to record, yet the hand-over cache was written")
+(results / "anytime.md").unlink()
+folder = studies / C4 / "runs" / S / "s1"
+folder.mkdir(parents=True)
+(folder / "stats.csv").write_text("generation,best,mean,evaluations\n0,1.0,0.5,50\n")
+p = run(anytime)
+check(p.returncode == 2 and "run.log is missing" in p.stderr and len(p.stderr.strip().splitlines()) == 1,
+      f"a Switch-HybrID run without its run.log: exit {p.returncode}, {p.stderr}")
+check(not (results / "anytime.md").exists() and not (results / "compare-handover.csv").exists(),
+      "a refusal wrote the page or the hand-over cache")
+# Two different hand-overs in one run.log: refused.
+(folder / "run.log").write_text(HANDOVER_LINE + "\n" + HANDOVER_LINE.replace("(fitness 6.0)", "(fitness 5.0)") + "\n")
+p = run(anytime)
+check(p.returncode == 2 and "2 different hand-overs" in p.stderr, f"two hand-overs: exit {p.returncode}, {p.stderr}")
+check(not (results / "anytime.md").exists() and not (results / "compare-handover.csv").exists(),
+      "a refusal wrote the page or the hand-over cache")
+shutil.rmtree(studies)
+(results / "compare-handover.csv").write_bytes(handover_cache)
+p = run(anytime)
+check(p.returncode == 0 and (results / "anytime.md").read_bytes() == page, f"the page from both caches again: {p.stderr}")
 
 # Refusal: a finished run neither on disk nor cached; nothing written.
 with open(results / "scaling-runs.csv", "a", newline="") as f:
