@@ -54,14 +54,15 @@
       each Switch-HybrID run handed over, against the best HyperGP had found
       (run.log and stats.csv, cached in RESULTS/compare-handover.csv)
       (scaling_anytime.py, scaling_handover.py; matplotlib)
-  scaling-report.py status --results DIR [--sweeps DIR] [--jobs N] [--cic CIC]
+  scaling-report.py status --results DIR [--sweeps DIR] [--jobs N] [--cic CIC [--studies DIR]]
       print what is left of the comparison, read from the compare sweeps in SWEEPS
       (default experiments/scaling) and the ledger alone (safe beside a running
       study): per sweep its runs, those done and those to go, the core-hours left
       at the seconds per evaluation its finished runs took (else RESULTS/estimate.md's
       figure), and the wall time at N runs at a time (default 2); with CIC a done row
-      counts only under the run key the sweep gives its run now (cic sweep --dry-run --csv)
-      (scaling_status.py)
+      counts only under the run key the sweep gives its run now (cic sweep --dry-run --csv),
+      and with the study folders in DIR too, a last row counts the runs posture-runs
+      would rerun, at the wall time the ledger records for them (scaling_status.py)
   scaling-report.py runs --sweep FILE --output DIR --cic CIC
       print every run of the sweep FILE (its study in DIR) as "TASK STATUS
       RUN_DIR RUN_KEY BEST_EVER" (BEST_EVER empty until it has one), one line
@@ -239,7 +240,7 @@ def main(argv):
                  "strips": {"--results", "--studies", "--cic", "--out-images", "--robots", "--at"},
                  "posture": {"--results", "--studies", "--cic"},
                  "anytime": {"--results", "--studies", "--figure"},
-                 "status": {"--results", "--sweeps", "--jobs", "--cic"},
+                 "status": {"--results", "--sweeps", "--jobs", "--cic", "--studies"},
                  "runs": {"--sweep", "--output", "--cic"},
                  "posture-runs": {"--results", "--studies", "--cic", "--sweeps"}}[argv[1]]
         args, i = {}, 2
@@ -261,6 +262,8 @@ def main(argv):
         for n in need:
             if n not in args:
                 usage(f"scaling-report.py {argv[1]}: {n} is required")
+        if argv[1] == "status" and "--studies" in args and "--cic" not in args:
+            usage("scaling-report.py status: --studies goes with --cic (the reruns are found by their run keys)")
         try:
             if argv[1] == "compare-sweeps":
                 for p in sc.compare_sweeps(args["--results"], args["--out"],
@@ -284,7 +287,7 @@ def main(argv):
                     usage(f"scaling-report.py status: --jobs takes a positive whole number, got '{jobs}'")
                 print("\n".join(scaling_status.status(
                     args["--results"], args.get("--sweeps", os.path.join(sc.ROOT, "experiments", "scaling")), int(jobs),
-                    args.get("--cic"))))
+                    args.get("--cic"), args.get("--studies"))))
             elif argv[1] == "anytime":
                 import scaling_anytime
                 scaling_anytime.anytime(args["--results"], args["--studies"],

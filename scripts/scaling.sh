@@ -36,7 +36,8 @@
 #                and the committed ledger (safe beside a running study): per
 #                study the runs done and to go, core-hours left at the measured
 #                seconds per evaluation, wall time at --jobs (scaling-report.py status;
-#                with a cic, done rows count only under the sweeps' run keys)
+#                with a cic, done rows count only under the sweeps' run keys, and
+#                the runs posture-runs would rerun in --output are counted too)
 #   estimate     run nothing but timing: CPU seconds per evaluation of every
 #                robot of the study (cic simulate), and results/estimate.md, the whole
 #                study's run time with comparison seeds cut on the middle sizes
@@ -299,8 +300,9 @@ main() {
         # Every page written: docs/scaling.md's quoted tables follow them.
         "$rpy" "$ROOT/scripts/docs-blocks.py" "$ROOT/docs/scaling.md" || { echo "scaling.sh: report: docs/scaling.md's quoted parts could not be written (see above)" >&2; exit 1; } ;;
       status)
-        # With a cic, done rows count only under the sweeps' run keys, as compare decides.
-        keys=(); [ -x "$CIC" ] && keys=(--cic "$CIC")
+        # With a cic, done rows count only under the sweeps' run keys, as compare decides, and
+        # the runs posture-runs would rerun are counted too.
+        keys=(); [ -x "$CIC" ] && keys=(--cic "$CIC" --studies "$output")
         "$PY" "$ROOT/scripts/scaling-report.py" status --results "$HERE/results" --sweeps "$HERE" --jobs "$jobs" "${keys[@]}" ;;
       estimate)
         robots=(R1 R2 centipede-2 centipede-4 centipede-8 centipede-16

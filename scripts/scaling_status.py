@@ -14,7 +14,10 @@ times its figure, so its 88-hinge twin's are expected to as well. Nothing is wri
 safe beside a running study. Given a cic (--cic), a done row
 counts only when its run key is the one `cic sweep --dry-run --csv` gives the run now, as `scaling.sh
 compare` decides; a row of other settings (an edit that kept a configuration's name) counts as
-to go, and the page says how many. Without one, the ledger's done rows are taken as they are."""
+to go, and the page says how many. Without one, the ledger's done rows are taken as they are.
+Given the study folders too (--studies), a last row counts the runs `scaling.sh posture-runs`
+would rerun (scaling_posture.reruns: finished runs the posture page needs whose folders are gone
+and whose replays are not cached), each at the wall time the ledger records for its first run."""
 import csv
 import io
 import os
@@ -85,9 +88,21 @@ def sweep_keys(cic, path):
         raise sc.Refusal(f"status: {e}") from None
 
 
-def status(results, sweeps, jobs, cic=None):
+def posture_reruns(results, studies, cic, sweeps, ledger):
+    """(runs, core-hours) of what scaling.sh posture-runs would rerun, each at its ledger row's wall time."""
+    import scaling_posture
+    try:
+        runs = scaling_posture.reruns(results, studies, cic, sweeps)
+    except sc.Refusal as e:
+        raise sc.Refusal(f"status: {e}") from None
+    seconds = {(r["study"], r["run_dir"]): float(r["wall_seconds"]) for r in ledger}
+    return len(runs), sum(seconds[(study, run_dir)] for study, _, run_dir, _ in runs) / 3600
+
+
+def status(results, sweeps, jobs, cic=None, studies=None):
     """The table's lines: per compare sweep what is done, what is to go and its core-hours; the total.
-    With CIC, a done row counts only under the run key the sweep now gives its run."""
+    With CIC, a done row counts only under the run key the sweep now gives its run; with STUDIES too,
+    a row for the runs posture-runs would rerun."""
     ledger = os.path.join(results, "scaling-runs.csv")
     if not os.path.exists(ledger):
         raise sc.Refusal(f"status: no ledger at {ledger}")
@@ -147,6 +162,10 @@ def status(results, sweeps, jobs, cic=None):
             spe = f"{figures[robot]:.3f} (estimate.md)" if robot in figures else ""
         out.append(f"| compare-{robot} | {len(planned)} | {len(done)} | {len(left)} | {spe} | {hours:.1f} |")
         totals = [totals[0] + len(planned), totals[1] + len(done), totals[2] + len(left), totals[3] + hours]
+    if cic and studies:
+        n, hours = posture_reruns(results, studies, cic, sweeps, finished_rows)
+        out.append(f"| posture-runs (reruns of done runs) | {n} | | {n} | the ledger's wall time | {hours:.1f} |")
+        totals = [totals[0], totals[1], totals[2] + n, totals[3] + hours]
     out.append(f"| **total** | {totals[0]} | {totals[1]} | {totals[2]} | | **{totals[3]:.1f}** |")
     if stale:
         out += ["", f"{stale} done row{'s' if stale > 1 else ''} of the ledger {'are' if stale > 1 else 'is'} of other "

@@ -6,8 +6,9 @@ and each must end on the best_ever its ledger row scores it by.
 In a scratch copy of the study's layout, with one tiny real compare sweep (a
 direct, an Offset-HybrID and a HyperGP-gait variant, seeds 1 and 2) run by
 `cic sweep` and merged into a ledger, then its folders and store removed:
-  --dry-run lists the four direct and Offset-HybrID runs (not HyperGP-gait's,
-  nor a run with a cached replay row), writes nothing;
+  --dry-run lists the direct and Offset-HybrID runs (not HyperGP-gait's, nor a
+  run with a cached replay row), writes nothing, and `scaling.sh status` counts
+  them at their ledger rows' wall time;
   the stage reruns them: their folders are back, on the ledger's best_ever, and
   the ledger's scores are unchanged;
   with a ledger row's best_ever altered (a rerun that would end elsewhere), the
@@ -74,6 +75,20 @@ listed = sorted(line.split()[2] for line in p.stdout.splitlines())
 check(p.returncode == 0 and listed == ["runs/direct.tiny/s1", "runs/direct.tiny/s2", "runs/offset-hybrid.tiny/s1"],
       f"--dry-run posture-runs lists {listed}\n{p.stdout}{p.stderr}")
 check(not (studies / "compare-centipede-2").exists(), "--dry-run posture-runs wrote the study folder")
+
+# status counts the same three reruns, each at its ledger row's wall time (here set to half an hour).
+ledger_bytes = (results / "scaling-runs.csv").read_bytes()
+rows = list(csv.DictReader(open(results / "scaling-runs.csv")))
+for r in rows:
+    r["wall_seconds"] = "1800"
+with open(results / "scaling-runs.csv", "w", newline="") as f:
+    w = csv.DictWriter(f, list(rows[0]), lineterminator="\n")
+    w.writeheader()
+    w.writerows(rows)
+p = scaling("--jobs", "2", "status")
+check(p.returncode == 0 and "| posture-runs (reruns of done runs) | 3 | | 3 | the ledger's wall time | 1.5 |" in p.stdout
+      and "| **total** | 6 | 6 | 3 | | **1.5** |" in p.stdout, f"status with posture-runs to go: {p.stdout}{p.stderr}")
+(results / "scaling-runs.csv").write_bytes(ledger_bytes)
 (results / "compare-posture.csv").unlink()
 
 p = scaling("--jobs", "2", "posture-runs")

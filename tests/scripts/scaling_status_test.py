@@ -142,6 +142,8 @@ check(p.returncode == 0 and "| compare-centipede-2 | 40 | 1 | 39 |" in p.stdout 
       in p.stdout, f"with cic, the row of another key is to go\n{p.stdout}\n{p.stderr}")
 p = keyed_status("--cic", str(work / "no-cic"))
 check(p.returncode == 2 and f"cannot run {work / 'no-cic'}" in p.stderr, f"a cic that cannot run: {p}")
+p = keyed_status("--studies", str(work))
+check(p.returncode == 2 and "--studies goes with --cic" in p.stderr, f"--studies without --cic: {p}")
 
 # scaling-report.py runs: what scaling.sh starts runs by, every run of the sweep with its
 # status and key, as `cic sweep --dry-run --csv` gives them (writes nothing).
