@@ -2,7 +2,7 @@
 // test build: every seed in fuzz/corpus/<target>/ must be accepted by its parser
 // and survive the round trip, every reproducer in fuzz/regressions/<target>/
 // must be rejected cleanly (or parse cleanly), and no file may make any of the
-// four parsers misbehave. See docs/fuzzing.md.
+// six parsers of the io layer misbehave. See docs/fuzzing.md.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -69,7 +69,7 @@ TEST(FuzzCorpora, SeedsAreAcceptedByTheirParser) {
     }
 }
 
-// Every corpus file and reproducer through all four parsers the way the fuzz
+// Every corpus file and reproducer through all six parsers the way the fuzz
 // targets run them: rejected with an exception or accepted with a good round
 // trip, never a round-trip failure (crashes and sanitizer reports end the test program).
 TEST(FuzzCorpora, EveryFileIsHandledCleanlyByEveryParser) {
