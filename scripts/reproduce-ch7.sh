@@ -5,7 +5,7 @@
 # fixed seeds each) with `cic sweep`, then writes their tables and plots into
 # experiments/thesis-ch7/results/. Resumable: run it again after an interruption
 # and only what is missing runs; finished runs are skipped. Runs shared between
-# comparisons (R1 at Table B.1 values is in six of them) run once, in the study
+# comparisons (R1 at Table B.1 values is in all eight 50-generation ones) run once, in the study
 # store DIR/store.
 #   --jobs N        runs at a time (default 2; each gets cores/N worker processes)
 #   --slurm         write each study's Slurm job-array script and submit it with

@@ -502,7 +502,7 @@ smoke_test() {
   local all
   all=$(cluster_nodes | wc -l)
   (cd "$out" && timeout "$READY_TIMEOUT" srun -N "$all" -n "$all" -J cic-smoke-srun true) ||
-    { say "error: smoke test: 'srun -n1 true' failed"; log_tail slurmctld 15; log_tail slurmd 15; exit 1; }
+    { say "error: smoke test: 'srun -N $all -n $all true' failed"; log_tail slurmctld 15; log_tail slurmd 15; exit 1; }
   say "smoke test passed: sbatch --wait (job $id) and srun -N $all true"
 }
 

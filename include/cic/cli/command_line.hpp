@@ -1,9 +1,9 @@
 #pragma once
 // How a subcommand declares its options, without CLI11. Only
-// src/cli/command_line.cpp, src/cli/cli.cpp and the documentation generator
-// (cmd_docs.cpp) include CLI11: its header alone costs each file that includes
-// it about 5 s of compile time (over 25 s under ASan), and every subcommand's
-// file used to.
+// src/cli/command_line.cpp, src/cli/cli.cpp, the help (help.hpp) and the
+// documentation generators (docs.hpp: man page, completion, cmd_docs.cpp)
+// include CLI11: its header alone costs each file that includes it about 5 s
+// of compile time (over 25 s under ASan), and every subcommand's file used to.
 #include <functional>
 #include <string>
 
