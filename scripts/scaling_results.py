@@ -277,7 +277,20 @@ def against_ipop(g, ipop, waiting, unfinished=frozenset()):
         head = f"{'So far, no' if waiting else 'No'} hybrid beats IPOP-CMA-ES on R1 or R2 after Holm."
     each = "; ".join(f"{r.upper()} {LABELS[m]}: {verdict(c, h, r, IPOP_LABEL)} ({c['ratio']:.2f} of IPOP's median)"
                      for (r, m), c in s.items())
-    return out + ["", f"{head} Cell by cell: {each}."]
+    return out + ["", f"{head} Cell by cell: {each}."] + run_values(g, ipop)
+
+
+def run_values(g, ipop):
+    """Every run's raw eq. 7.1 on R1 and R2, per method, lowest first: a median hides how often a run
+    finds a fast gait, and on these robots the runs of one method can fall far apart."""
+    out = ["", "Each run's raw eq. 7.1 on R1 and R2, lowest first (issue 21's runs for IPOP-CMA-ES and "
+           "HyperGP-gait):", "", "| robot | method | n | runs |", "|---|---|---|---|"]
+    for r in sc.in_study_order(set(ipop) | {x for x in sc.R_ROBOTS if x in g}):
+        groups = ([(IPOP_LABEL, ipop[r])] if r in ipop else []) + \
+                 [(LABELS[m], g[r][m]) for m in sc.METHODS if m in g.get(r, {})]
+        for label, v in groups:
+            out.append(f"| {r} | {label} | {len(v)} | " + ", ".join(f"{x:.1f}" for x in sorted(v)) + " |")
+    return out
 
 
 def evaluation_counts(results):

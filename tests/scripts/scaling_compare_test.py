@@ -338,30 +338,44 @@ p = run(args)
 check(p.returncode == 2 and "is gone" in p.stderr, f"an unscored vanished run is refused: {p.returncode} {p.stderr}")
 # ---- the second goal: each hybrid on R1 and R2 against issue 21's IPOP-CMA-ES, a Holm family of its own ----
 check(sr.ipop_runs(str(base_csv)) == {"r1": [5.0, 5.0]}, f"issue 21's IPOP runs: {sr.ipop_runs(str(base_csv))}")
-ipop = {"r1": direct, "r2": direct}
+ipop = {"r1": direct[::-1], "r2": direct}   # R1's given highest first: the values table sorts them
 # R1's best direct method is far ahead of IPOP: the section must face IPOP, not it.
 goal = {"r1": {"direct": [v + 100 for v in direct], "offset-hybrid": [v - 20 for v in direct],
                "switch-hybrid": [v + 20 for v in direct]},
         "r2": {"direct": direct, "offset-hybrid": [v + 0.5 for v in direct], "switch-hybrid": [v - 20 for v in direct]}}
+
+
+def closing(section):
+    """The section's verdict line (the paragraph after its table)."""
+    return next(x for x in section if x.startswith(("A hybrid", "No hybrid", "So far")))
+
+
 lines = sr.against_ipop(goal, ipop, False)
 text = "\n".join(lines)
+# Every run's value, lowest first, after the verdict: IPOP's first, then the study's methods.
+values = lines[lines.index(closing(lines)) + 1:]
+check(values[:5] == ["", "Each run's raw eq. 7.1 on R1 and R2, lowest first (issue 21's runs for IPOP-CMA-ES and "
+                     "HyperGP-gait):", "", "| robot | method | n | runs |", "|---|---|---|---|"] and
+      values[5] == "| r1 | IPOP-CMA-ES (issue 21) | 10 | " + ", ".join(f"{x:.1f}" for x in sorted(direct)) + " |" and
+      values[7] == "| r1 | Offset-HybrID | 10 | " + ", ".join(f"{x - 20:.1f}" for x in sorted(direct)) + " |" and
+      len(values) == 5 + 8, "each run's values\n" + "\n".join(values))
 want = sr.score({r: dict({m: goal[r][m] for m in sr.HYBRIDS}, direct=direct) for r in ("r1", "r2")})
 check(len(want) == 4 and "Holm over these cells only." in text, "Holm over the section's 4 cells\n" + text)
 check(f"| r1 | 12 | IPOP-CMA-ES (issue 21) | 10 | {statistics.median(direct):.2f} |" in text,
       "the reference row is issue 21's IPOP runs\n" + text)
 check(f"{want[('r1', 'switch-hybrid')]['holm']:.3g} | 1.00 [1.00, 1.00] |" in text and
       "| better than IPOP-CMA-ES (issue 21) |" in text, "R1's Switch-HybrID beats IPOP (not R1's best direct)\n" + text)
-check(lines[-1].startswith("A hybrid beats IPOP-CMA-ES after Holm on R1 only. Cell by cell: R1 Offset-HybrID: "
+check(closing(lines).startswith("A hybrid beats IPOP-CMA-ES after Holm on R1 only. Cell by cell: R1 Offset-HybrID: "
                            f"worse than IPOP-CMA-ES (issue 21) ({want[('r1', 'offset-hybrid')]['ratio']:.2f} of IPOP's "
                            "median); R1 Switch-HybrID: better than"),
-      "the goal's line, R1 only, cell by cell\n" + lines[-1])
-check("R2 Offset-HybrID: no difference shown at n = 10 (1.03 of IPOP's median)" in lines[-1], lines[-1])
+      "the goal's line, R1 only, cell by cell\n" + closing(lines))
+check("R2 Offset-HybrID: no difference shown at n = 10 (1.03 of IPOP's median)" in closing(lines), closing(lines))
 goal["r2"]["switch-hybrid"] = [v + 20 for v in direct]
-check(sr.against_ipop(goal, ipop, True)[-1].startswith("So far, a hybrid beats IPOP-CMA-ES on R1 and R2 after Holm."),
-      "both robots won, so far\n" + sr.against_ipop(goal, ipop, True)[-1])
+check(closing(sr.against_ipop(goal, ipop, True)).startswith("So far, a hybrid beats IPOP-CMA-ES on R1 and R2 after Holm."),
+      "both robots won, so far\n" + closing(sr.against_ipop(goal, ipop, True)))
 lost = {"r1": {"direct": direct, "offset-hybrid": [v - 20 for v in direct]}}
-check(sr.against_ipop(lost, ipop, False)[-1].startswith("No hybrid beats IPOP-CMA-ES on R1 or R2 after Holm."),
-      "none won\n" + sr.against_ipop(lost, ipop, False)[-1])
+check(closing(sr.against_ipop(lost, ipop, False)).startswith("No hybrid beats IPOP-CMA-ES on R1 or R2 after Holm."),
+      "none won\n" + closing(sr.against_ipop(lost, ipop, False)))
 check(sr.against_ipop(g, ipop, False) == [] and sr.against_ipop(lost, {}, False) == [],
       "no section without a hybrid on R1/R2 or without issue 21's runs")
 # End to end: `results` reads issue 21's runs from --baselines and says "so far" while R2 has no runs.
