@@ -264,6 +264,8 @@ def main(argv):
                 usage(f"scaling-report.py {argv[1]}: {n} is required")
         if argv[1] == "status" and "--studies" in args and "--cic" not in args:
             usage("scaling-report.py status: --studies goes with --cic (the reruns are found by their run keys)")
+        if argv[1] == "status" and "--studies" in args and not os.path.isdir(args["--studies"]):
+            usage(f"scaling-report.py status: --studies {args['--studies']} is no folder (every run would count as gone)")
         try:
             if argv[1] == "compare-sweeps":
                 for p in sc.compare_sweeps(args["--results"], args["--out"],

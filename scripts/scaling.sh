@@ -302,7 +302,8 @@ main() {
       status)
         # With a cic, done rows count only under the sweeps' run keys, as compare decides, and
         # the runs posture-runs would rerun are counted too.
-        keys=(); [ -x "$CIC" ] && keys=(--cic "$CIC" --studies "$output")
+        keys=(); [ -x "$CIC" ] && keys=(--cic "$CIC")
+        [ -x "$CIC" ] && [ -d "$output" ] && keys+=(--studies "$output")
         "$PY" "$ROOT/scripts/scaling-report.py" status --results "$HERE/results" --sweeps "$HERE" --jobs "$jobs" "${keys[@]}" ;;
       estimate)
         robots=(R1 R2 centipede-2 centipede-4 centipede-8 centipede-16

@@ -58,9 +58,10 @@ def best_so_far(stats_path, budget):
     return out
 
 
-def anytime_rows(results, studies, ledger):
+def anytime_rows(results, studies, ledger, writes):
     """{(study, config, seed): [value or None per STEPS]} of LEDGER's finished compare runs (superseded
-    rows left out), reading the new ones' stats.csv and caching them in RESULTS."""
+    rows left out), reading the new ones' stats.csv; their cache's new text goes on WRITES, (path,
+    fields, rows), for the caller to write once nothing more can be refused."""
     cache_path = os.path.join(results, "compare-anytime.csv")
     cache = read_cache(cache_path)
     changed = False
@@ -79,7 +80,7 @@ def anytime_rows(results, studies, ledger):
         c = cache[key]
         out[key[:3]] = [float(c[f"at_{s}"]) if c[f"at_{s}"] != "" else None for s in STEPS]
     if changed:
-        sc.write_rows_atomically(cache_path, CACHE_FIELDS, cache)
+        writes.append((cache_path, CACHE_FIELDS, cache))
     return out
 
 
@@ -236,10 +237,14 @@ def anytime(results, studies, figure_path, command):
     except ImportError as e:
         raise sc.Refusal(f"anytime needs matplotlib ({e}): run it with Debian's /usr/bin/python3")
     ledger = finished(compare_rows(results))
-    rows = anytime_rows(results, studies, ledger)
+    writes = []   # the caches' new rows, written once every run has been read without a refusal
+    rows = anytime_rows(results, studies, ledger, writes)
     g = by_method(rows)
     if not g:
         raise sc.Refusal(f"anytime: no finished compare run in {os.path.join(results, 'scaling-runs.csv')}")
+    records = handover_records(results, studies, ledger, writes)
+    for path, fields, cache in writes:
+        sc.write_rows_atomically(path, fields, cache)
     out = ["# How fast each method finds its walk (issue 38, docs/scaling.md)", "",
            f"Written by `{command}`. Per robot and method: the median over the finished",
            "comparison runs of the best fitness each had found (recorded eq. 7.1, stats.csv) by a share of its",
@@ -270,13 +275,14 @@ def anytime(results, studies, figure_path, command):
                 "Descriptive: no test, and no part of the Holm family.",
                 ""]
         out += pairs
-    gaps, unrecorded = handover_gap_table(handover_records(results, studies, ledger))
+    gaps, unrecorded = handover_gap_table(records)
     if gaps or unrecorded:
         out += ["", "## What Switch-HybrID handed over", "",
                 "Switch-HybrID starts its gait phase from the best gait of HyperGP's last generation, which with",
                 "elitism 0 can be below the best HyperGP had found. Per robot, from each finished run's run.log",
                 "and stats.csv (cached in compare-handover.csv): when it handed over (median evaluations; *on",
-                "stagnation*: 10 generations without a better best, else at 30 % of the budget), how many handed",
+                "stagnation*: 10 generations without a better best, else at 30 % of the budget or when another",
+                "generation would pass it), how many handed",
                 "over a gait below the best found by then, the shortfall in per cent of that best (median over",
                 "the runs that handed over, zeros included, and the largest), and how many gait phases found a",
                 "gait better than that best. *Runs recorded*: finished runs whose folder was here to read."]

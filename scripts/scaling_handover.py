@@ -29,10 +29,16 @@ LINE = re.compile(r"^switch: HyperGP hands over after generation (\d+) \((\d+) e
 CAUSES = [("has not improved", "stagnation"), ("has spent", "share"), ("would pass the budget", "budget")]
 
 
+NO_ROOM = "the budget leaves no room for the gait phase"   # summary.txt of a run that never handed over
+
+
 def record(folder):
     """The hand-over of the Switch-HybrID run in FOLDER: {generation, evaluations, cause, handed_over,
-    best_found}; every field empty when the run never handed over (HyperGP spent its whole budget)."""
-    log, stats = os.path.join(folder, "run.log"), os.path.join(folder, "stats.csv")
+    best_found}; every field empty when the run never handed over, which its summary.txt must say
+    (HyperGP spent the budget). A run.log naming no hand-over otherwise is refused, not taken for one
+    that never handed over: a log of a resumed gait phase alone, or one whose wording this reader
+    does not know, would be cached as a wrong record for good."""
+    log, stats, summary = (os.path.join(folder, f) for f in ("run.log", "stats.csv", "summary.txt"))
     for path in (log, stats):
         if not os.path.isfile(path):
             raise sc.Refusal(f"anytime: {path} is missing")
@@ -40,23 +46,32 @@ def record(folder):
     # hand-over again (one seed fixes a run); two different ones would be two runs in one folder.
     found = sorted(set(LINE.findall(open(log).read())))
     if not found:
-        return dict.fromkeys(CACHE_FIELDS[4:], "")
+        if os.path.isfile(summary) and NO_ROOM in open(summary).read():
+            return dict.fromkeys(CACHE_FIELDS[4:], "")
+        raise sc.Refusal(f"anytime: {log} names no hand-over, and {summary} does not say the run had no room for "
+                         "one")
     if len(found) > 1:
         raise sc.Refusal(f"anytime: {log} names {len(found)} different hand-overs")
     generation, evaluations, why, handed = found[0]
     cause = next((name for text, name in CAUSES if text in why), None)
     if cause is None:
         raise sc.Refusal(f"anytime: {log}: a hand-over for a reason not known here: {why}")
-    rows = [r for r in csv.DictReader(open(stats)) if int(r["generation"]) <= int(generation)]
-    if not rows:
-        raise sc.Refusal(f"anytime: {stats} has no generation up to the hand-over's {generation}")
+    rows = list(csv.DictReader(open(stats)))
+    if not rows or not {"generation", "best", "evaluations"} <= set(rows[0]):
+        raise sc.Refusal(f"anytime: {stats} has no 'generation', 'best' and 'evaluations' columns")
+    before = [r for r in rows if int(r["generation"]) <= int(generation)]
+    last = [r for r in before if r["generation"] == generation]
+    if not last or last[0]["evaluations"] != evaluations:
+        raise sc.Refusal(f"anytime: {stats} has no generation {generation} at {evaluations} evaluations, where "
+                         f"{log} says HyperGP handed over")
     return dict(generation=generation, evaluations=evaluations, cause=cause, handed_over=handed,
-                best_found=repr(max(float(r["best"]) for r in rows)))
+                best_found=repr(max(float(r["best"]) for r in before)))
 
 
-def handover_records(results, studies, ledger):
+def handover_records(results, studies, ledger, writes):
     """{(study, config, seed): record or None} of LEDGER's finished Switch-HybrID runs: None where the
-    run's folder is gone and compare-handover.csv has no record of it. New records are cached."""
+    run's folder is gone and compare-handover.csv has no record of it. The cache's new text goes on
+    WRITES, (path, fields, rows), for the caller to write."""
     path = os.path.join(results, "compare-handover.csv")
     cache = read_cache(path)
     changed, out = False, {}
@@ -70,7 +85,7 @@ def handover_records(results, studies, ledger):
             changed = True
         out[key[:3]] = dict(cache[key], run_best=float(r["best_ever"])) if key in cache else None
     if changed:
-        sc.write_rows_atomically(path, CACHE_FIELDS, cache)
+        writes.append((path, CACHE_FIELDS, cache))
     return out
 
 
@@ -95,11 +110,14 @@ def handover_gap_table(records):
             out.append(f"| {robot} | {sc.hinges(robot)} | {len(recs)} of {len(by_robot[robot])} | 0 of {len(recs)} "
                        "| – | – | – | – | – |")
             continue
-        short = [100 * (float(r["best_found"]) - float(r["handed_over"])) / float(r["best_found"]) for r in handed]
+        # In per cent of a positive best (a shortfall from a best of 0 or below has no share).
+        short = [100 * (float(r["best_found"]) - float(r["handed_over"])) / float(r["best_found"]) for r in handed
+                 if float(r["best_found"]) > 0]
         below = sum(float(r["handed_over"]) < float(r["best_found"]) for r in handed)
         passed = sum(r["run_best"] > float(r["best_found"]) for r in handed)
         out.append(f"| {robot} | {sc.hinges(robot)} | {len(recs)} of {len(by_robot[robot])} | {n} of {len(recs)} | "
                    f"{statistics.median(int(r['evaluations']) for r in handed):,.0f} | "
                    f"{sum(r['cause'] == 'stagnation' for r in handed)} of {n} | {below} of {n} | "
-                   f"{statistics.median(short):.1f} % [{max(short):.1f} %] | {passed} of {n} |")
+                   + (f"{statistics.median(short):.1f} % [{max(short):.1f} %]" if short else "–") +
+                   f" | {passed} of {n} |")
     return (out if len(out) > 2 else []), unrecorded

@@ -17,7 +17,8 @@ compare` decides; a row of other settings (an edit that kept a configuration's n
 to go, and the page says how many. Without one, the ledger's done rows are taken as they are.
 Given the study folders too (--studies), a last row counts the runs `scaling.sh posture-runs`
 would rerun (scaling_posture.reruns: finished runs the posture page needs whose folders are gone
-and whose replays are not cached), each at the wall time the ledger records for its first run."""
+and whose replays are not cached), each at the wall time its ledger row records; where that stage
+would refuse (a sweep that now gives such a run another run key), the page says so in its place."""
 import csv
 import io
 import os
@@ -89,14 +90,15 @@ def sweep_keys(cic, path):
 
 
 def posture_reruns(results, studies, cic, sweeps, ledger):
-    """(runs, core-hours) of what scaling.sh posture-runs would rerun, each at its ledger row's wall time."""
+    """(runs, core-hours, None) of what scaling.sh posture-runs would rerun, each at its ledger row's
+    wall time; (0, 0.0, why) where that stage would refuse."""
     import scaling_posture
     try:
         runs = scaling_posture.reruns(results, studies, cic, sweeps)
     except sc.Refusal as e:
-        raise sc.Refusal(f"status: {e}") from None
+        return 0, 0.0, str(e)
     seconds = {(r["study"], r["run_dir"]): float(r["wall_seconds"]) for r in ledger}
-    return len(runs), sum(seconds[(study, run_dir)] for study, _, run_dir, _ in runs) / 3600
+    return len(runs), sum(seconds[(study, run_dir)] for study, _, run_dir, _ in runs) / 3600, None
 
 
 def status(results, sweeps, jobs, cic=None, studies=None):
@@ -162,11 +164,15 @@ def status(results, sweeps, jobs, cic=None, studies=None):
             spe = f"{figures[robot]:.3f} (estimate.md)" if robot in figures else ""
         out.append(f"| compare-{robot} | {len(planned)} | {len(done)} | {len(left)} | {spe} | {hours:.1f} |")
         totals = [totals[0] + len(planned), totals[1] + len(done), totals[2] + len(left), totals[3] + hours]
+    refused = None
     if cic and studies:
-        n, hours = posture_reruns(results, studies, cic, sweeps, finished_rows)
-        out.append(f"| posture-runs (reruns of done runs) | {n} | | {n} | the ledger's wall time | {hours:.1f} |")
-        totals = [totals[0], totals[1], totals[2] + n, totals[3] + hours]
+        n, hours, refused = posture_reruns(results, studies, cic, sweeps, finished_rows)
+        if refused is None:
+            out.append(f"| posture-runs (reruns of done runs) | {n} | | {n} | the ledger's wall time | {hours:.1f} |")
+            totals = [totals[0] + n, totals[1], totals[2] + n, totals[3] + hours]
     out.append(f"| **total** | {totals[0]} | {totals[1]} | {totals[2]} | | **{totals[3]:.1f}** |")
+    if refused:
+        out += ["", f"posture-runs is not counted: it would refuse ({refused})."]
     if stale:
         out += ["", f"{stale} done row{'s' if stale > 1 else ''} of the ledger {'are' if stale > 1 else 'is'} of other "
                 "settings than the sweeps give now (another run key): counted as to go."]

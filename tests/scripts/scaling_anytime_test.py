@@ -109,6 +109,14 @@ add(C4, H, 2, [(250, 4.0), (600, 5.0), (2500, 6.0)], final=6.0)
 add(C4, S, 2, [(250, 4.5), (600, 5.0), (2500, 12.0)], final=12.0,
     handover=(1, "it has spent 600 of 2500 evaluations (switchShare 0.3)", 5.0))
 add(C4, H, 3, [(250, 4.0), (2500, 6.0)], final=6.0)
+# centipede-8: a Switch-HybrID run whose HyperGP spent the budget (its summary.txt says there was no
+# room for the gait phase), and one whose hand-over record goes with its folder before it was cached.
+C8 = "compare-centipede-8"
+add(C8, S, 1, [(250, 3.0), (2500, 4.0)], final=4.0)
+(studies / C8 / "runs" / S / "s1" / "summary.txt").write_text(
+    "HyperGP phase:\nstopped: handed over at generation 1\nthe budget leaves no room for the gait phase\n")
+add(C8, S, 2, [(250, 3.0), (700, 3.5), (2500, 5.0)], final=5.0,
+    handover=(1, "it has spent 700 of 2500 evaluations (switchShare 0.3)", 3.5))
 # Not counted: a superseded configuration, a failed run, a tuning run.
 add(C2, "switch-hybrid.switch-0.3", 1, [(250, 50.0), (2500, 50.0)], status="superseded")
 add(C2, D, 3, [(250, 50.0)], status="failed")
@@ -159,7 +167,8 @@ def cells(part):
 table = {(c[0], c[2]): c for c in cells(first)}
 check(set(table) == {("centipede-2", "best direct"), ("centipede-2", "HyperGP-gait"),
                      ("centipede-2", "Switch-HybrID"), ("centipede-4", "HyperGP-gait"),
-                     ("centipede-4", "Switch-HybrID"), ("r1", "best direct"), ("r2", "best direct")},
+                     ("centipede-4", "Switch-HybrID"), ("centipede-8", "Switch-HybrID"), ("r1", "best direct"),
+                     ("r2", "best direct")},
       f"rows: {sorted(table)}\n{text}")
 # The hand-over, seed by seed: robot, hinges, pairs, same to 20 %, best by 30 %, HyperGP-gait's gain,
 # Switch-HybrID's gain, gained nothing, ends ahead, final ratio (median).
@@ -171,7 +180,9 @@ check(cells(handover) == [["centipede-2", "12", "1", "1 of 1", "5.00", "+1.00", 
 check(cells(handed) == [["centipede-2", "12", "1 of 1", "1 of 1", "765", "0 of 1", "0 of 1", "0.0 % [0.0 %]",
                          "1 of 1"],
                         ["centipede-4", "24", "2 of 2", "2 of 2", "650", "1 of 2", "1 of 2", "10.0 % [20.0 %]",
-                         "1 of 2"]],
+                         "1 of 2"],
+                        ["centipede-8", "48", "2 of 2", "1 of 2", "700", "0 of 1", "0 of 1", "0.0 % [0.0 %]",
+                         "1 of 1"]],
       f"what was handed over: {cells(handed)}\n{text}")
 check("is recorded" not in handed, f"every Switch-HybrID run is recorded here: {handed}")
 # robot, hinges, method, n, 10 %, 20 %, 30 %, 50 %, 70 %, 100 %, final
@@ -199,13 +210,22 @@ check((results / "anytime.md").read_bytes() == page, "the page changed when read
 check(figure.read_bytes() == svg, "the figure's bytes changed when read from the cache")
 check((results / "compare-handover.csv").is_file(), "the hand-overs were not cached")
 
-# Hand-overs not recorded before the folders went: the page says so, and the other tables stay.
+# A robot with a run recorded and one not (its record gone with its folder): counted apart.
 handover_cache = (results / "compare-handover.csv").read_bytes()
+kept = [line for line in handover_cache.decode().splitlines(keepends=True) if not line.startswith(f"{C8},{S},2,")]
+(results / "compare-handover.csv").write_text("".join(kept))
+p = run(anytime)
+mixed = cells((results / "anytime.md").read_text().partition("## What Switch-HybrID handed over")[2])
+check(p.returncode == 0 and mixed[-1] == ["centipede-8", "48", "1 of 2", "0 of 1", "–", "–", "–", "–", "–"],
+      f"a robot with one record of two: {p.stderr} {mixed}")
+(results / "compare-handover.csv").write_bytes(handover_cache)
+
+# Hand-overs not recorded before the folders went: the page says so, and the other tables stay.
 (results / "compare-handover.csv").unlink()
 p = run(anytime)
 check(p.returncode == 0, f"anytime without the hand-over records failed: {p.stderr}")
 unrecorded = (results / "anytime.md").read_text()
-check("No Switch-HybrID run of centipede-2, centipede-4 is recorded" in unrecorded and
+check("No Switch-HybrID run of centipede-2, centipede-4, centipede-8 is recorded" in unrecorded and
       unrecorded.partition("## What Switch-HybrID handed over")[0] == page.decode().partition(
           "## What Switch-HybrID handed over")[0] and
       not cells(unrecorded.partition("## What Switch-HybrID handed over")[2]), f"unrecorded hand-overs: {unrecorded}")
@@ -221,6 +241,19 @@ check(p.returncode == 2 and "run.log is missing" in p.stderr and len(p.stderr.st
       f"a Switch-HybrID run without its run.log: exit {p.returncode}, {p.stderr}")
 check(not (results / "anytime.md").exists() and not (results / "compare-handover.csv").exists(),
       "a refusal wrote the page or the hand-over cache")
+# A run.log that names no hand-over, beside a summary that does not say there was no room: refused,
+# not recorded as a run that never handed over.
+# Its points are read anew too (their cached row removed), and are not cached by a refused page.
+(folder / "run.log").write_text("Switch-HybrID: continuing the gait phase (HyperGP handed over after generation 1)\n")
+anytime_cache = (results / "compare-anytime.csv").read_bytes()
+(results / "compare-anytime.csv").write_text("".join(
+    line for line in anytime_cache.decode().splitlines(keepends=True) if not line.startswith(f"{C4},{S},1,")))
+without = (results / "compare-anytime.csv").read_bytes()
+p = run(anytime)
+check(p.returncode == 2 and "names no hand-over" in p.stderr, f"a log without its hand-over: {p.returncode}, {p.stderr}")
+check(not (results / "anytime.md").exists() and not (results / "compare-handover.csv").exists() and
+      (results / "compare-anytime.csv").read_bytes() == without, "a refusal wrote the page or a cache")
+(results / "compare-anytime.csv").write_bytes(anytime_cache)
 # Two different hand-overs in one run.log: refused.
 (folder / "run.log").write_text(HANDOVER_LINE + "\n" + HANDOVER_LINE.replace("(fitness 6.0)", "(fitness 5.0)") + "\n")
 p = run(anytime)

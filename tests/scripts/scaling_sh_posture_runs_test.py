@@ -76,18 +76,20 @@ check(p.returncode == 0 and listed == ["runs/direct.tiny/s1", "runs/direct.tiny/
       f"--dry-run posture-runs lists {listed}\n{p.stdout}{p.stderr}")
 check(not (studies / "compare-centipede-2").exists(), "--dry-run posture-runs wrote the study folder")
 
-# status counts the same three reruns, each at its ledger row's wall time (here set to half an hour).
+# status counts the same three reruns, each at its own ledger row's wall time (1, 2 and 3 hours for
+# the three; HyperGP-gait's and the cached run's rows 10 hours, which must not count).
 ledger_bytes = (results / "scaling-runs.csv").read_bytes()
 rows = list(csv.DictReader(open(results / "scaling-runs.csv")))
+hours = {("direct.tiny", "1"): 1, ("direct.tiny", "2"): 2, ("offset-hybrid.tiny", "1"): 3}
 for r in rows:
-    r["wall_seconds"] = "1800"
+    r["wall_seconds"] = str(3600 * hours.get((r["config"], r["seed"]), 10))
 with open(results / "scaling-runs.csv", "w", newline="") as f:
     w = csv.DictWriter(f, list(rows[0]), lineterminator="\n")
     w.writeheader()
     w.writerows(rows)
 p = scaling("--jobs", "2", "status")
-check(p.returncode == 0 and "| posture-runs (reruns of done runs) | 3 | | 3 | the ledger's wall time | 1.5 |" in p.stdout
-      and "| **total** | 6 | 6 | 3 | | **1.5** |" in p.stdout, f"status with posture-runs to go: {p.stdout}{p.stderr}")
+check(p.returncode == 0 and "| posture-runs (reruns of done runs) | 3 | | 3 | the ledger's wall time | 6.0 |" in p.stdout
+      and "| **total** | 9 | 6 | 3 | | **6.0** |" in p.stdout, f"status with posture-runs to go: {p.stdout}{p.stderr}")
 (results / "scaling-runs.csv").write_bytes(ledger_bytes)
 (results / "compare-posture.csv").unlink()
 
@@ -124,4 +126,10 @@ p = scaling("posture-runs")
 check(p.returncode == 2 and "now gives runs/direct.tiny/s" in p.stderr and "another run than the one the ledger scores"
       in p.stderr, f"another run key: {p.returncode}\n{p.stderr}")
 check(not (studies / "compare-centipede-2").exists(), "a refused posture-runs wrote the study folder")
+# status still gives its table, and says why posture-runs is not counted.
+studies.mkdir(exist_ok=True)
+p = scaling("--jobs", "2", "status")
+check(p.returncode == 0 and "| **total** | 6 |" in p.stdout and "posture-runs is not counted: it would refuse" in p.stdout
+      and "another run than the one the ledger scores" in p.stdout, f"status beside a refusing posture-runs: {p.stdout}"
+      f"{p.stderr}")
 print("scaling_sh_posture_runs_test: ok")

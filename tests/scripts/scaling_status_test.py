@@ -144,6 +144,8 @@ p = keyed_status("--cic", str(work / "no-cic"))
 check(p.returncode == 2 and f"cannot run {work / 'no-cic'}" in p.stderr, f"a cic that cannot run: {p}")
 p = keyed_status("--studies", str(work))
 check(p.returncode == 2 and "--studies goes with --cic" in p.stderr, f"--studies without --cic: {p}")
+p = keyed_status("--cic", cic, "--studies", str(work / "no-such-folder"))
+check(p.returncode == 2 and "is no folder" in p.stderr, f"--studies that is no folder: {p}")
 
 # scaling-report.py runs: what scaling.sh starts runs by, every run of the sweep with its
 # status and key, as `cic sweep --dry-run --csv` gives them (writes nothing).
