@@ -29,13 +29,6 @@ struct SimulateOptions {
     double seconds = 0.0;               // 0 = the settings' sample_to
 };
 
-// "constant" = hold 0; "sine" = sine:0.8,0.5; anything else as parse_controller_spec.
-std::unique_ptr<sim::Controller> make_controller(const std::string& spec) {
-    if (spec == "constant") return std::make_unique<sim::ConstantController>(0.0);
-    if (spec == "sine") return report::parse_controller_spec("sine:0.8,0.5");
-    return report::parse_controller_spec(spec);
-}
-
 int simulate(const SimulateOptions& o) {
     const io::Settings settings = io::load_settings(o.settings, o.overrides);
     sim::SimConfig cfg = settings.sim;
@@ -52,7 +45,7 @@ int simulate(const SimulateOptions& o) {
     else
         robot = sim::preset(settings.robot.robot_type, o.middle_legs || settings.neural.middle_legs);
     const sim::BodyLayout layout = sim::make_body_layout(robot);
-    auto controller = make_controller(o.controller);
+    auto controller = report::parse_controller_spec(o.controller);
 
     const auto t0 = std::chrono::steady_clock::now();
     const sim::EvalResult r = sim::evaluate(robot, *controller, cfg);
@@ -89,7 +82,7 @@ void add_simulate_command(Command& app, CommandContext& ctx) {
     cmd.option("--robot", o->robot, "R0, R1, R2 or a robot file (default: the settings' robot)");
     cmd.flag("--middle-legs", o->middle_legs, "With R0/R1/R2: add the middle pair of legs");
     cmd.option("--controller", o->controller,
-                    "constant | sine | sine:AMPLITUDE,FREQUENCY[,PHASE_STEP] | constant:ANGLE")
+                    "sine (= sine:0.8,0.5) | sine:AMPLITUDE,FREQUENCY[,PHASE_STEP] | constant (= constant:0) | constant:ANGLE")
         .show_default();
     cmd.option("--settings", o->settings, "Settings file (its Simulator section is used)");
     cmd.option("--set", o->overrides, "Override Section.key=value (repeatable), e.g. Simulator.sample_step=0.025");

@@ -11,7 +11,8 @@ void add_replay_options(Command& command, report::ReplaySource& source) {
     command.option("--robot", source.robot, "replay a robot instead: R0, R1, R2 or a robot file");
     command.flag("--middle-legs", source.middle_legs, "with --robot: the 6-legged variant");
     command.option("--controller", source.controller,
-                       "with --robot: sine:AMPLITUDE,FREQUENCY[,PHASE_STEP] or constant:ANGLE")
+                       "with --robot: sine (= sine:0.8,0.5), sine:AMPLITUDE,FREQUENCY[,PHASE_STEP], constant (= constant:0) "
+                       "or constant:ANGLE")
         .show_default();
     command.option("--seconds", source.seconds, "with --robot: simulated seconds (default: the simulator's)");
     command.option("--set", source.overrides,

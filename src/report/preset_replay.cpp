@@ -58,6 +58,9 @@ private:
 } // namespace
 
 std::unique_ptr<sim::Controller> parse_controller_spec(std::string_view spec) {
+    // The bare words are shorthands every command takes alike (simulate, view, trace, render).
+    if (spec == "sine") return parse_controller_spec("sine:0.8,0.5");
+    if (spec == "constant") return parse_controller_spec("constant:0");
     const std::size_t colon = spec.find(':');
     const std::string_view kind = spec.substr(0, colon);
     const std::string_view args = colon == std::string_view::npos ? std::string_view() : spec.substr(colon + 1);
@@ -79,7 +82,7 @@ std::unique_ptr<sim::Controller> parse_controller_spec(std::string_view spec) {
         if (v.size() != 1) throw InputError(fmt::format("controller '{}': expected constant:ANGLE", spec));
         return std::make_unique<sim::ConstantController>(v[0]);
     }
-    throw InputError(fmt::format("unknown controller '{}' (expected sine:A,F[,P] or constant:ANGLE)", spec));
+    throw InputError(fmt::format("unknown controller '{}' (expected sine, sine:A,F[,P], constant or constant:ANGLE)", spec));
 }
 
 int parse_robot_name(std::string_view name) {

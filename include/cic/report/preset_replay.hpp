@@ -15,6 +15,7 @@ namespace cic::report {
 
 // "sine:A,F[,P]": joint j follows A sin(2 pi F t + j P) (P defaults to pi/2,
 // a travelling wave along the joint order); "constant:ANGLE" holds every joint.
+// Bare "sine" is sine:0.8,0.5 and bare "constant" is constant:0.
 // Throws cic::InputError naming the spec for anything else.
 std::unique_ptr<sim::Controller> parse_controller_spec(std::string_view spec);
 
