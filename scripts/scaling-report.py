@@ -215,6 +215,19 @@ def usage(line):
     sys.exit(2)
 
 
+def page_command(argv):
+    """The command a page says wrote it, with paths inside the repository relative to its root,
+    so a page written through scaling.sh (which passes absolute paths) reads the same as one
+    written by hand from the root, on any machine."""
+    root = os.path.realpath(sc.ROOT)
+
+    def shown(arg):
+        if os.path.isabs(arg) and os.path.commonpath([os.path.realpath(arg), root]) == root:
+            return os.path.relpath(os.path.realpath(arg), root)
+        return arg
+    return " ".join(shlex.quote(shown(a)) for a in ["scripts/scaling-report.py"] + argv[1:])
+
+
 def main(argv):
     if len(argv) >= 2 and argv[1] == "ledger":
         args, names = {}, []
@@ -294,15 +307,15 @@ def main(argv):
                 import scaling_anytime
                 scaling_anytime.anytime(args["--results"], args["--studies"],
                                         args.get("--figure", os.path.join(sc.ROOT, "docs", "img", "scaling-anytime.svg")),
-                                        " ".join(shlex.quote(a) for a in ["scripts/scaling-report.py"] + argv[1:]))
+                                        page_command(argv))
             elif argv[1] == "posture":
                 import scaling_posture
                 scaling_posture.posture(args["--results"], args["--studies"], args["--cic"],
-                                        " ".join(shlex.quote(a) for a in ["scripts/scaling-report.py"] + argv[1:]))
+                                        page_command(argv))
             elif argv[1] == "strips":
                 import scaling_strips
                 robots = args.get("--robots", ",".join(scaling_strips.LARGEST)).split(",")
-                command = " ".join(shlex.quote(a) for a in ["scripts/scaling-report.py"] + argv[1:])
+                command = page_command(argv)
                 try:
                     scaling_strips.strips(args["--results"], args["--studies"], args["--cic"],
                                           args.get("--out-images", os.path.join(sc.ROOT, "docs", "img")), robots,

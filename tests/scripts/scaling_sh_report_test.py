@@ -65,6 +65,11 @@ check("| centipede-2 | 12 | best direct | 2 |" in (results / "anytime.md").read_
       f"anytime.md: {(results / 'anytime.md').read_text()}")
 check("| centipede-2 | 12 | 2 |" in (results / "posture.md").read_text(),
       f"posture.md: {(results / 'posture.md').read_text()}")
+# scaling.sh passes absolute paths; a page names those inside the repository from its root, so
+# the committed pages do not change with the machine that wrote them.
+for page in ("anytime.md", "posture.md"):
+    check("--results experiments/scaling/results --studies " in (results / page).read_text(),
+          f"{page} names its results folder by a machine's path: {(results / page).read_text()[:400]}")
 for figure in ("scaling-ratio.svg", "scaling-anytime.svg"):
     check((root / "docs" / "img" / figure).exists(), f"report drew no {figure}")
 shutil.rmtree(work)

@@ -184,8 +184,17 @@ md = (results / "strips.md").read_text()
 check_tables(md)
 check("No strips were drawn (--no-strips)." in md and "![" not in md, "no image links without strips\n" + md)
 check(not (work / "unused").exists(), "no images without strips")
-check(f"scripts/scaling-report.py strips --results {results} --studies {studies} --cic {cic} --no-strips" in md,
-      "the command that made it\n" + md)
+
+
+def shown(path):
+    """A path as the page names it: from the repository's root when inside it (the test's work
+    folder is, in a build folder under the source tree), else as given."""
+    real, root = os.path.realpath(path), os.path.realpath(source)
+    return os.path.relpath(real, root) if os.path.commonpath([real, root]) == root else str(path)
+
+
+check(f"scripts/scaling-report.py strips --results {shown(results)} --studies {shown(studies)} --cic {shown(cic)} "
+      "--no-strips" in md, "the command that made it\n" + md)
 
 # ---- the picks' folders gone: their cached assess rows (compare-strips.csv, one per pick) ----
 cached_rows = list(csv.DictReader(open(results / "compare-strips.csv")))
