@@ -329,7 +329,11 @@ def figure(g, sc_cells, path, shown):
             x = [h * (1 + 0.04 * (k - 1)) for h, _ in pts]   # methods side by side at each size
             y = [c["ratio"] for _, c in pts]
             err = [[c["ratio"] - c["ratio_ci"][0] for _, c in pts], [c["ratio_ci"][1] - c["ratio"] for _, c in pts]]
-            ax.errorbar(x, y, yerr=err, marker="os^"[k], capsize=3, label=LABELS[m])
+            # Hollow: no difference shown after Holm; filled: the cell's verdict is a difference.
+            bars = ax.errorbar(x, y, yerr=err, marker="os^"[k], capsize=3, label=LABELS[m], mfc="white")
+            hit = [(xi, yi) for xi, yi, (_, c) in zip(x, y, pts) if c["holm"] is not None and c["holm"] < ALPHA]
+            if hit:
+                ax.plot(*zip(*hit), ls="none", marker="os^"[k], color=bars[0].get_color(), zorder=3)
         ax.axhline(1.0, color="grey", lw=0.8, ls="--")
         ax.set_xscale("log", base=2)
         ax.set_xticks([sc.hinges(r) for r in robots] or [12])
@@ -340,7 +344,7 @@ def figure(g, sc_cells, path, shown):
     if axes[0].get_legend_handles_labels()[0]:
         axes[0].legend(fontsize=8)
     fig.suptitle("Issue 38: each HyperGP method over the best direct one, 2,500 evaluations "
-                 "(bootstrap 95 %)", fontsize=9)
+                 "(bootstrap 95 %; filled: p < 0.05 after Holm)", fontsize=9)
     fig.tight_layout()
     save_svg(fig, path)
 

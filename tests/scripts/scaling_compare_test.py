@@ -325,6 +325,18 @@ sr.figure(g, sr.score(g), str(work / "img" / "shown.svg"), {"centipede-2"})
 sr.figure(only, sr.score(only), str(work / "img" / "only.svg"), {"centipede-2"})
 check((work / "img" / "shown.svg").read_bytes() == (work / "img" / "only.svg").read_bytes(),
       "the figure draws the robots shown and no other")
+# A filled marker is a cell whose verdict is a difference after Holm: centipede-2's HyperGP-gait
+# (all above) and Switch-HybrID (all below); Offset-HybrID (overlapping) stays hollow.
+drawn = []
+save_svg, sr.save_svg = sr.save_svg, lambda fig, path: drawn.append(fig)
+sr.figure(only, sr.score(only), "unused.svg", {"centipede-2"})
+sr.save_svg = save_svg
+filled = sorted(line.get_marker() for line in drawn[0].axes[0].lines
+                if line.get_linestyle() == "None" and line.get_marker() in ("o", "s", "^"))
+check(filled == sorted(["o", "^"]),
+      f"filled markers for the cells with a difference (o HyperGP-gait, ^ Switch-HybrID), got {filled}")
+bars = [line for line in drawn[0].axes[0].lines if line.get_linestyle() != "None" and line.get_marker() in ("o", "s", "^")]
+check(len(bars) == 3 and all(line.get_markerfacecolor() == "white" for line in bars), "the bars' own markers are hollow")
 check(svg.read_text().lstrip().startswith("<?xml") and "<svg" in svg.read_text(), "the figure is an SVG")
 first = svg.read_bytes()
 # Scored once: with the run folder gone, the cache still scores it, and the same bytes come out.
