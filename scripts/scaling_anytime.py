@@ -70,9 +70,10 @@ def anytime_rows(results, studies, ledger, writes):
         key = (r["study"], r["config"], r["seed"], r["best_ever"])
         if key not in cache:
             stats = os.path.join(studies, r["study"], r["run_dir"], "stats.csv")
-            if not os.path.isfile(stats):
+            if not sc.finished_run(os.path.dirname(stats)) or not os.path.isfile(stats):
                 raise sc.Refusal(f"anytime: {r['study']} {r['config']} seed {r['seed']} is done in the ledger "
-                                 f"but {stats} is gone, and compare-anytime.csv has no points for it")
+                                 f"but {stats} is gone (or its run is still going), and compare-anytime.csv has "
+                                 "no points for it")
             budget = budget_of(robot_of(r["study"]))
             cache[key] = dict(zip(CACHE_FIELDS, key + (str(budget),)),
                               **dict(zip([f"at_{s}" for s in STEPS], best_so_far(stats, budget))))

@@ -217,6 +217,23 @@ def sweep_text(name, robot, budget, out, hybrid, top, variants, notes, unfinishe
     return "\n".join(lines)
 
 
+def finished_run(folder):
+    """Whether FOLDER holds a run that ended, as its summary.txt says (read as cic's run_end_of_summary
+    does: the last "status: " line; before those lines, no "stopped: interrupted"). A folder a rerun or
+    a resumed run is still writing is not one: its stats.csv and population are partial."""
+    path = os.path.join(folder, "summary.txt")
+    if not os.path.isfile(path):
+        return False
+    said, older_interrupted = None, False
+    with open(path, encoding="utf-8", errors="replace") as f:
+        for line in f:
+            line = line.rstrip("\n")
+            if line.startswith("status: "):
+                said = line[len("status: "):]
+            older_interrupted = older_interrupted or line.startswith("stopped: interrupted")
+    return said == "done" if said is not None else not older_interrupted
+
+
 def write_atomically(path, text):
     tmp = path + ".tmp"
     with open(tmp, "w") as f:

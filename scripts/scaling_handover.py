@@ -80,7 +80,7 @@ def handover_records(results, studies, ledger, writes):
             continue
         key = (r["study"], r["config"], r["seed"], r["best_ever"])
         folder = os.path.join(studies, r["study"], r["run_dir"])
-        if key not in cache and os.path.isdir(folder):
+        if key not in cache and sc.finished_run(folder):   # a rerun still going is not the ledger's run yet
             cache[key] = dict(zip(CACHE_FIELDS, key), **record(folder))
             changed = True
         out[key[:3]] = dict(cache[key], run_best=float(r["best_ever"])) if key in cache else None

@@ -63,7 +63,7 @@ def to_replay(runs_by_robot, cache):
     """{robot: [run folder]} of the runs with a folder and no cached row."""
     out = {}
     for robot, runs in runs_by_robot.items():
-        todo = [path for key, path in runs if key not in cache and os.path.isdir(path)]
+        todo = [path for key, path in runs if key not in cache and sc.finished_run(path)]
         if todo:
             out[robot] = todo
     return out
@@ -187,7 +187,7 @@ def reruns(results, studies, cic, sweeps):
     for method in ("direct", "offset-hybrid"):
         for runs in method_runs(results, studies, method).values():
             for (study, config, seed, best), path in runs:
-                if (study, config, seed, best) not in cache and not os.path.isdir(path):
+                if (study, config, seed, best) not in cache and not sc.finished_run(path):
                     wanted.setdefault(study, []).append((config, seed, best, os.path.relpath(path, os.path.join(studies, study))))
     out = []
     for study in sorted(wanted):

@@ -105,9 +105,10 @@ def raw_scores(results, studies, cic):
         key = (r["study"], r["config"], r["seed"], r["best_ever"])
         if key not in cache:
             run_dir = os.path.join(studies, r["study"], r["run_dir"])
-            if not os.path.isdir(run_dir):
+            if not sc.finished_run(run_dir):
                 raise sc.Refusal(f"results: {r['study']} {r['config']} seed {r['seed']} is done in the ledger but "
-                                 f"{run_dir} is gone, and compare-raw.csv has no score for it")
+                                 f"{run_dir} is gone (or holds a run still going), and compare-raw.csv has no score "
+                                 "for it")
             todo[run_dir] = key
     if todo:
         got = assess(cic, list(todo), cache_path + ".assess.csv")

@@ -69,7 +69,7 @@ def check_gone(chosen, strip_cache, images, draw):
     drawn before; else refused, saying how to get the folder back."""
     for robot, by_method in chosen.items():
         for m, p in by_method.items():
-            if os.path.isdir(p["path"]):
+            if sc.finished_run(p["path"]):
                 continue
             png = os.path.join(images, image_name(robot, m))
             lacks = (f"{CACHE} has no row for it" if p["key"] not in strip_cache else
@@ -170,7 +170,7 @@ def strips(results, studies, cic, images, robots, times, command, draw=True):
     chosen = picks(results, studies, robots)
     strip_cache = read_cache(os.path.join(results, CACHE))
     check_gone(chosen, strip_cache, images, draw)
-    present = [p for by_method in chosen.values() for p in by_method.values() if os.path.isdir(p["path"])]
+    present = [p for by_method in chosen.values() for p in by_method.values() if sc.finished_run(p["path"])]
     if draw and present:
         why = viewer_missing(cic)
         if why:

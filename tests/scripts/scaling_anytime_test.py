@@ -68,6 +68,7 @@ def add(study, config, seed, generations, status="done", final=None, handover=No
                          f"sepcmaes starts from individual 7's gait (fitness {fitness!r}) for the remaining "
                          f"{2500 - generations[g][0]} evaluations")
         (folder / "run.log").write_text("\n".join(lines) + "\n")
+    (folder / "summary.txt").write_text("status: done\n")   # a run that ended (a rerun under way has none)
     with open(folder / "stats.csv", "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
         w.writerow(STATS)
@@ -236,6 +237,7 @@ check(not (results / "compare-handover.csv").exists(), "nothing to record, yet t
 folder = studies / C4 / "runs" / S / "s1"
 folder.mkdir(parents=True)
 (folder / "stats.csv").write_text("generation,best,mean,evaluations\n0,1.0,0.5,50\n")
+(folder / "summary.txt").write_text("status: done\n")
 p = run(anytime)
 check(p.returncode == 2 and "run.log is missing" in p.stderr and len(p.stderr.strip().splitlines()) == 1,
       f"a Switch-HybrID run without its run.log: exit {p.returncode}, {p.stderr}")
@@ -279,6 +281,15 @@ check(len(p.stderr.strip().splitlines()) == 1 and "compare-anytime.csv has no po
       f"a gone run's message: {p.stderr}")
 check(not (results / "anytime.md").exists() and not figure.exists(), "a refusal wrote the page or the figure")
 check((results / "compare-anytime.csv").read_bytes() == cache, "a refusal rewrote the cache")
+# Its folder back, as a rerun still going leaves it (a partial stats.csv, no summary.txt): not the
+# ledger's run yet, so refused the same way rather than read.
+partial = studies / C2 / "runs" / D / "s4"
+partial.mkdir(parents=True)
+(partial / "stats.csv").write_text("generation,evaluations,best\n0,100,0.5\n")
+p = run(anytime)
+check(p.returncode == 2 and "still going" in p.stderr and not (results / "anytime.md").exists(),
+      f"a run still going was read as the ledger's: exit {p.returncode}, {p.stderr}")
+shutil.rmtree(studies)
 p = run([*REPORT, "anytime", "--results", str(results)])
 check(p.returncode == 2 and "--studies is required" in p.stderr, f"no --studies: {p.returncode} {p.stderr}")
 print("scaling_anytime_test: ok")
