@@ -105,11 +105,14 @@ def ledger(studies, results, names):
             listed.add(key)
             old = rows.get(key)
             key_now = r.get("run_key", "")   # none in an index of a cic older than run keys
-            if (r["status"] == "pending" and old and old["status"] == "done" and
+            if (r["status"] in ("pending", "running") and old and old["status"] == "done" and
                     (not key_now or old.get("run_key", "") == key_now)):
-                continue   # a finished run of an earlier sitting whose folder is gone
+                # A finished run of an earlier sitting whose folder is gone, or which is being rerun
+                # under the same run key (scaling.sh posture-runs): one seed fixes a run, so its row
+                # stands; the rerun's own row replaces it when it ends.
+                continue
             # A done row of another run key is of settings the sweep no longer asks, and a folder
-            # that is there but not done (interrupted, running, failed) says the row was wrong:
+            # that is there and ended otherwise (interrupted, failed) says the row was wrong:
             # both are replaced.
             rows[key] = {"study": name, **{f: r.get(f, "") for f in FIELDS if f != "study"}}
         for key, row in rows.items():

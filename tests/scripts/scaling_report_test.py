@@ -2,7 +2,7 @@
 """Scripts.ScalingReportLedgerAndEstimate: scripts/scaling-report.py merges a
 study's index.csv into the ledger, keeps a finished run whose folder is gone
 (while the index gives it the same run key; an index of other settings replaces it, and so
-does a folder that is there but not done), keeps a run that left the sweep file as superseded (counted nowhere),
+does a folder that is there and ended otherwise; a rerun of the same run key under way does not), keeps a run that left the sweep file as superseded (counted nowhere),
 lets a row found again replace its own, names the winner by median best_ever,
 and multiplies the plan out from seconds per evaluation.
 
@@ -92,6 +92,13 @@ check(path.read_text().startswith("run_dir,config,Gait.optimizer,seed,status,fin
 n, rows = merge()
 check(n == 4 and rows[("a", "101")]["status"] == "done",
       f"an older cic's index dropped a done row ({n}, {rows[('a', '101')]})")
+# The same run being rerun (scaling.sh posture-runs brings back a gone folder): while it runs, the
+# done row stands; one seed fixes a run, and the rerun's row replaces it when it ends.
+index([("a", 101, "running", "", 0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
+       ("b", 102, "done", 6.0, 50.0)])
+n, rows = merge()
+check(n == 4 and rows[("a", "101")]["status"] == "done" and rows[("a", "101")]["best_ever"] == "3.0",
+      f"a rerun under way took its run's done row ({n}, {rows[('a', '101')]})")
 # A done row whose folder is there and says interrupted was never done (cic before the run loop's
 # status line read a Switch-HybrID run stopped in its gait phase as done): the index's row wins.
 index([("a", 101, "interrupted", 2.0, 40.0), ("a", 102, "done", 5.0, 100.0), ("b", 101, "done", 4.5, 50.0),
