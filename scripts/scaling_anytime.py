@@ -69,8 +69,9 @@ def anytime_rows(results, studies, ledger, writes):
     for r in ledger:
         key = (r["study"], r["config"], r["seed"], r["best_ever"])
         if key not in cache:
-            stats = os.path.join(studies, r["study"], r["run_dir"], "stats.csv")
-            if not sc.finished_run(os.path.dirname(stats)) or not os.path.isfile(stats):
+            folder = os.path.join(studies, r["study"], r["run_dir"])
+            stats = os.path.join(folder, "stats.csv")
+            if not sc.finished_run(folder) or not os.path.isfile(stats):
                 raise sc.Refusal(f"anytime: {r['study']} {r['config']} seed {r['seed']} is done in the ledger "
                                  f"but {stats} is gone (or its run is still going), and compare-anytime.csv has "
                                  "no points for it")
