@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
     add_trace_command(root, ctx);
     add_sweep_command(root, ctx);
     add_assess_command(root, ctx);
+    add_transfer_command(root, ctx);
     add_resume_command(root, ctx);
     add_export_command(root, ctx);
     add_eval_command(root, ctx);

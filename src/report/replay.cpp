@@ -282,6 +282,19 @@ void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalRes
     item.foot_names = sim::foot_names(robot);
 }
 
+ReplayItem replay_genotype(const io::Settings& settings, const tree::Forest& genotype,
+                           std::span<const double> offsets, double fps, bool trace) {
+    return replay_trees(hypergp::Model::from_settings(settings), settings, genotype, offsets, fps, trace);
+}
+
+ReplayItem replay_gait_vector(const io::Settings& settings, const std::vector<double>& x, double fps, bool trace) {
+    const gait::Setup setup = gait::Setup::from_settings(settings);
+    if (x.size() != setup.dimension())
+        throw InputError(fmt::format("a gait of {} numbers, but these settings' gait has {}", x.size(),
+                                     setup.dimension()));
+    return replay_point(setup, x, fps, trace);
+}
+
 void register_checkpoint_reader(std::string root, CheckpointBestReader reader) {
     for (const char* own : {"population", "gaitRun", "archive"})
         if (root == own) throw std::invalid_argument("checkpoint root <" + root + "> is cic's own");

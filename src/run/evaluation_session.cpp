@@ -1,6 +1,7 @@
 // Scoring genotypes from outside a run (cic/run/evaluation_session.hpp): the
 // settings' own experiment wiring, job texts and worker processes.
 #include "cic/run/evaluation_session.hpp"
+#include "cic/report/run_genotype.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -271,47 +272,16 @@ Walk EvaluationSession::simulate(const Genotype& g, bool trace) const {
 }
 
 RunBest read_run_best(const fs::path& run_dir) {
-    if (!fs::is_directory(run_dir)) throw InputError("no such run folder", run_dir.string());
+    const report::RunGenotype g = report::read_run_genotype(run_dir.string());
     RunBest best;
     best.settings = run_dir / "settings.xml";
-    const fs::path population = run_dir / "population.xml";
-    if (!fs::exists(best.settings)) throw InputError("not a run folder: it has no settings.xml", run_dir.string());
-    if (!fs::exists(population))
-        throw InputError("the run has no population.xml yet (has it finished a generation?)", run_dir.string());
-    const io::Settings s = io::read_settings(best.settings);
-    if (!io::walks_a_robot(s))
-        throw InputError("a symbolic-regression run: only robot runs have a genotype to evaluate", run_dir.string());
-    if (s.map_elites.enabled) {
-        const io::ArchiveFile a = io::load_archive(population);
-        const io::ArchiveElite* e = a.best();
-        if (!e) throw InputError("the archive holds no elite (every evaluation failed)", population.string());
-        best.fitness = e->fitness;
-        best.generation = a.batches - 1;
-        best.form = e->genotype.empty() ? GenotypeForm::Vector : GenotypeForm::Forest;
-        if (best.form == GenotypeForm::Vector) best.genotype.vector = gait::Setup::from_settings(s).in_box(e->x);
-        for (const auto& t : e->genotype) best.genotype.trees.push_back(t.to_string());
-        return best;
-    }
-    // A gait run's champion, or a Switch-HybrID run's past its hand-over (a gait checkpoint).
-    if (io::genotype_form(s) == io::GenotypeForm::Vector || (s.neural.switches() && io::is_gait_file(population))) {
-        const io::GaitFile g = io::load_gait(population);
-        best.form = GenotypeForm::Vector;
-        best.genotype.vector = gait::Setup::from_settings(s).in_box(g.champion.x);
-        best.fitness = g.champion.fitness;
-        best.generation = g.generation + (g.handover ? g.handover->generation + 1 : 0);   // as stats.csv counts
-        return best;
-    }
-    const io::PopulationFile p = io::load_population(population);
-    io::check_compatible(p, s, population.string());
-    const gp::IndividualPtr* top = nullptr;
-    for (const auto& ind : p.population.individuals)
-        if (!top || gp::better(*ind, **top)) top = &ind;
-    if (!top) throw InputError("the population is empty", population.string());
-    best.form = GenotypeForm::Forest;
-    for (const auto& t : (*top)->genotype) best.genotype.trees.push_back(t.to_string());
-    best.genotype.offsets = (*top)->direct;   // Offset-HybrID's, empty otherwise
-    best.fitness = (*top)->fitness;
-    best.generation = p.population.generation;
+    best.fitness = g.stored_fitness;
+    best.generation = g.generation;
+    best.form = g.trees.empty() ? GenotypeForm::Vector : GenotypeForm::Forest;
+    // The optimiser may store a point outside the unit box: the session takes the one that decodes alike.
+    if (best.form == GenotypeForm::Vector) best.genotype.vector = gait::Setup::from_settings(g.settings).in_box(g.gait);
+    for (const auto& t : g.trees) best.genotype.trees.push_back(t.to_string());
+    best.genotype.offsets = g.offsets;   // Offset-HybrID's, empty otherwise
     return best;
 }
 

@@ -48,7 +48,7 @@ protected:
 
 // settings/robots/centipede-*.xml are this command's output, byte for byte.
 TEST_F(RobotCommand, RegeneratesTheShippedCentipedes) {
-    for (int p : {2, 4, 8, 16})
+    for (int p : {2, 4, 8, 16, 32, 64})
         for (bool irregular : {false, true}) {
             const std::string name = "centipede-" + std::to_string(p) + (irregular ? "-irregular" : "") + ".xml";
             const fs::path out = dir / name;

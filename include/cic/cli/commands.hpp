@@ -23,6 +23,7 @@ void add_compare_command(Command& app, CommandContext& ctx);    // cmd_compare.c
 void add_trace_command(Command& app, CommandContext& ctx);      // cmd_trace.cpp
 void add_sweep_command(Command& app, CommandContext& ctx);      // cmd_sweep.cpp
 void add_assess_command(Command& app, CommandContext& ctx);     // cmd_assess.cpp
+void add_transfer_command(Command& app, CommandContext& ctx);   // cmd_transfer.cpp
 void add_resume_command(Command& app, CommandContext& ctx);     // cmd_resume.cpp
 void add_export_command(Command& app, CommandContext& ctx);     // cmd_export.cpp
 void add_eval_command(Command& app, CommandContext& ctx);       // cmd_eval.cpp

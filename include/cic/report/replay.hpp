@@ -4,6 +4,7 @@
 // used, so the motion shown is the one that earned the fitness.
 #include <array>
 #include <functional>
+#include <span>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -49,6 +50,14 @@ std::pair<double, double> eq71_terms(const sim::RobotSpec& robot, const sim::Eva
 // Sets the item's distance and elevation from the evaluation, and with
 // recorded ground contacts (EvalOptions::record_ground) its feet's duty factors.
 void fill_walk(ReplayItem& item, const sim::RobotSpec& robot, const sim::EvalResult& result);
+
+// One HyperGP genotype (with Offset-HybrID's offsets, or none) walked under
+// `settings` (their robot), scored as the run's type scores it and recorded:
+// what replay() does for each individual it picks.
+ReplayItem replay_genotype(const io::Settings& settings, const tree::Forest& genotype,
+                           std::span<const double> offsets, double fps, bool trace);
+// One gait vector of the settings' gait (their layout, unit box), walked and recorded.
+ReplayItem replay_gait_vector(const io::Settings& settings, const std::vector<double>& x, double fps, bool trace);
 
 // Individuals from a run folder (its latest population file) or a population
 // XML: `individual` is "best" (then the best `count`, best first) or an id. In
