@@ -26,7 +26,7 @@ std::string section_text(const Settings& s, const std::string& section, const st
     for (const auto& k : settings_table()) {
         if (k.section != section || skip.count(k.key)) continue;
         std::string value = k.get(s);
-        if (value == default_text(k)) continue;
+        if (computes_as_default(k, value)) continue;
         if (k.type == ValueType::Path && !value.empty()) {
             std::ifstream in(value, std::ios::binary);
             if (in) value = "contents:" + hex16(fnv1a_64(std::string(std::istreambuf_iterator<char>(in), {})));
@@ -35,6 +35,20 @@ std::string section_text(const Settings& s, const std::string& section, const st
         for (char& c : value)
             if (c == ' ') c = ',';
         out += (out.empty() ? "" : " ") + k.key + "=" + value;
+    }
+    return out;
+}
+
+// A simulator part as written before issue 55 named Simulator.collisionSpace=1
+// (sweep), which computes what the default computes: read as today's text.
+std::string without_default_routes(const std::string& text) {
+    std::istringstream in(text);
+    std::string out;
+    for (std::string tok; in >> tok;) {
+        const auto eq = tok.find('=');
+        const SettingKey* k = eq == std::string::npos ? nullptr : find_setting("Simulator", tok.substr(0, eq));
+        if (k && !k->same_result_as_default.empty() && computes_as_default(*k, tok.substr(eq + 1))) continue;
+        out += (out.empty() ? "" : " ") + tok;
     }
     return out;
 }
@@ -173,7 +187,7 @@ std::string check_origin(const std::optional<CheckpointOrigin>& loaded, const Se
                "simulator and controller cannot be checked against these settings; it is believed";
     const CheckpointOrigin want = origin_of(s);
     std::map<std::string, std::string> had;
-    for (const auto& p : loaded->parts) had[p.name] = p.text;
+    for (const auto& p : loaded->parts) had[p.name] = p.name == "simulator" ? without_default_routes(p.text) : p.text;
     std::string differences;
     auto add = [&](const std::string& d) { differences += (differences.empty() ? "" : "; ") + d; };
     std::set<std::string> seen;

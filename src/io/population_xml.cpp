@@ -149,8 +149,6 @@ gp::IndividualPtr read_individual(const xml::Node& n, int trees, std::size_t off
 
 } // namespace
 
-std::string settings_digest(const Settings& s);
-
 PopulationFile describe(const Settings& s) {
     PopulationFile p;
     p.experiment = s.experiment.type;

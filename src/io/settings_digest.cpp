@@ -9,10 +9,11 @@
 #include "cic/io/population_xml.hpp"
 #include "cic/io/search_names.hpp"
 #include "cic/io/settings_table.hpp"
+#include "cic/sim/config.hpp"
 
 namespace cic::io {
 
-std::string settings_digest(const Settings& s) {
+std::string settings_digest(const Settings& s, DigestRule rule) {
     // Keys that never change the individuals a generation produces.
     static const std::set<std::string> ignored = {
         "Experiment.seed", "Experiment.outputDirectory", "Experiment.workers", "Experiment.checkpointInterval",
@@ -28,7 +29,14 @@ std::string settings_digest(const Settings& s) {
         // MAP-Elites keys shape only MAP-Elites runs (so every other run keeps its digest).
         if (k.section == "MapElites" && !s.map_elites.enabled) continue;
         const std::string value = k.get(s);
-        if (!k.digest_at_default && value == default_text(k)) continue;
+        if (rule == DigestRule::Current) {
+            if (!k.digest_at_default && value == default_text(k)) continue;
+            if (value != default_text(k) && computes_as_default(k, value)) continue;   // the same bits by another route
+        } else if (full == "Simulator.collisionSpace") {
+            if (value == std::to_string(sim::kCollisionSimple)) continue;   // its default until issue 55
+        } else if (!k.digest_at_default && value == default_text(k)) {
+            continue;
+        }
         // A search named explicitly that `auto` picks anyway computes the same run.
         if (full == "Experiment.search" && value == auto_search_pick(s)) continue;
         lines += full + "=" + value + "\n";

@@ -94,4 +94,14 @@ std::string default_text(const SettingKey& k) {
     return k.get(defaults);
 }
 
+bool computes_as_default(const SettingKey& k, const std::string& value) {
+    return value == default_text(k) ||
+           std::find(k.same_result_as_default.begin(), k.same_result_as_default.end(), value) !=
+               k.same_result_as_default.end();
+}
+
+bool same_result(const SettingKey& k, const std::string& a, const std::string& b) {
+    return a == b || (computes_as_default(k, a) && computes_as_default(k, b));
+}
+
 } // namespace cic::io

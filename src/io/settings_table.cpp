@@ -235,7 +235,11 @@ void simulator_rows(std::vector<SettingKey>& t) {
     sim::for_each_field(defaults, [&](const sim::FieldSpec& f, const auto& v) {
         t.push_back(sim_row<std::decay_t<decltype(v)>>(f));
         // Added for issue 38: out of the digest at its default, so older runs keep theirs.
-        if (f.name == "collision_space") t.back().digest_at_default = false;
+        // The default since issue 55 is sweep, which gives simple's bits: either is the default.
+        if (f.name == "collision_space") {
+            t.back().digest_at_default = false;
+            t.back().same_result_as_default = {std::to_string(sim::kCollisionSimple)};
+        }
         if (f.name == "delayed_start") {
             t.push_back(int_row("Simulator", "robot_type", 0, 2, "Robot: 0 R0, 1 R1, 2 R2 (thesis 7.1.1)",
                                 FIELD(robot.robot_type)));

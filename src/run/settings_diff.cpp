@@ -36,7 +36,7 @@ std::vector<std::string> settings_differences(const io::Settings& ran_settings, 
     std::vector<std::string> out;
     for (const auto& k : io::settings_table()) {
         const std::string a = k.get(ran), b = k.get(asked);
-        if (a == b || (k.type == io::ValueType::Path && same_file_contents(a, b))) continue;
+        if (io::same_result(k, a, b) || (k.type == io::ValueType::Path && same_file_contents(a, b))) continue;
         out.push_back(fmt::format("{}.{}: ran '{}', {} asks '{}'", k.section, k.key, a, asker, b));
     }
     return out;

@@ -27,7 +27,7 @@ std::string eq71_line(double distance, double elevation) {
 
 std::string search_note(const std::string& file_digest, const io::Settings& s, const std::string& from) {
     const std::string now = io::settings_digest(s);
-    if (file_digest == now) return {};
+    if (file_digest == now || file_digest == io::settings_digest(s, io::DigestRule::Legacy)) return {};
     return fmt::format("note: {} was made with other settings (digest {}, now {}); its origin (robot, simulator, "
                        "controller) is these settings', so its fitness values hold; the budget and the search's own "
                        "settings are now these",

@@ -260,13 +260,13 @@ std::string path_fingerprint(const std::string& path) {
 // from its default, but for those that change no result (the run's name,
 // output folder, worker count, resume file). Keys at their defaults are left
 // out, so that a key added to cic later (whose default keeps the old
-// behaviour) does not change the fingerprint of the runs already stored.
+// behaviour) does not change the fingerprint of the runs already stored; so
+// are values that compute as the default (io::computes_as_default).
 std::string run_fingerprint(const io::Settings& settings) {
     const io::Settings s = run::result_settings(settings);
-    const io::Settings defaults;
     std::string text = std::string("cic ") + CIC_VERSION + "\n";
     for (const auto& k : io::settings_table())
-        if (const std::string v = k.get(s); v != k.get(defaults))
+        if (const std::string v = k.get(s); !io::computes_as_default(k, v))
             text += k.section + "." + k.key + "=" + (k.type == io::ValueType::Path ? path_fingerprint(v) : v) + "\n";
     return hex16(fnv1a_64(text));
 }

@@ -10,6 +10,7 @@
 
 #include "cic/core/error.hpp"
 #include "cic/experiments/hypergp/model.hpp"
+#include "cic/io/gait_xml.hpp"
 #include "cic/io/robot_xml.hpp"
 #include "cic/io/settings_io.hpp"
 #include "cic/report/transfer.hpp"
@@ -216,4 +217,20 @@ TEST_F(TransferReplay, CommandRefusesBadInputAndWritesOneRowPerRobot) {
     EXPECT_NE(csv.find(",centipede-2,12,own,"), std::string::npos) << csv;
     EXPECT_NE(csv.find(",centipede-4,24,tiled,"), std::string::npos) << csv;
     EXPECT_NE(csv.find(",R1,12,tiled,"), std::string::npos) << csv;
+}
+
+// Switch-HybrID past its hand-over: the genotype transferred is its HyperGP
+// phase's best (trees), not the direct gait it went on with.
+TEST_F(TransferReplay, SwitchHybridGivesItsHyperGpPhasesTrees) {
+    const fs::path r = run("r1_switch_hybrid.xml", "--set Gait.evaluations=48 --set GP.generatedPopulationSize=8 "
+                                                   "--set Neural.switchShare=0.3");
+    ASSERT_TRUE(io::is_gait_file(r / "population.xml")) << "the run did not hand over";
+    const report::TransferSource src = report::read_transfer_source(r.string());
+    EXPECT_FALSE(src.trees.empty());
+    EXPECT_NE(src.what.find("Switch-HybrID's HyperGP phase"), std::string::npos) << src.what;
+    // The gait it went on with is what the run's latest genotype is.
+    EXPECT_TRUE(report::read_run_genotype(r.string(), report::SwitchPhase::Latest).trees.empty());
+    report::TransferTarget own{src.robot, src.settings.robot.robot_file};
+    EXPECT_EQ(report::replay_transferred(src, own, report::OffsetRule::None, 0, false).replayed_fitness,
+              src.stored_fitness);
 }

@@ -56,7 +56,12 @@ PopulationFile parse_population(std::string_view text, const std::string& name);
 void check_compatible(const PopulationFile& loaded, const Settings& s, const std::string& file);
 
 // A short hex digest of the settings that change what a run computes
-// (everything but seed, output, workers, stop conditions and the load path).
-std::string settings_digest(const Settings& s);
+// (everything but seed, output, workers, stop conditions and the load path;
+// a value that computes as the default counts as the default). Legacy: the
+// rule of files written before issue 55, which counted Simulator.collisionSpace
+// 1 (sweep) apart from 0 (simple) though both give the same bits; a file's
+// digest is the settings' own under either rule.
+enum class DigestRule { Current, Legacy };
+std::string settings_digest(const Settings& s, DigestRule rule = DigestRule::Current);
 
 } // namespace cic::io

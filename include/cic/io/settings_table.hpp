@@ -55,6 +55,12 @@ struct SettingKey {
     // so that a key added after runs were made (its default keeping the old
     // behaviour) does not change the digest those runs' files hold.
     bool digest_at_default = true;
+    // Values that compute what the default computes, to the bit (a faster
+    // route to the same numbers: Simulator.collisionSpace 0 beside its default
+    // 1). Such a value is the default to the settings digest, the checkpoint
+    // origin, a run's key and a resume's comparison, so choosing it changes no
+    // record of what a run computes.
+    std::vector<std::string> same_result_as_default;
 };
 
 // Sections in file order.
@@ -67,5 +73,9 @@ const SettingKey* find_setting(std::string_view section, std::string_view key);
 std::string describe_allowed(const SettingKey& k);
 // Canonical text of k's default (its value in a default-constructed Settings).
 std::string default_text(const SettingKey& k);
+// `value` is k's default or computes what it computes (same_result_as_default).
+bool computes_as_default(const SettingKey& k, const std::string& value);
+// Two values of k that compute the same: equal, or both computing as the default.
+bool same_result(const SettingKey& k, const std::string& a, const std::string& b);
 
 } // namespace cic::io

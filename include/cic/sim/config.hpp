@@ -60,7 +60,7 @@ struct SimConfig {
     bool allow_coarse_step = false;   // accept a physics step above kMaxStablePhysicsStep
     // How the robot's geoms find the pairs to test for contact (docs/simulator.md,
     // "Collision space"): kCollisionSimple, kCollisionSweep or kCollisionSap.
-    int collision_space = 0;
+    int collision_space = kCollisionSweep;   // simple's bits, about linear in modules (issue 55)
 
     double physics_step() const { return sample_step / step_divider; }
 };
@@ -124,8 +124,8 @@ void for_each_field(Config& c, F&& f) {
       c.allow_coarse_step);
     f(FieldSpec{"collision_space", "collisionSpace",
                 "How robot geoms find contact pairs: 0 simple (all pairs, quadratic in modules), 1 sweep (cic's "
-                "sort-and-sweep, about linear, simple's bits), 2 ODE's sweep-and-prune (about linear, pairs in "
-                "geom order); docs/simulator.md",
+                "sort-and-sweep, about linear, simple's bits: the default), 2 ODE's sweep-and-prune (about linear, "
+                "pairs in geom order); docs/simulator.md",
                 0, 2},
       c.collision_space);
 }
