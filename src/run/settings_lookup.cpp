@@ -16,8 +16,25 @@ namespace cic::run {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// The binary's real file: a worker path such as /proc/self/exe (what cic execs
+// for its workers, self_exec_path) is a link whose folder, /proc/self, says
+// nothing about where cic is installed.
+fs::path real_binary(const fs::path& cic_binary) {
+    if (cic_binary.empty() || cic_binary == "/proc/self/exe") return self_path();
+    if (cic_binary.string().starts_with("/proc/")) {
+        std::error_code ec;
+        const fs::path target = fs::canonical(cic_binary, ec);
+        if (!ec) return target;
+    }
+    return cic_binary;
+}
+
+} // namespace
+
 std::vector<fs::path> settings_search_folders(const fs::path& cic_binary) {
-    const fs::path exe = cic_binary.empty() ? fs::path(self_path()) : cic_binary;
+    const fs::path exe = real_binary(cic_binary);
     std::vector<fs::path> out;
     if (exe.has_parent_path())
         out.push_back((exe.parent_path() / ".." / "share" / "cic" / "settings").lexically_normal());

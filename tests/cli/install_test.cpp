@@ -526,4 +526,8 @@ TEST(SettingsLookup, GivenPathWinsThenInstalledThenSourceTree) {
     }
     // An absolute path is never looked up elsewhere.
     EXPECT_THROW(cic::run::find_settings_file((dir / "r1_settings.xml").string()), cic::InputError);
+    // The path cic execs for its workers (cic eval's) stands for the file it names, not /proc/share/cic.
+    EXPECT_EQ(cic::run::settings_search_folders("/proc/self/exe"), cic::run::settings_search_folders());
+    EXPECT_EQ(cic::run::find_settings_file("r1_settings.xml", "/proc/self/exe"),
+              fs::canonical(fs::path(CIC_SOURCE_DIR) / "settings/r1_settings.xml"));
 }

@@ -11,7 +11,9 @@ namespace cic::run {
 // The folders searched, in order, when `given` is not found as given:
 // <exe dir>/../share/cic/settings, then CIC_SOURCE_DIR/settings.
 // `cic_binary` stands for the running binary when the caller is not cic itself
-// (the Python package: the cic its workers run); empty = this process's.
+// (the Python package: the cic its workers run); empty = this process's. A
+// link under /proc (/proc/self/exe, what cic execs for its workers) is read
+// as the file it names.
 std::vector<std::filesystem::path> settings_search_folders(const std::filesystem::path& cic_binary = {});
 
 // `given` when it names an existing file; else the first folder of
