@@ -48,7 +48,8 @@ std::vector<fs::path> settings_search_folders(const fs::path& cic_binary) {
     return out;
 }
 
-fs::path find_settings_file(const std::string& given, const fs::path& cic_binary) {
+fs::path find_settings_file(const std::string& given, const fs::path& cic_binary,
+                            const std::function<void(const std::string&)>& note) {
     if (given.empty()) throw InputError("--settings: the file name is empty");
     const fs::path p(given);
     std::error_code ec;
@@ -66,7 +67,9 @@ fs::path find_settings_file(const std::string& given, const fs::path& cic_binary
             if (fs::is_regular_file(candidate, ec)) {
                 fs::path full = fs::weakly_canonical(candidate, ec);
                 if (ec) full = candidate;
-                std::cerr << "cic: settings " << given << ": using " << full.string() << '\n';
+                const std::string line = "cic: settings " + given + ": using " + full.string();
+                if (note) note(line);
+                else std::cerr << line << '\n';
                 return full;
             }
             looked += ", " + candidate.string();
@@ -75,8 +78,8 @@ fs::path find_settings_file(const std::string& given, const fs::path& cic_binary
         }
     }
     const std::string near = io::nearest_name(p.filename().string(), shipped);
-    throw InputError("settings file " + given + " not found; looked in: " + looked +
-                     (near.empty() ? "" : "; did you mean " + near + "?"));
+    throw SettingsNotFound("settings file " + given + " not found; looked in: " + looked +
+                           (near.empty() ? "" : "; did you mean " + near + "?"));
 }
 
 } // namespace cic::run

@@ -194,8 +194,6 @@ def test_bad_settings_raise_value_error_naming_the_key():
         cic.Evaluator(R1_GAIT, set={"Gait.evaluation": 100})
     with pytest.raises(ValueError, match="sample_step"):
         cic.Evaluator(R1_GAIT, set={"Simulator.sample_step": -1})
-    with pytest.raises(ValueError, match="no-such-settings.xml"):
-        cic.Evaluator("no-such-settings.xml")
     with pytest.raises(ValueError, match="workers"):
         cic.Evaluator(R1_GAIT, workers=0)
     with pytest.raises(ValueError, match="symbolic regression"):
@@ -281,3 +279,78 @@ def test_ctrl_c_during_a_batch_raises_keyboard_interrupt_and_leaves_no_worker(tm
     assert p.returncode == 0, out
     assert "interrupted 0" in out, out
     assert "again 1" in out, out
+
+
+# --- Python's conventions (issue 57) ----------------------------------------------------
+
+def test_a_missing_file_is_file_not_found_and_other_bad_input_stays_value_error(tmp_path):
+    with pytest.raises(FileNotFoundError, match="no-such-settings.xml.*not found"):
+        cic.Evaluator("no-such-settings.xml")
+    with pytest.raises(FileNotFoundError, match="not found"):
+        cic.simulate(str(tmp_path / "gone.xml"), np.full(37, 0.5))
+    with pytest.raises(FileNotFoundError):
+        cic.read_run(tmp_path / "no-run")
+    with pytest.raises(FileNotFoundError):
+        cic.read_study(tmp_path / "no-study")
+    with pytest.raises(ValueError, match="not a regular file"):
+        cic.Evaluator(str(tmp_path))   # there, but not a settings file: bad input
+    with pytest.raises(ValueError):
+        cic.read_run(tmp_path)   # a folder, but no run's
+
+
+def test_the_settings_a_bare_name_found_are_a_cic_note_that_can_be_silenced(capfd):
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        with cic.Evaluator("r1_gait.xml", set=QUICK) as ev:
+            assert os.path.samefile(ev.settings_file, R1_GAIT)
+        cic.simulate("r1_gait.xml", np.full(37, 0.5), trace=False, set=QUICK)
+    notes = [str(w.message) for w in caught if issubclass(w.category, cic.CicNote)]
+    assert len(notes) == 2 and all("r1_gait.xml: using" in n for n in notes), notes
+    assert all(w.filename == __file__ for w in caught)   # said at the caller's line
+    assert capfd.readouterr().err == ""   # not printed by C++ where warnings cannot reach it
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        warnings.filterwarnings("ignore", category=cic.CicNote)
+        cic.Evaluator("r1_gait.xml", set=QUICK).close()
+    assert caught == []
+
+
+def test_a_killed_sessions_folder_is_removed_by_the_next_start(tmp_path, monkeypatch):
+    script = textwrap.dedent(f"""
+        import time, cic
+        ev = cic.Evaluator({R1_GAIT!r})
+        print("ready", flush=True)
+        time.sleep(300)
+    """)
+    p = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True,
+                         env=dict(os.environ, TMPDIR=str(tmp_path)))
+    try:
+        assert p.stdout.readline().strip() == "ready"
+        theirs = list(tmp_path.glob("cic-eval-*"))
+        assert len(theirs) == 1
+        monkeypatch.setenv("TMPDIR", str(tmp_path))
+        cic.Evaluator(R1_GAIT, set=QUICK).close()
+        assert theirs[0].exists()   # a live session's folder is its own
+    finally:
+        p.kill()   # SIGKILL: no destructor, no atexit
+        p.wait()
+    assert theirs[0].exists()
+    with cic.Evaluator(R1_GAIT, set=QUICK):
+        mine = list(tmp_path.glob("cic-eval-*"))
+        assert len(mine) == 1 and mine != theirs
+    assert list(tmp_path.glob("cic-eval-*")) == []
+
+
+def test_a_float32_batch_is_converted_with_a_warning(gait_ev):
+    x = np.random.default_rng(9).random((2, 37))
+    x32 = x.astype(np.float32)
+    with pytest.warns(cic.CicWarning, match="float32.*converted to float64"):
+        got = gait_ev.evaluate(x32)
+    want = gait_ev.evaluate(x32.astype(np.float64))   # the float32 values, exactly
+    assert (bits(got.fitness) == bits(want.fitness)).all()
+    with pytest.warns(cic.CicWarning, match="float32"):
+        gait_ev.simulate(x32[0], trace=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")   # float64 and integers: nothing to say
+        gait_ev.evaluate(x)
+        gait_ev.evaluate(np.zeros((1, 37), dtype=np.int64))

@@ -5,7 +5,9 @@
 // evaluates batches with the job texts and `cic worker` processes a run of
 // those settings uses, so every fitness is a run's to the last bit, for any
 // number of workers. Nothing is written but a private copy of the effective
-// settings for the workers, removed when the session ends.
+// settings for the workers, in $TMPDIR/cic-eval-XXXXXX, removed when the
+// session ends; a folder whose session was killed (SIGKILL: no destructor ran)
+// is removed by the next session's start.
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -64,12 +66,16 @@ struct SessionOptions {
     std::string worker_executable;           // the cic binary that serves `cic worker`
     std::function<bool()> interrupted = {};  // asked during a batch (Ctrl-C); true throws cic::Interrupted
     std::function<void(const std::string&)> warn = [](const std::string&) {};   // a replaced worker, a failed job
+    // Notes that are not trouble: which installed settings file a bare name found
+    // (empty: printed on stderr, as cic --settings does).
+    std::function<void(const std::string&)> note = {};
 };
 
 class EvaluationSession {
 public:
-    // Throws cic::InputError for bad settings, a symbolic-regression experiment
-    // (not a robot), or workers < 1; std::runtime_error when workers cannot start.
+    // Throws run::SettingsNotFound for a settings file found nowhere, cic::InputError
+    // for bad settings, a symbolic-regression experiment (not a robot), or
+    // workers < 1; std::runtime_error when workers cannot start.
     explicit EvaluationSession(SessionOptions options);
     ~EvaluationSession();
     EvaluationSession(const EvaluationSession&) = delete;
