@@ -106,15 +106,26 @@ class Simulation:
     feet     (n, feet)     bool: the foot (a branch end, foot_names) touched the ground during the step
 
     and fitness, distance, elevation, failed, failure as in Evaluation. Without trace the arrays have no rows.
+    duty_factors() gives each foot's duty factor as `cic assess` counts it.
     """
 
     def __init__(self, d):
         """Made by cic.simulate and Evaluator.simulate (not meant to be built by hand)."""
+        self._duty_factors = d["duty_factors"]
         for key in ("fitness", "distance", "elevation", "failed", "failure", "time", "centre", "angles", "targets"):
             setattr(self, key, d[key])
         self.feet = d["feet"].astype(bool)
         self.joint_names = list(d["joint_names"])
         self.foot_names = list(d["foot_names"])
+
+    def duty_factors(self):
+        """Each foot's duty factor, in foot_names order: the share of the physics steps from the delayed start
+        (Simulator.delayed_start) on in which it touched the ground. `cic assess` and MAP-Elites' duty-factor
+        descriptor count exactly so. The mean of `feet` differs: it counts control steps, and from time 0,
+        while the robot is still settling. Needs the trace (simulate(..., trace=True), the default)."""
+        if len(self.time) == 0:
+            raise ValueError("duty_factors needs the trace: simulate with trace=True")
+        return self._duty_factors.copy()
 
     def __repr__(self):
         """One line: fitness, steps, joints and feet."""
@@ -186,6 +197,59 @@ class Evaluator:
         """One line: experiment, genotype form and size, settings file and workers."""
         return (f"<cic.Evaluator {self.experiment} ({self.form} of {self.dimension}) from {self.settings_file}, "
                 f"{self.workers} worker{'s' if self.workers != 1 else ''}>")
+
+    def _points(self, x, reading):
+        if self.vector_dimension == 0:
+            raise ValueError("these settings evolve HyperGP trees: there is no gait vector to read into the unit box")
+        if isinstance(x, (str, bytes)):
+            raise ValueError("a gait vector is numbers, not a string")
+        arr = np.asarray(x)
+        if arr.dtype.kind not in "fiu" or arr.ndim not in (1, 2):
+            raise ValueError(f"a gait vector (1-D) or a batch of them (2-D) of numbers; got dtype {arr.dtype}, "
+                             f"shape {arr.shape}")
+        rows = np.atleast_2d(_float64(arr, "the vector"))
+        out = np.array([self._session.in_box(row.tolist(), reading) for row in rows]).reshape(rows.shape)
+        return out[0] if arr.ndim == 1 else out
+
+    def in_box(self, x):
+        """The point of the unit box that the run reads `x` as (its Gait.bounds: reflect or clip; phases wrap),
+        for one vector (1-D) or a batch (2-D). ``ev.evaluate(ev.in_box(x))`` gives the fitness a run gives x,
+        bit for bit: what an optimiser that does not keep to [0, 1] (scipy's Nelder-Mead, pycma without
+        bounds) hands to evaluate. A vector inside the box comes back unchanged."""
+        return self._points(x, "settings")
+
+    def reflect(self, x):
+        """`x` read into the unit box by reflecting at its bounds (1.2 -> 0.8, -0.3 -> 0.3; phases wrap),
+        whatever the settings' Gait.bounds: the continuous reading, as Gait.bounds=reflect does."""
+        return self._points(x, "reflect")
+
+    def clip(self, x):
+        """`x` read into the unit box by clipping to its bounds (1.2 -> 1, -0.3 -> 0; phases wrap), whatever
+        the settings' Gait.bounds: as Gait.bounds=clamp does."""
+        return self._points(x, "clip")
+
+    def decode(self, x):
+        """The sine gait a gait vector in the unit box stands for, as a pandas DataFrame: one row per joint
+        (robot order), with the columns joint (its name), amplitude, phase and offset in radians (and
+        amplitude2, phase2 with Gait.secondHarmonic), and frequency in Hz (the same in every row, x[0]; also
+        in frame.attrs["frequency"]). The numbers summary.txt gives. Layout: x[0] the frequency, then per
+        joint amplitude, phase, offset [, amplitude2, phase2]."""
+        import pandas as pd
+
+        if isinstance(x, (str, bytes)):
+            raise ValueError("a gait vector is numbers, not a string")
+        arr = np.asarray(x)
+        if arr.dtype.kind not in "fiu" or arr.ndim != 1:
+            raise ValueError(f"decode takes one gait vector (1-D numbers); got dtype {arr.dtype}, shape {arr.shape}")
+        d = self._session.decode(_float64(arr, "the vector").tolist())
+        columns = {"joint": list(d["joint_names"]), "amplitude": d["amplitude"], "phase": d["phase"],
+                   "offset": d["offset"]}
+        if d["second_harmonic"]:
+            columns.update(amplitude2=d["amplitude2"], phase2=d["phase2"])
+        columns["frequency"] = np.full(len(columns["joint"]), d["frequency"])
+        frame = pd.DataFrame(columns)
+        frame.attrs["frequency"] = d["frequency"]
+        return frame
 
     def evaluate(self, batch, offsets=None):
         """Scores a batch: a 2-D array or list of unit-box vectors (gait, CPG), or a list of

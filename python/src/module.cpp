@@ -96,6 +96,36 @@ public:
     std::vector<std::string> take_warnings() { return std::exchange(warnings_, {}); }
     std::vector<std::string> take_notes() { return std::exchange(notes_, {}); }
 
+    py::array_t<double> in_box(const std::vector<double>& x, const std::string& reading) const {
+        run::BoxReading r = run::BoxReading::Settings;
+        if (reading == "reflect") r = run::BoxReading::Reflect;
+        else if (reading == "clip") r = run::BoxReading::Clip;
+        else if (reading != "settings") throw InputError("in_box: reading is settings, reflect or clip, got " + reading);
+        return vector_array(session_->in_box(x, r));
+    }
+
+    py::dict decode(const std::vector<double>& x) const {
+        const sim::GaitSpec g = session_->decode(x);
+        std::vector<double> amplitude, phase, offset, amplitude2, phase2;
+        for (const sim::GaitJoint& j : g.joints) {
+            amplitude.push_back(j.amplitude);
+            phase.push_back(j.phase);
+            offset.push_back(j.offset);
+            amplitude2.push_back(j.amplitude2);
+            phase2.push_back(j.phase2);
+        }
+        py::dict d;
+        d["frequency"] = g.frequency;
+        d["joint_names"] = session_->joint_names();
+        d["amplitude"] = vector_array(amplitude);
+        d["phase"] = vector_array(phase);
+        d["offset"] = vector_array(offset);
+        d["amplitude2"] = vector_array(amplitude2);
+        d["phase2"] = vector_array(phase2);
+        d["second_harmonic"] = session_->settings().gait.second_harmonic;
+        return d;
+    }
+
     py::dict evaluate_vectors(py::array_t<double, py::array::c_style> xs) {
         if (xs.ndim() != 2) throw InputError("a batch of vectors is a 2-D array (one row per genotype)");
         std::vector<Genotype> batch(static_cast<std::size_t>(xs.shape(0)));
@@ -141,6 +171,7 @@ public:
         d["angles"] = matrix_array(w.angles, steps, joints);
         d["targets"] = matrix_array(w.targets, steps, joints);
         d["feet"] = matrix_array(std::vector<unsigned char>(w.feet.begin(), w.feet.end()), steps, feet);
+        d["duty_factors"] = vector_array(w.duty_factors);
         return d;
     }
 
@@ -230,6 +261,8 @@ PYBIND11_MODULE(_core, m) {
         .def_property_readonly("descriptor", &Session::descriptor)
         .def("take_warnings", &Session::take_warnings)
         .def("take_notes", &Session::take_notes)
+        .def("in_box", &Session::in_box, py::arg("x"), py::arg("reading"))
+        .def("decode", &Session::decode, py::arg("x"))
         .def("evaluate_vectors", &Session::evaluate_vectors)
         .def("evaluate_forests", &Session::evaluate_forests, py::arg("forests"), py::arg("offsets"))
         .def("simulate", &Session::simulate, py::arg("vector"), py::arg("trees"), py::arg("trace"), py::arg("offsets"))

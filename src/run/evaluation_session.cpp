@@ -28,6 +28,7 @@
 #include "cic/io/settings_io.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/run/settings_lookup.hpp"
+#include "cic/sim/evaluate.hpp"
 #include "cic/sim/job_text.hpp"
 #include "cic/tree/primitives.hpp"
 #include "cic/tree/tree.hpp"
@@ -312,8 +313,38 @@ Walk EvaluationSession::simulate(const Genotype& g, bool trace) const {
         w.targets.insert(w.targets.end(), row.desired.begin(), row.desired.end());
         w.feet.insert(w.feet.end(), row.feet_on_ground.begin(), row.feet_on_ground.end());
     }
+    if (trace) w.duty_factors = sim::duty_factors(robot, r);   // assess's count, from the delayed start on
     return w;
 }
+
+std::vector<double> EvaluationSession::in_box(const std::vector<double>& x, BoxReading reading) const {
+    const Impl& im = *impl_;
+    if (!im.setup)
+        throw InputError("these settings evolve HyperGP trees: there is no gait vector to read into the unit box");
+    if (x.size() != im.setup->dimension())
+        throw InputError(fmt::format("{} values, but these settings' {} has {} (robot {})", x.size(),
+                                     im.setup->cpg ? "CPG" : "gait", im.setup->dimension(), im.setup->robot.name));
+    for (std::size_t i = 0; i < x.size(); ++i)
+        if (!std::isfinite(x[i])) throw InputError(fmt::format("value {} is {}: not a number to read", i, x[i]));
+    gait::Setup setup = *im.setup;
+    if (reading != BoxReading::Settings) {
+        const gait::Bounds b = reading == BoxReading::Reflect ? gait::Bounds::Reflect : gait::Bounds::Clamp;
+        setup.encoding.bounds = b;
+        if (setup.cpg) setup.cpg->bounds = b;
+    }
+    return setup.in_box(x);
+}
+
+sim::GaitSpec EvaluationSession::decode(const std::vector<double>& x) const {
+    const Impl& im = *impl_;
+    if (!im.setup) throw InputError("these settings evolve HyperGP trees: there is no gait vector to decode");
+    if (im.setup->cpg)
+        throw InputError("these settings' gait vector holds CPG weights (Gait.controller = cpg), not a sine gait");
+    check(Genotype{x, {}, {}}, 0);   // the unit box, as evaluate takes it
+    return im.setup->encoding.decode(x);
+}
+
+std::vector<std::string> EvaluationSession::joint_names() const { return sim::joint_names(impl_->robot()); }
 
 RunBest read_run_best(const fs::path& run_dir) {
     if (!fs::is_directory(run_dir)) throw InputError("no such run folder", run_dir.string());
