@@ -235,6 +235,7 @@ py::dict read_run_best(const std::string& folder) {
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "cic's evaluation core (use the cic package, not this module)";
+    m.attr("__version__") = CIC_VERSION;
     // cic's bad input (a settings key, a genotype) is a ValueError with cic's own one-line message;
     // a settings file found nowhere is Python's FileNotFoundError.
     py::register_exception_translator([](std::exception_ptr p) {

@@ -389,10 +389,15 @@ TEST(Install, PythonPackageImportsFromThePrefixAndScores) {
     ASSERT_TRUE(fs::exists(site / "cic" / "__init__.py")) << "no package under " << (p / "lib");
     const ScratchDir scratch("install-python");
     const Shell r = sh("cd " + q(scratch.path) + " && env -u CIC_EXECUTABLE PYTHONPATH=" + q(site) +
-                       " /usr/bin/python3 -c \"import cic; ev = cic.Evaluator('r1_gait.xml', "
+                       " /usr/bin/python3 -c \"import cic, importlib.metadata; ev = cic.Evaluator('r1_gait.xml', "
                        "set={'Simulator.sample_to': 1, 'Simulator.delayed_start': 0}); print(cic.executable()); print(ev.settings_file); "
-                       "print(len(ev.evaluate([[0.5] * ev.dimension]).fitness))\" 2>&1");
+                       "print(len(ev.evaluate([[0.5] * ev.dimension]).fitness)); "
+                       "print('version', cic.__version__, importlib.metadata.version('cic'))\" 2>&1");
     ASSERT_EQ(r.rc, 0) << r.out;
+    // A Python package to Python: its version (a dist-info), its type stubs and py.typed.
+    EXPECT_HAS(r.out, std::string("version ") + CIC_VERSION + " " + CIC_VERSION + "\n");
+    EXPECT_TRUE(fs::exists(site / "cic" / "__init__.pyi"));
+    EXPECT_TRUE(fs::exists(site / "cic" / "py.typed"));
     EXPECT_HAS(r.out, (p / "bin" / "cic").string() + "\n");
     EXPECT_HAS(r.out, (p / "share" / "cic" / "settings" / "r1_gait.xml").string() + "\n");
     EXPECT_HAS(r.out, "\n1\n");
