@@ -1,5 +1,6 @@
 """cic as a Python package (issue 57): its version and dist-info, type stubs and docstrings,
-`pip install --no-build-isolation .` (pyproject.toml, setup.py) into a venv."""
+`pip install --no-build-isolation .` (pyproject.toml, setup.py) into a venv, and
+scripts/run.sh building it with the first command."""
 
 import ast
 import importlib.metadata
@@ -109,3 +110,14 @@ def test_pip_installs_it_offline_into_a_venv_with_debians_packages(tmp_path):
                           env=env, capture_output=True, text=True)
     assert json.loads(info.stdout)["dimension"] == 37, info.stderr
 
+
+def test_run_sh_installs_and_builds_the_package():
+    # README's first command: the run set of install-deps.sh has what the package needs, and run.sh builds it.
+    packages = subprocess.run(["bash", "-c", 'eval "$(sed -n "/^RUN_PACKAGES=(/,/^)/p" scripts/install-deps.sh)"; '
+                               'echo "${RUN_PACKAGES[@]}"'], cwd=SOURCE, capture_output=True, text=True,
+                              check=True).stdout.split()
+    for p in ("pybind11-dev", "python3-dev", "python3-numpy", "python3-pandas"):
+        assert p in packages, p
+    with open(os.path.join(SOURCE, "scripts", "run.sh")) as f:
+        setup_line = next(l for l in f if "cic_setup" in l and not l.startswith("#"))
+    assert "cic_python" in setup_line.split(), setup_line
