@@ -143,11 +143,12 @@ class Evaluator:
     workers        ``cic worker`` processes (1 or N give identical arrays)
     set            {'Section.key': value} overrides, checked exactly like ``--set``
 
-    Bad input raises ValueError with cic's message. A worker that dies is replaced
-    and its job retried, as in a run (a CicWarning says so). Ctrl-C during a batch
-    raises KeyboardInterrupt and ends the workers; the next batch starts new ones.
-    One Evaluator may be shared by threads: its calls run one at a time, with the
-    GIL released while a batch runs.
+    A settings file found nowhere raises FileNotFoundError, other bad input ValueError with cic's
+    message (a gait vector outside the unit box too: in_box reads it as the run would). A worker
+    that dies is replaced and its job retried, as in a run (a CicWarning says so). Ctrl-C during a
+    batch raises KeyboardInterrupt and ends the workers; the next batch starts new ones. One
+    Evaluator may be shared by threads: its calls run one at a time, with the GIL released while a
+    batch runs.
     """
 
     def __init__(self, settings_path, workers=1, set=None):
