@@ -443,6 +443,8 @@ TEST(Install, DebianPackage) {
     // The Python package where Debian's python3 finds it, with its core module.
     EXPECT_HAS(contents.out, "./usr/lib/python3/dist-packages/cic/__init__.py\n");
     EXPECT_HAS(contents.out, "./usr/lib/python3/dist-packages/cic/_core.cpython-");
+    EXPECT_HAS(contents.out, "./usr/lib/python3/dist-packages/cic-" CIC_VERSION ".dist-info/METADATA\n");
+    EXPECT_HAS(contents.out, "./usr/lib/python3/dist-packages/cic/py.typed\n");
 #endif
     EXPECT_TRUE(contents.out.find("./usr/share/man/man1/cic.1\n") != std::string::npos ||
                 contents.out.find("./usr/share/man/man1/cic.1.gz\n") != std::string::npos)
