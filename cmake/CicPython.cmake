@@ -53,6 +53,11 @@ endmacro()
 
 function(cic_python_package)
   if(NOT CIC_HAVE_PYTHON)
+    # scripts/run.sh builds this target: without the package it only says why.
+    if(NOT CIC_SANITIZE AND NOT CIC_FUZZ)
+      add_custom_target(cic_python COMMAND ${CMAKE_COMMAND} -E echo "cic: the Python package was left out: ${_cic_py_why}"
+                        VERBATIM)
+    endif()
     return()
   endif()
   set(_pkg ${PROJECT_BINARY_DIR}/python/cic)
@@ -64,7 +69,9 @@ function(cic_python_package)
 "# Made by CMake for the build tree: the cic binary whose `cic worker` serves evaluations.
 CIC_EXECUTABLE = \"$<TARGET_FILE:cic>\"
 ")
-  file(GLOB _py CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/python/cic/*.py)
+  # The package's files: its modules, their type stubs and py.typed (PEP 561).
+  file(GLOB _py CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/python/cic/*.py ${PROJECT_SOURCE_DIR}/python/cic/*.pyi
+       ${PROJECT_SOURCE_DIR}/python/cic/py.typed)
   set(_copies)
   foreach(_f IN LISTS _py)
     get_filename_component(_n ${_f} NAME)
@@ -72,6 +79,21 @@ CIC_EXECUTABLE = \"$<TARGET_FILE:cic>\"
                        DEPENDS ${_f} VERBATIM)
     list(APPEND _copies ${_pkg}/${_n})
   endforeach()
+  # A dist-info beside the package, so that importlib.metadata (and pip list) know
+  # cic and its version, from the build tree as once installed.
+  set(_dist cic-${PROJECT_VERSION}.dist-info)
+  file(WRITE ${PROJECT_BINARY_DIR}/python/${_dist}/METADATA
+"Metadata-Version: 2.1
+Name: cic
+Version: ${PROJECT_VERSION}
+Summary: Evolve walking controllers for modular robots with HyperGP: cic's robots scored from Python
+License: LGPL-3.0-or-later
+Requires-Python: >=3.9
+Requires-Dist: numpy
+Requires-Dist: pandas
+")
+  file(WRITE ${PROJECT_BINARY_DIR}/python/${_dist}/INSTALLER "cmake\n")
+  file(WRITE ${PROJECT_BINARY_DIR}/python/${_dist}/top_level.txt "cic\n")
   add_custom_target(cic_python ALL DEPENDS ${_copies} cic_python_core cic)
 
   # Installed beside Debian's own packages: /usr/lib/python3/dist-packages for
@@ -93,6 +115,7 @@ CIC_EXECUTABLE = _os.path.normpath(_os.path.join(_os.path.dirname(_os.path.abspa
     file(INSTALL ${_py} \"$<TARGET_FILE:cic_python_core>\" DESTINATION \"\${_cic_pydir}\")
     file(INSTALL \"${PROJECT_BINARY_DIR}/generated/python_build_installed.py\" DESTINATION \"\${_cic_pydir}\"
          RENAME _build.py)
+    file(INSTALL \"${PROJECT_BINARY_DIR}/python/${_dist}\" DESTINATION \"\${_cic_pydir}/..\")
   ")
   file(GLOB _examples CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/examples/python/*.py ${PROJECT_SOURCE_DIR}/examples/python/*.m)
   install(FILES ${_examples} DESTINATION ${CMAKE_INSTALL_DATADIR}/cic/examples/python)

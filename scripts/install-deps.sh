@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # scripts/install-deps.sh [run|all]
 # Installs cic's dependencies with apt-get (Debian 12): `run`, what building
-# cic and running experiments needs (scripts/run.sh); `all` (the default), also
+# cic and its Python package and running experiments needs (scripts/run.sh); `all` (the default), also
 # what the tests, benchmarks, videos, fuzzing and the DEAP comparison use
 # (scripts/test.sh, CI). Non-interactive and idempotent: does nothing when all
 # packages are present. Runs as root, or through sudo when available.
@@ -24,6 +24,8 @@ RUN_PACKAGES=(
   nlohmann-json3-dev
   # the plots a run draws (Control.useMatlabPlot)
   gnuplot-nox
+  # the Python package (docs/python.md), built by run.sh for Debian's /usr/bin/python3
+  pybind11-dev python3-dev python3-numpy python3-pandas
 )
 MORE_PACKAGES=(
   # tests and benchmarks (file: cpack's dependency scan for the .deb; groff: the man page test)
@@ -34,11 +36,11 @@ MORE_PACKAGES=(
   clang libclang-rt-14-dev llvm
   # DEAP comparison (scripts/compare-deap.sh)
   python3-deap
-  # docs/analysis.md: a study read into pandas, a figure redrawn with matplotlib
-  python3-pandas python3-matplotlib
-  # the Python package (docs/python.md): built when these are present; its tests, and
-  # the Octave example of the JSON-lines stream
-  pybind11-dev python3-dev python3-numpy python3-pytest octave
+  # docs/analysis.md: a figure redrawn with matplotlib
+  python3-matplotlib
+  # the Python package's tests, `pip install .` into a venv (setup.py: Debian's setuptools
+  # and wheel, no network), and the Octave example of the JSON-lines stream
+  python3-pytest python3-pip python3-venv python3-setuptools python3-wheel octave
   # cic report's test: the page rendered in headless Chromium, which must fetch nothing;
   # libpng: the tests read the pixels of figures and screenshots (tests/support/png_image.hpp)
   chromium libpng-dev

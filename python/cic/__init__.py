@@ -9,9 +9,10 @@
 docs/python.md has the whole API, the JSON-lines stream (`cic eval`) and the examples.
 """
 
-from ._evaluator import CicWarning, Evaluation, Evaluator, Simulation, simulate
+from ._core import __version__
+from ._evaluator import CicNote, CicWarning, Evaluation, Evaluator, Simulation, simulate
 from ._results import Run, Study, read_run, read_study
 from ._paths import executable
 
-__all__ = ["Evaluator", "Evaluation", "Simulation", "CicWarning", "simulate", "read_run", "read_study", "Run",
-           "Study", "executable"]
+__all__ = ["Evaluator", "Evaluation", "Simulation", "CicWarning", "CicNote", "simulate", "read_run", "read_study",
+           "Run", "Study", "executable", "__version__"]

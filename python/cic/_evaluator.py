@@ -13,7 +13,29 @@ from . import _core, _paths
 
 
 class CicWarning(RuntimeWarning):
-    """Trouble that does not stop a batch: a worker replaced, a job retried or scored as failed."""
+    """Trouble that does not stop a batch: a worker replaced, a job retried or scored as failed; a float32
+    batch converted to float64."""
+
+
+class CicNote(UserWarning):
+    """A note from cic that is not trouble: which installed settings file a bare name such as
+    "r1_gait.xml" found. Silence it with warnings.filterwarnings("ignore", category=cic.CicNote)."""
+
+
+def _say_notes(session, stacklevel):
+    # cic's notes (the C++ side would print them on stderr) go through Python's warnings, so they can be silenced.
+    for line in session.take_notes():
+        warnings.warn(line, CicNote, stacklevel=stacklevel + 1)
+
+
+def _float64(arr, what):
+    """arr as float64; a float of fewer bits is converted with a CicWarning (its values are kept exactly, but
+    they are not the float64 numbers an optimiser had before rounding them to float32)."""
+    if arr.dtype.kind == "f" and arr.dtype.itemsize < 8:
+        warnings.warn(f"{what} is {arr.dtype}: converted to float64 (cic scores float64 genotypes; a float32 value is "
+                      f"rounded, so its fitness is not that of the float64 number it came from)", CicWarning,
+                      stacklevel=4)
+    return np.ascontiguousarray(arr, dtype=np.float64)
 
 
 def _overrides(set):
@@ -45,6 +67,7 @@ class Evaluation:
     """
 
     def __init__(self, d):
+        """Made by Evaluator.evaluate from the core's arrays (not meant to be built by hand)."""
         self.fitness = d["fitness"]
         self.distance = d["distance"]
         self.elevation = d["elevation"]
@@ -53,9 +76,11 @@ class Evaluation:
         self.descriptor = d.get("descriptor")
 
     def __len__(self):
+        """The number of genotypes scored."""
         return len(self.fitness)
 
     def __repr__(self):
+        """One line: how many genotypes and the best fitness."""
         best = f", best {self.fitness.max():.6g}" if len(self) else ""
         return f"<cic.Evaluation of {len(self)} genotypes{best}>"
 
@@ -81,16 +106,29 @@ class Simulation:
     feet     (n, feet)     bool: the foot (a branch end, foot_names) touched the ground during the step
 
     and fitness, distance, elevation, failed, failure as in Evaluation. Without trace the arrays have no rows.
+    duty_factors() gives each foot's duty factor as `cic assess` counts it.
     """
 
     def __init__(self, d):
+        """Made by cic.simulate and Evaluator.simulate (not meant to be built by hand)."""
+        self._duty_factors = d["duty_factors"]
         for key in ("fitness", "distance", "elevation", "failed", "failure", "time", "centre", "angles", "targets"):
             setattr(self, key, d[key])
         self.feet = d["feet"].astype(bool)
         self.joint_names = list(d["joint_names"])
         self.foot_names = list(d["foot_names"])
 
+    def duty_factors(self):
+        """Each foot's duty factor, in foot_names order: the share of the physics steps from the delayed start
+        (Simulator.delayed_start) on in which it touched the ground. `cic assess` and MAP-Elites' duty-factor
+        descriptor count exactly so. The mean of `feet` differs: it counts control steps, and from time 0,
+        while the robot is still settling. Needs the trace (simulate(..., trace=True), the default)."""
+        if len(self.time) == 0:
+            raise ValueError("duty_factors needs the trace: simulate with trace=True")
+        return self._duty_factors.copy()
+
     def __repr__(self):
+        """One line: fitness, steps, joints and feet."""
         return (f"<cic.Simulation fitness {self.fitness:.6g}, {len(self.time)} steps, "
                 f"{len(self.joint_names)} joints, {len(self.foot_names)} feet>")
 
@@ -105,17 +143,23 @@ class Evaluator:
     workers        ``cic worker`` processes (1 or N give identical arrays)
     set            {'Section.key': value} overrides, checked exactly like ``--set``
 
-    Bad input raises ValueError with cic's message. A worker that dies is replaced
-    and its job retried, as in a run (a CicWarning says so). Ctrl-C during a batch
-    raises KeyboardInterrupt and ends the workers; the next batch starts new ones.
-    One Evaluator may be shared by threads: its calls run one at a time, with the
-    GIL released while a batch runs.
+    A settings file found nowhere raises FileNotFoundError, other bad input ValueError with cic's
+    message (a gait vector outside the unit box too: in_box reads it as the run would). A worker
+    that dies is replaced and its job retried, as in a run (a CicWarning says so). Ctrl-C during a
+    batch raises KeyboardInterrupt and ends the workers; the next batch starts new ones. One
+    Evaluator may be shared by threads: its calls run one at a time, with the GIL released while a
+    batch runs.
     """
 
     def __init__(self, settings_path, workers=1, set=None):
+        """Reads and checks the settings (as ``cic --settings`` does) and the robot; the workers start with the
+        first batch. Raises FileNotFoundError for a settings file found nowhere, ValueError for bad settings,
+        a symbolic-regression experiment or workers < 1. A bare name found among the installed settings is
+        said with a CicNote warning."""
         if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)):
             raise ValueError(f"workers must be a whole number >= 1, got {workers!r}")
         self._session = _core.Session(str(settings_path), int(workers), _overrides(set), _paths.executable())
+        _say_notes(self._session, 2)
         self.form = self._session.form                  # 'vector' (gait, CPG) or 'forest' (HyperGP trees)
         self.dimension = self._session.dimension        # a vector's length, or the trees of a forest
         self.offset_count = self._session.offset_count  # Offset-HybrID's direct offsets per forest (0: none)
@@ -128,15 +172,17 @@ class Evaluator:
         self.descriptor = self._session.descriptor      # 'none' or the MapElites descriptor
         self._closed = False
 
-    # --- context manager ---------------------------------------------------------------
     def __enter__(self):
+        """The Evaluator itself: ``with cic.Evaluator(...) as ev:`` closes it at the end of the block."""
         return self
 
     def __exit__(self, *exc):
+        """Closes the Evaluator (ends its workers); exceptions go on."""
         self.close()
         return False
 
     def __del__(self):
+        """Closes the Evaluator when it is collected, should close() not have been called."""
         try:
             self.close()
         except Exception:
@@ -149,10 +195,63 @@ class Evaluator:
             self._session.close()
 
     def __repr__(self):
+        """One line: experiment, genotype form and size, settings file and workers."""
         return (f"<cic.Evaluator {self.experiment} ({self.form} of {self.dimension}) from {self.settings_file}, "
                 f"{self.workers} worker{'s' if self.workers != 1 else ''}>")
 
-    # --- scoring -------------------------------------------------------------------------
+    def _points(self, x, reading):
+        if self.vector_dimension == 0:
+            raise ValueError("these settings evolve HyperGP trees: there is no gait vector to read into the unit box")
+        if isinstance(x, (str, bytes)):
+            raise ValueError("a gait vector is numbers, not a string")
+        arr = np.asarray(x)
+        if arr.dtype.kind not in "fiu" or arr.ndim not in (1, 2):
+            raise ValueError(f"a gait vector (1-D) or a batch of them (2-D) of numbers; got dtype {arr.dtype}, "
+                             f"shape {arr.shape}")
+        rows = np.atleast_2d(_float64(arr, "the vector"))
+        out = np.array([self._session.in_box(row.tolist(), reading) for row in rows]).reshape(rows.shape)
+        return out[0] if arr.ndim == 1 else out
+
+    def in_box(self, x):
+        """The point of the unit box that the run reads `x` as (its Gait.bounds: reflect or clip; phases wrap),
+        for one vector (1-D) or a batch (2-D). ``ev.evaluate(ev.in_box(x))`` gives the fitness a run gives x,
+        bit for bit: what an optimiser that does not keep to [0, 1] (scipy's Nelder-Mead, pycma without
+        bounds) hands to evaluate. A vector inside the box comes back unchanged."""
+        return self._points(x, "settings")
+
+    def reflect(self, x):
+        """`x` read into the unit box by reflecting at its bounds (1.2 -> 0.8, -0.3 -> 0.3; phases wrap),
+        whatever the settings' Gait.bounds: the continuous reading, as Gait.bounds=reflect does."""
+        return self._points(x, "reflect")
+
+    def clip(self, x):
+        """`x` read into the unit box by clipping to its bounds (1.2 -> 1, -0.3 -> 0; phases wrap), whatever
+        the settings' Gait.bounds: as Gait.bounds=clamp does."""
+        return self._points(x, "clip")
+
+    def decode(self, x):
+        """The sine gait a gait vector in the unit box stands for, as a pandas DataFrame: one row per joint
+        (robot order), with the columns joint (its name), amplitude, phase and offset in radians (and
+        amplitude2, phase2 with Gait.secondHarmonic), and frequency in Hz (the same in every row, x[0]; also
+        in frame.attrs["frequency"]). The numbers summary.txt gives. Layout: x[0] the frequency, then per
+        joint amplitude, phase, offset [, amplitude2, phase2]."""
+        import pandas as pd
+
+        if isinstance(x, (str, bytes)):
+            raise ValueError("a gait vector is numbers, not a string")
+        arr = np.asarray(x)
+        if arr.dtype.kind not in "fiu" or arr.ndim != 1:
+            raise ValueError(f"decode takes one gait vector (1-D numbers); got dtype {arr.dtype}, shape {arr.shape}")
+        d = self._session.decode(_float64(arr, "the vector").tolist())
+        columns = {"joint": list(d["joint_names"]), "amplitude": d["amplitude"], "phase": d["phase"],
+                   "offset": d["offset"]}
+        if d["second_harmonic"]:
+            columns.update(amplitude2=d["amplitude2"], phase2=d["phase2"])
+        columns["frequency"] = np.full(len(columns["joint"]), d["frequency"])
+        frame = pd.DataFrame(columns)
+        frame.attrs["frequency"] = d["frequency"]
+        return frame
+
     def evaluate(self, batch, offsets=None):
         """Scores a batch: a 2-D array or list of unit-box vectors (gait, CPG), or a list of
         S-expression strings / lists of strings (HyperGP trees, one list per forest). With
@@ -192,7 +291,7 @@ def _vector_batch(batch, dimension):
     if arr.ndim != 2:
         hint = " (one genotype: pass [x])" if arr.ndim == 1 else ""
         raise ValueError(f"a batch of gait vectors is 2-D, one row per genotype; got {arr.ndim}-D, shape {arr.shape}{hint}")
-    return np.ascontiguousarray(arr, dtype=np.float64)
+    return _float64(arr, "the batch")
 
 
 def _forest_batch(batch):
@@ -254,7 +353,7 @@ def _simulate(session, form, genotype, trace, offsets=None):
         arr = np.asarray(genotype)
         if arr.dtype.kind not in "fiu" or arr.ndim != 1:
             raise ValueError(f"a gait genotype is a 1-D sequence of numbers; got dtype {arr.dtype}, shape {arr.shape}")
-        return Simulation(session.simulate(arr.astype(np.float64).tolist(), [], bool(trace), []))
+        return Simulation(session.simulate(_float64(arr, "the genotype").tolist(), [], bool(trace), []))
     trees = _forest_batch([genotype])[0]
     if offsets is None:
         if session.offset_count:
@@ -276,6 +375,7 @@ def simulate(settings_path, genotype, trace=True, set=None, offsets=None):
     the fitness a run would give it (bit for bit). What a fitness of your own, such as walking in a
     circle, needs. `offsets`: an Offset-HybrID genotype's direct offsets beside its trees."""
     session = _core.Session(str(settings_path), 1, _overrides(set), _paths.executable())
+    _say_notes(session, 2)
     try:
         return _simulate(session, session.form, genotype, trace, offsets)
     finally:

@@ -25,6 +25,7 @@ class Run:
     """
 
     def __init__(self, folder):
+        """Reads the run folder (see cic.read_run)."""
         self.folder = os.fspath(folder)
         best = _core.read_run_best(self.folder)
         self.form = best["form"]
@@ -41,13 +42,15 @@ class Run:
         self.stats = _read_csv(stats) if os.path.exists(stats) else None
 
     def __repr__(self):
+        """One line: the folder, the best fitness and its generation."""
         return f"<cic.Run {self.folder}: best {self.best_fitness!r} at generation {self.generation}>"
 
 
 def read_run(folder):
-    """Reads a run folder (cic --settings ...'s RUN): its best genotype and fitness, and stats.csv."""
+    """Reads a run folder (cic --settings ...'s RUN): its best genotype and fitness, and stats.csv.
+    Raises FileNotFoundError when there is no such folder, ValueError when it is not a run's."""
     if not os.path.isdir(folder):
-        raise ValueError(f"{folder}: no such run folder")
+        raise FileNotFoundError(f"{folder}: no such run folder")
     return Run(folder)
 
 
@@ -60,6 +63,7 @@ class Study:
     """
 
     def __init__(self, folder):
+        """Reads the study folder (see cic.read_study)."""
         import pandas as pd
 
         self.folder = os.fspath(folder)
@@ -87,14 +91,16 @@ class Study:
         return Run(os.path.join(self.folder, str(rows.iloc[0]["run_dir"])))
 
     def __repr__(self):
+        """One line: the folder, its runs and configurations."""
         configs = self.index["config"].nunique() if len(self.index) else 0
         return f"<cic.Study {self.folder}: {len(self.index)} runs, {configs} configurations>"
 
 
 def read_study(folder):
-    """Reads a study folder: its index and every run's statistics as pandas DataFrames."""
+    """Reads a study folder: its index and every run's statistics as pandas DataFrames. Raises
+    FileNotFoundError when there is no such folder, ValueError when it is not a study's."""
     if not os.path.isdir(folder):
-        raise ValueError(f"{folder}: no such study folder")
+        raise FileNotFoundError(f"{folder}: no such study folder")
     return Study(folder)
 
 

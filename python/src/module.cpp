@@ -16,6 +16,7 @@
 
 #include "cic/core/error.hpp"
 #include "cic/run/evaluation_session.hpp"
+#include "cic/run/settings_lookup.hpp"
 #include "cic/sim/evaluate.hpp"
 
 namespace py = pybind11;
@@ -77,6 +78,7 @@ public:
             return true;
         };
         o.warn = [this](const std::string& line) { warnings_.push_back(line); };
+        o.note = [this](const std::string& line) { notes_.push_back(line); };   // Python's warnings say them
         session_ = std::make_unique<EvaluationSession>(std::move(o));
     }
 
@@ -92,6 +94,37 @@ public:
         return s.map_elites.enabled ? sim::to_string(s.map_elites.descriptor) : "none";
     }
     std::vector<std::string> take_warnings() { return std::exchange(warnings_, {}); }
+    std::vector<std::string> take_notes() { return std::exchange(notes_, {}); }
+
+    py::array_t<double> in_box(const std::vector<double>& x, const std::string& reading) const {
+        run::BoxReading r = run::BoxReading::Settings;
+        if (reading == "reflect") r = run::BoxReading::Reflect;
+        else if (reading == "clip") r = run::BoxReading::Clip;
+        else if (reading != "settings") throw InputError("in_box: reading is settings, reflect or clip, got " + reading);
+        return vector_array(session_->in_box(x, r));
+    }
+
+    py::dict decode(const std::vector<double>& x) const {
+        const sim::GaitSpec g = session_->decode(x);
+        std::vector<double> amplitude, phase, offset, amplitude2, phase2;
+        for (const sim::GaitJoint& j : g.joints) {
+            amplitude.push_back(j.amplitude);
+            phase.push_back(j.phase);
+            offset.push_back(j.offset);
+            amplitude2.push_back(j.amplitude2);
+            phase2.push_back(j.phase2);
+        }
+        py::dict d;
+        d["frequency"] = g.frequency;
+        d["joint_names"] = session_->joint_names();
+        d["amplitude"] = vector_array(amplitude);
+        d["phase"] = vector_array(phase);
+        d["offset"] = vector_array(offset);
+        d["amplitude2"] = vector_array(amplitude2);
+        d["phase2"] = vector_array(phase2);
+        d["second_harmonic"] = session_->settings().gait.second_harmonic;
+        return d;
+    }
 
     py::dict evaluate_vectors(py::array_t<double, py::array::c_style> xs) {
         if (xs.ndim() != 2) throw InputError("a batch of vectors is a 2-D array (one row per genotype)");
@@ -138,6 +171,7 @@ public:
         d["angles"] = matrix_array(w.angles, steps, joints);
         d["targets"] = matrix_array(w.targets, steps, joints);
         d["feet"] = matrix_array(std::vector<unsigned char>(w.feet.begin(), w.feet.end()), steps, feet);
+        d["duty_factors"] = vector_array(w.duty_factors);
         return d;
     }
 
@@ -181,6 +215,7 @@ private:
     std::unique_ptr<EvaluationSession> session_;
     std::unique_ptr<py::error_already_set> pending_;   // the exception Ctrl-C raised mid-batch
     std::vector<std::string> warnings_;
+    std::vector<std::string> notes_;   // e.g. which installed settings file a bare name found
 };
 
 py::dict read_run_best(const std::string& folder) {
@@ -200,10 +235,14 @@ py::dict read_run_best(const std::string& folder) {
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "cic's evaluation core (use the cic package, not this module)";
-    // cic's bad input (a settings key, a genotype) is a ValueError with cic's own one-line message.
+    m.attr("__version__") = CIC_VERSION;
+    // cic's bad input (a settings key, a genotype) is a ValueError with cic's own one-line message;
+    // a settings file found nowhere is Python's FileNotFoundError.
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);
+        } catch (const run::SettingsNotFound& e) {
+            PyErr_SetString(PyExc_FileNotFoundError, e.what());
         } catch (const InputError& e) {
             PyErr_SetString(PyExc_ValueError, e.what());
         } catch (const Interrupted&) {
@@ -222,6 +261,9 @@ PYBIND11_MODULE(_core, m) {
         .def_property_readonly("experiment", &Session::experiment)
         .def_property_readonly("descriptor", &Session::descriptor)
         .def("take_warnings", &Session::take_warnings)
+        .def("take_notes", &Session::take_notes)
+        .def("in_box", &Session::in_box, py::arg("x"), py::arg("reading"))
+        .def("decode", &Session::decode, py::arg("x"))
         .def("evaluate_vectors", &Session::evaluate_vectors)
         .def("evaluate_forests", &Session::evaluate_forests, py::arg("forests"), py::arg("offsets"))
         .def("simulate", &Session::simulate, py::arg("vector"), py::arg("trees"), py::arg("trace"), py::arg("offsets"))

@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <system_error>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -26,6 +29,7 @@
 #include "cic/io/settings_io.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/run/settings_lookup.hpp"
+#include "cic/sim/evaluate.hpp"
 #include "cic/sim/job_text.hpp"
 #include "cic/tree/primitives.hpp"
 #include "cic/tree/tree.hpp"
@@ -35,11 +39,52 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A private folder for the effective settings the workers read.
+constexpr const char* kFolderPrefix = "cic-eval-";
+
+// A process's start time (field 22 of /proc/PID/stat, clock ticks since boot):
+// with the pid it names one process, even once the pid has been reused. Empty
+// when the process is gone.
+std::string process_start(long pid) {
+    std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+    std::string stat;
+    if (!std::getline(in, stat)) return {};
+    const auto close = stat.rfind(')');   // the command name may hold spaces and parentheses
+    if (close == std::string::npos) return {};
+    std::istringstream fields(stat.substr(close + 2));
+    std::string field;
+    for (int i = 3; i <= 22 && fields >> field; ++i)
+        if (i == 22) return field;
+    return {};
+}
+
+// Folders of sessions that were killed (SIGKILL runs no destructor): each
+// folder names its owner (pid and start time) in `owner`; one of this user's
+// whose owner is gone is removed. A folder without `owner` (being made, or by
+// an older cic) is left alone.
+void remove_orphaned_folders(const fs::path& tmp) {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(tmp, ec)) {
+        if (!e.path().filename().string().starts_with(kFolderPrefix)) continue;
+        struct stat st {};
+        if (::lstat(e.path().c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != ::getuid()) continue;
+        std::ifstream in(e.path() / "owner");
+        long pid = 0;
+        std::string start;
+        if (!(in >> pid >> start) || pid <= 0) continue;
+        if (process_start(pid) == start) continue;   // still running
+        std::error_code gone;
+        fs::remove_all(e.path(), gone);
+    }
+}
+
+// A private folder for the effective settings the workers read, its owner written in it.
 fs::path make_private_folder() {
     const char* tmp = std::getenv("TMPDIR");
-    std::string pattern = (tmp && *tmp ? std::string(tmp) : std::string("/tmp")) + "/cic-eval-XXXXXX";
+    const fs::path dir = tmp && *tmp ? fs::path(tmp) : fs::path("/tmp");
+    remove_orphaned_folders(dir);
+    std::string pattern = (dir / kFolderPrefix).string() + "XXXXXX";
     if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot make a folder for the workers' settings in " + pattern);
+    std::ofstream(fs::path(pattern) / "owner") << ::getpid() << ' ' << process_start(::getpid()) << '\n';
     return pattern;
 }
 
@@ -129,7 +174,8 @@ EvaluationSession::EvaluationSession(SessionOptions options) : impl_(std::make_u
     Impl& im = *impl_;
     im.opt = std::move(options);
     if (im.opt.workers < 1) throw InputError(fmt::format("workers must be at least 1, got {}", im.opt.workers));
-    im.found = find_settings_file(im.opt.settings_file, im.opt.worker_executable);   // the installed settings beside it
+    // As given, else among the installed settings beside the worker binary.
+    im.found = find_settings_file(im.opt.settings_file, im.opt.worker_executable, im.opt.note);
     im.settings = io::load_settings(im.found, im.opt.overrides);
     const io::Settings& s = im.settings;
     if (!io::walks_a_robot(s))
@@ -268,8 +314,38 @@ Walk EvaluationSession::simulate(const Genotype& g, bool trace) const {
         w.targets.insert(w.targets.end(), row.desired.begin(), row.desired.end());
         w.feet.insert(w.feet.end(), row.feet_on_ground.begin(), row.feet_on_ground.end());
     }
+    if (trace) w.duty_factors = sim::duty_factors(robot, r);   // assess's count, from the delayed start on
     return w;
 }
+
+std::vector<double> EvaluationSession::in_box(const std::vector<double>& x, BoxReading reading) const {
+    const Impl& im = *impl_;
+    if (!im.setup)
+        throw InputError("these settings evolve HyperGP trees: there is no gait vector to read into the unit box");
+    if (x.size() != im.setup->dimension())
+        throw InputError(fmt::format("{} values, but these settings' {} has {} (robot {})", x.size(),
+                                     im.setup->cpg ? "CPG" : "gait", im.setup->dimension(), im.setup->robot.name));
+    for (std::size_t i = 0; i < x.size(); ++i)
+        if (!std::isfinite(x[i])) throw InputError(fmt::format("value {} is {}: not a number to read", i, x[i]));
+    gait::Setup setup = *im.setup;
+    if (reading != BoxReading::Settings) {
+        const gait::Bounds b = reading == BoxReading::Reflect ? gait::Bounds::Reflect : gait::Bounds::Clamp;
+        setup.encoding.bounds = b;
+        if (setup.cpg) setup.cpg->bounds = b;
+    }
+    return setup.in_box(x);
+}
+
+sim::GaitSpec EvaluationSession::decode(const std::vector<double>& x) const {
+    const Impl& im = *impl_;
+    if (!im.setup) throw InputError("these settings evolve HyperGP trees: there is no gait vector to decode");
+    if (im.setup->cpg)
+        throw InputError("these settings' gait vector holds CPG weights (Gait.controller = cpg), not a sine gait");
+    check(Genotype{x, {}, {}}, 0);   // the unit box, as evaluate takes it
+    return im.setup->encoding.decode(x);
+}
+
+std::vector<std::string> EvaluationSession::joint_names() const { return sim::joint_names(impl_->robot()); }
 
 RunBest read_run_best(const fs::path& run_dir) {
     const report::RunGenotype g = report::read_run_genotype(run_dir.string());

@@ -16,8 +16,25 @@ namespace cic::run {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// The binary's real file: a worker path such as /proc/self/exe (what cic execs
+// for its workers, self_exec_path) is a link whose folder, /proc/self, says
+// nothing about where cic is installed.
+fs::path real_binary(const fs::path& cic_binary) {
+    if (cic_binary.empty() || cic_binary == "/proc/self/exe") return self_path();
+    if (cic_binary.string().starts_with("/proc/")) {
+        std::error_code ec;
+        const fs::path target = fs::canonical(cic_binary, ec);
+        if (!ec) return target;
+    }
+    return cic_binary;
+}
+
+} // namespace
+
 std::vector<fs::path> settings_search_folders(const fs::path& cic_binary) {
-    const fs::path exe = cic_binary.empty() ? fs::path(self_path()) : cic_binary;
+    const fs::path exe = real_binary(cic_binary);
     std::vector<fs::path> out;
     if (exe.has_parent_path())
         out.push_back((exe.parent_path() / ".." / "share" / "cic" / "settings").lexically_normal());
@@ -31,7 +48,8 @@ std::vector<fs::path> settings_search_folders(const fs::path& cic_binary) {
     return out;
 }
 
-fs::path find_settings_file(const std::string& given, const fs::path& cic_binary) {
+fs::path find_settings_file(const std::string& given, const fs::path& cic_binary,
+                            const std::function<void(const std::string&)>& note) {
     if (given.empty()) throw InputError("--settings: the file name is empty");
     const fs::path p(given);
     std::error_code ec;
@@ -49,7 +67,9 @@ fs::path find_settings_file(const std::string& given, const fs::path& cic_binary
             if (fs::is_regular_file(candidate, ec)) {
                 fs::path full = fs::weakly_canonical(candidate, ec);
                 if (ec) full = candidate;
-                std::cerr << "cic: settings " << given << ": using " << full.string() << '\n';
+                const std::string line = "cic: settings " + given + ": using " + full.string();
+                if (note) note(line);
+                else std::cerr << line << '\n';
                 return full;
             }
             looked += ", " + candidate.string();
@@ -58,8 +78,8 @@ fs::path find_settings_file(const std::string& given, const fs::path& cic_binary
         }
     }
     const std::string near = io::nearest_name(p.filename().string(), shipped);
-    throw InputError("settings file " + given + " not found; looked in: " + looked +
-                     (near.empty() ? "" : "; did you mean " + near + "?"));
+    throw SettingsNotFound("settings file " + given + " not found; looked in: " + looked +
+                           (near.empty() ? "" : "; did you mean " + near + "?"));
 }
 
 } // namespace cic::run

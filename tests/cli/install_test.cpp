@@ -389,10 +389,15 @@ TEST(Install, PythonPackageImportsFromThePrefixAndScores) {
     ASSERT_TRUE(fs::exists(site / "cic" / "__init__.py")) << "no package under " << (p / "lib");
     const ScratchDir scratch("install-python");
     const Shell r = sh("cd " + q(scratch.path) + " && env -u CIC_EXECUTABLE PYTHONPATH=" + q(site) +
-                       " /usr/bin/python3 -c \"import cic; ev = cic.Evaluator('r1_gait.xml', "
+                       " /usr/bin/python3 -c \"import cic, importlib.metadata; ev = cic.Evaluator('r1_gait.xml', "
                        "set={'Simulator.sample_to': 1, 'Simulator.delayed_start': 0}); print(cic.executable()); print(ev.settings_file); "
-                       "print(len(ev.evaluate([[0.5] * ev.dimension]).fitness))\" 2>&1");
+                       "print(len(ev.evaluate([[0.5] * ev.dimension]).fitness)); "
+                       "print('version', cic.__version__, importlib.metadata.version('cic'))\" 2>&1");
     ASSERT_EQ(r.rc, 0) << r.out;
+    // A Python package to Python: its version (a dist-info), its type stubs and py.typed.
+    EXPECT_HAS(r.out, std::string("version ") + CIC_VERSION + " " + CIC_VERSION + "\n");
+    EXPECT_TRUE(fs::exists(site / "cic" / "__init__.pyi"));
+    EXPECT_TRUE(fs::exists(site / "cic" / "py.typed"));
     EXPECT_HAS(r.out, (p / "bin" / "cic").string() + "\n");
     EXPECT_HAS(r.out, (p / "share" / "cic" / "settings" / "r1_gait.xml").string() + "\n");
     EXPECT_HAS(r.out, "\n1\n");
@@ -438,6 +443,8 @@ TEST(Install, DebianPackage) {
     // The Python package where Debian's python3 finds it, with its core module.
     EXPECT_HAS(contents.out, "./usr/lib/python3/dist-packages/cic/__init__.py\n");
     EXPECT_HAS(contents.out, "./usr/lib/python3/dist-packages/cic/_core.cpython-");
+    EXPECT_HAS(contents.out, "./usr/lib/python3/dist-packages/cic-" CIC_VERSION ".dist-info/METADATA\n");
+    EXPECT_HAS(contents.out, "./usr/lib/python3/dist-packages/cic/py.typed\n");
 #endif
     EXPECT_TRUE(contents.out.find("./usr/share/man/man1/cic.1\n") != std::string::npos ||
                 contents.out.find("./usr/share/man/man1/cic.1.gz\n") != std::string::npos)
@@ -526,4 +533,8 @@ TEST(SettingsLookup, GivenPathWinsThenInstalledThenSourceTree) {
     }
     // An absolute path is never looked up elsewhere.
     EXPECT_THROW(cic::run::find_settings_file((dir / "r1_settings.xml").string()), cic::InputError);
+    // The path cic execs for its workers (cic eval's) stands for the file it names, not /proc/share/cic.
+    EXPECT_EQ(cic::run::settings_search_folders("/proc/self/exe"), cic::run::settings_search_folders());
+    EXPECT_EQ(cic::run::find_settings_file("r1_settings.xml", "/proc/self/exe"),
+              fs::canonical(fs::path(CIC_SOURCE_DIR) / "settings/r1_settings.xml"));
 }

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import cic
-from conftest import SOURCE, children_of
+from conftest import CIC, SOURCE, children_of
 
 R1_GAIT = os.path.join(SOURCE, "settings", "r1_gait.xml")
 QUICK = {"Simulator.sample_to": 3, "Simulator.delayed_start": 0.5}
@@ -194,8 +194,6 @@ def test_bad_settings_raise_value_error_naming_the_key():
         cic.Evaluator(R1_GAIT, set={"Gait.evaluation": 100})
     with pytest.raises(ValueError, match="sample_step"):
         cic.Evaluator(R1_GAIT, set={"Simulator.sample_step": -1})
-    with pytest.raises(ValueError, match="no-such-settings.xml"):
-        cic.Evaluator("no-such-settings.xml")
     with pytest.raises(ValueError, match="workers"):
         cic.Evaluator(R1_GAIT, workers=0)
     with pytest.raises(ValueError, match="symbolic regression"):
@@ -281,3 +279,151 @@ def test_ctrl_c_during_a_batch_raises_keyboard_interrupt_and_leaves_no_worker(tm
     assert p.returncode == 0, out
     assert "interrupted 0" in out, out
     assert "again 1" in out, out
+
+
+# --- Python's conventions (issue 57) ----------------------------------------------------
+
+def test_a_missing_file_is_file_not_found_and_other_bad_input_stays_value_error(tmp_path):
+    with pytest.raises(FileNotFoundError, match="no-such-settings.xml.*not found"):
+        cic.Evaluator("no-such-settings.xml")
+    with pytest.raises(FileNotFoundError, match="not found"):
+        cic.simulate(str(tmp_path / "gone.xml"), np.full(37, 0.5))
+    with pytest.raises(FileNotFoundError):
+        cic.read_run(tmp_path / "no-run")
+    with pytest.raises(FileNotFoundError):
+        cic.read_study(tmp_path / "no-study")
+    with pytest.raises(ValueError, match="not a regular file"):
+        cic.Evaluator(str(tmp_path))   # there, but not a settings file: bad input
+    with pytest.raises(ValueError):
+        cic.read_run(tmp_path)   # a folder, but no run's
+
+
+def test_the_settings_a_bare_name_found_are_a_cic_note_that_can_be_silenced(capfd):
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        with cic.Evaluator("r1_gait.xml", set=QUICK) as ev:
+            assert os.path.samefile(ev.settings_file, R1_GAIT)
+        cic.simulate("r1_gait.xml", np.full(37, 0.5), trace=False, set=QUICK)
+    notes = [str(w.message) for w in caught if issubclass(w.category, cic.CicNote)]
+    assert len(notes) == 2 and all("r1_gait.xml: using" in n for n in notes), notes
+    assert all(w.filename == __file__ for w in caught)   # said at the caller's line
+    assert capfd.readouterr().err == ""   # not printed by C++ where warnings cannot reach it
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        warnings.filterwarnings("ignore", category=cic.CicNote)
+        cic.Evaluator("r1_gait.xml", set=QUICK).close()
+    assert caught == []
+
+
+def test_a_killed_sessions_folder_is_removed_by_the_next_start(tmp_path, monkeypatch):
+    script = textwrap.dedent(f"""
+        import time, cic
+        ev = cic.Evaluator({R1_GAIT!r})
+        print("ready", flush=True)
+        time.sleep(300)
+    """)
+    p = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True,
+                         env=dict(os.environ, TMPDIR=str(tmp_path)))
+    try:
+        assert p.stdout.readline().strip() == "ready"
+        theirs = list(tmp_path.glob("cic-eval-*"))
+        assert len(theirs) == 1
+        monkeypatch.setenv("TMPDIR", str(tmp_path))
+        cic.Evaluator(R1_GAIT, set=QUICK).close()
+        assert theirs[0].exists()   # a live session's folder is its own
+    finally:
+        p.kill()   # SIGKILL: no destructor, no atexit
+        p.wait()
+    assert theirs[0].exists()
+    with cic.Evaluator(R1_GAIT, set=QUICK):
+        mine = list(tmp_path.glob("cic-eval-*"))
+        assert len(mine) == 1 and mine != theirs
+    assert list(tmp_path.glob("cic-eval-*")) == []
+
+
+def test_a_float32_batch_is_converted_with_a_warning(gait_ev):
+    x = np.random.default_rng(9).random((2, 37))
+    x32 = x.astype(np.float32)
+    with pytest.warns(cic.CicWarning, match="float32.*converted to float64"):
+        got = gait_ev.evaluate(x32)
+    want = gait_ev.evaluate(x32.astype(np.float64))   # the float32 values, exactly
+    assert (bits(got.fitness) == bits(want.fitness)).all()
+    with pytest.warns(cic.CicWarning, match="float32"):
+        gait_ev.simulate(x32[0], trace=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")   # float64 and integers: nothing to say
+        gait_ev.evaluate(x)
+        gait_ev.evaluate(np.zeros((1, 37), dtype=np.int64))
+
+
+# --- the genotype, for people who optimise it (issue 57) ---------------------------------
+
+def test_a_point_outside_the_box_is_read_as_the_run_reads_it(gait_ev):
+    rng = np.random.default_rng(2)
+    x = rng.random(37) * 1.6 - 0.3   # what scipy's Nelder-Mead or pycma without bounds try
+    x[1], x[2], x[4] = 1.2, -0.3, 1.5   # an amplitude, a phase, an amplitude
+    with pytest.raises(ValueError, match="outside the unit box"):
+        gait_ev.evaluate([x])
+    inside = gait_ev.in_box(x)   # r1_gait.xml: Gait.bounds reflect
+    assert ((inside >= 0) & (inside <= 1)).all()
+    assert (bits(inside) == bits(gait_ev.reflect(x))).all()
+    assert inside[1] == pytest.approx(0.8) and inside[4] == pytest.approx(0.5)   # mirrored
+    assert inside[2] == pytest.approx(0.7)   # a phase wraps (periodic)
+    clipped = gait_ev.clip(x)
+    assert (clipped[1], clipped[4]) == (1.0, 1.0) and clipped[2] == pytest.approx(0.7)
+    assert np.isfinite(gait_ev.evaluate([inside]).fitness[0])
+    y = rng.random(37)
+    assert (bits(gait_ev.in_box(y)) == bits(y)).all()   # inside the box nothing changes
+    both = gait_ev.in_box(np.stack([x, y]))
+    assert both.shape == (2, 37) and (bits(both[0]) == bits(inside)).all()
+    with cic.Evaluator(R1_GAIT, set=dict(QUICK, **{"Gait.bounds": "clamp"})) as clamp:
+        assert (bits(clamp.in_box(x)) == bits(clipped)).all()
+    with pytest.raises(ValueError, match="36 values"):
+        gait_ev.in_box(np.zeros(36))
+
+
+def test_the_run_reads_its_points_so_in_box_gives_the_runs_fitness(runs):
+    # read_run hands the champion over in the box (the optimiser's own point may be outside it):
+    # in_box of a point is that point's reading, so re-reading changes nothing.
+    run = cic.read_run(runs["gait"])
+    with cic.Evaluator(run.settings) as ev:
+        assert (bits(ev.in_box(run.best_genotype)) == bits(run.best_genotype)).all()
+        assert bits(ev.evaluate(ev.in_box([run.best_genotype])).fitness[0]) == bits(run.best_fitness)
+
+
+def test_decode_gives_the_gait_as_summary_txt_does(runs):
+    run = cic.read_run(runs["gait"])
+    with cic.Evaluator(run.settings) as ev:
+        frame = ev.decode(run.best_genotype)
+        x = np.random.default_rng(4).random(37)
+        layout = ev.decode(x)
+        with pytest.raises(ValueError, match="outside the unit box"):
+            ev.decode(np.full(37, 1.5))
+    assert list(frame.columns) == ["joint", "amplitude", "phase", "offset", "frequency"]
+    assert len(frame) == 12 and frame["joint"].is_unique
+    # The layout: x[0] the frequency, then per joint amplitude, phase, offset.
+    assert layout.attrs["frequency"] == pytest.approx(0.1 + x[0] * (3.0 - 0.1))
+    assert (layout["frequency"] == layout.attrs["frequency"]).all()
+    assert np.allclose(layout["amplitude"], x[1::3] * np.pi / 2)
+    assert np.allclose(layout["phase"], x[2::3] * 2 * np.pi)
+    assert np.allclose(layout["offset"], (2 * x[3::3] - 1) * np.pi / 2)
+    # summary.txt's line for the same champion, to its printed digits.
+    with open(os.path.join(runs["gait"], "summary.txt")) as f:
+        line = next(l for l in f if "per joint amplitude/phase/offset" in l)
+    hz = float(line.split("frequency ")[1].split(" Hz")[0])
+    assert f"{frame.attrs['frequency']:.4f}" == f"{hz:.4f}"
+    joints = [g.split() for g in line.split("[")[1:]]
+    assert [[f"{v:.3f}" for v in row] for row in frame[["amplitude", "phase", "offset"]].to_numpy()] == \
+        [[g.rstrip("]") for g in j[:3]] for j in joints]
+
+
+def test_duty_factors_are_cic_assess_to_the_digit(runs):
+    run = cic.read_run(runs["gait"])
+    walk = cic.simulate(run.settings, run.best_genotype)
+    p = subprocess.run([CIC, "assess", runs["gait"]], capture_output=True, text=True, check=True)
+    duty = dict(f.split(":") for f in p.stdout.splitlines()[1].rsplit(",", 1)[1].split())
+    got = walk.duty_factors()
+    assert got.shape == (len(walk.foot_names),)
+    assert [f"{v:.3f}" for v in got] == [duty[name] for name in walk.foot_names], (got, duty)
+    with pytest.raises(ValueError, match="trace=True"):
+        cic.simulate(run.settings, run.best_genotype, trace=False).duty_factors()

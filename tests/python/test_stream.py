@@ -67,6 +67,21 @@ def test_a_switch_hybrid_stream_takes_its_gait_and_its_trees(runs):
     assert "not beside a gait vector" in json.loads(p.stdout)["error"]
 
 
+def test_readmes_line_finds_the_settings_by_bare_name_from_any_folder(tmp_path):
+    # README.md's line, verbatim, run in an empty folder with the build's cic first on PATH.
+    with open(os.path.join(SOURCE, "README.md")) as f:
+        line = next(l for l in f if l.startswith("cic eval --settings"))
+    command = line.split("#")[0].strip()
+    assert command == "cic eval --settings r1_gait.xml < genotypes.jsonl"
+    (tmp_path / "genotypes.jsonl").write_text(json.dumps({"id": 1, "genotype": [0.5] * 37}) + "\n")
+    env = dict(os.environ, PATH=os.path.dirname(os.path.abspath(CIC)) + os.pathsep + os.environ["PATH"])
+    p = subprocess.run(["bash", "-c", command], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    reply = json.loads(p.stdout)
+    assert reply["id"] == 1 and "fitness" in reply, reply
+    assert "r1_gait.xml: using " + os.path.realpath(R1_GAIT) in p.stderr, p.stderr
+
+
 def test_a_bare_vector_is_a_genotype_too():
     rc, replies, _ = stream([json.dumps([0.5] * 37)])
     assert rc == 0 and "fitness" in replies[0] and "id" not in replies[0]

@@ -5,7 +5,9 @@
 // evaluates batches with the job texts and `cic worker` processes a run of
 // those settings uses, so every fitness is a run's to the last bit, for any
 // number of workers. Nothing is written but a private copy of the effective
-// settings for the workers, removed when the session ends.
+// settings for the workers, in $TMPDIR/cic-eval-XXXXXX, removed when the
+// session ends; a folder whose session was killed (SIGKILL: no destructor ran)
+// is removed by the next session's start.
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -15,6 +17,7 @@
 #include <vector>
 
 #include "cic/io/settings.hpp"
+#include "cic/sim/controller.hpp"
 
 namespace cic::run {
 
@@ -55,7 +58,15 @@ struct Walk {
     std::vector<double> angles;             // steps x joints, rad
     std::vector<double> targets;            // steps x joints, rad (after the simulator's clamp)
     std::vector<unsigned char> feet;        // steps x feet: 1 = touched the ground in that step
+    // Each foot's duty factor as `cic assess` gives it (sim::duty_factors: the
+    // physics steps from the delayed start on); empty without the trace.
+    std::vector<double> duty_factors;
 };
+
+// How in_box reads a point outside the unit box: as the settings' Gait.bounds
+// does (the run's own reading), or by reflecting or clipping it. Phases wrap
+// in every case (they are periodic).
+enum class BoxReading { Settings, Reflect, Clip };
 
 struct SessionOptions {
     std::string settings_file;               // as given: found like --settings (installed settings too)
@@ -64,12 +75,16 @@ struct SessionOptions {
     std::string worker_executable;           // the cic binary that serves `cic worker`
     std::function<bool()> interrupted = {};  // asked during a batch (Ctrl-C); true throws cic::Interrupted
     std::function<void(const std::string&)> warn = [](const std::string&) {};   // a replaced worker, a failed job
+    // Notes that are not trouble: which installed settings file a bare name found
+    // (empty: printed on stderr, as cic --settings does).
+    std::function<void(const std::string&)> note = {};
 };
 
 class EvaluationSession {
 public:
-    // Throws cic::InputError for bad settings, a symbolic-regression experiment
-    // (not a robot), or workers < 1; std::runtime_error when workers cannot start.
+    // Throws run::SettingsNotFound for a settings file found nowhere, cic::InputError
+    // for bad settings, a symbolic-regression experiment (not a robot), or
+    // workers < 1; std::runtime_error when workers cannot start.
     explicit EvaluationSession(SessionOptions options);
     ~EvaluationSession();
     EvaluationSession(const EvaluationSession&) = delete;
@@ -102,6 +117,19 @@ public:
     // One evaluation in this process, with the trace when asked: the same
     // simulation a worker runs (each evaluation resets ODE's global state).
     Walk simulate(const Genotype& genotype, bool trace) const;
+
+    // The point of the unit box a gait or CPG vector `x` is read as (gait::Setup::in_box):
+    // with BoxReading::Settings, the point whose fitness is the fitness a run gives
+    // x, bit for bit. Throws cic::InputError for settings without gait vectors, or
+    // the wrong length or a non-finite value.
+    std::vector<double> in_box(const std::vector<double>& x, BoxReading reading) const;
+
+    // The sine gait a gait vector decodes to (frequency, each joint's amplitude,
+    // phase, offset; summary.txt's numbers). Throws cic::InputError for CPG or
+    // HyperGP-only settings and for a vector these settings cannot take.
+    sim::GaitSpec decode(const std::vector<double>& x) const;
+    // The actuated joints' names, in controller order (a gait vector's joint order).
+    std::vector<std::string> joint_names() const;
 
     // Ends the workers now (the destructor does too); evaluate() after it throws.
     void close();
