@@ -25,6 +25,7 @@ void add_sweep_command(Command& app, CommandContext& ctx);      // cmd_sweep.cpp
 void add_assess_command(Command& app, CommandContext& ctx);     // cmd_assess.cpp
 void add_resume_command(Command& app, CommandContext& ctx);     // cmd_resume.cpp
 void add_export_command(Command& app, CommandContext& ctx);     // cmd_export.cpp
+void add_verify_command(Command& app, CommandContext& ctx);     // cmd_verify.cpp
 void add_eval_command(Command& app, CommandContext& ctx);       // cmd_eval.cpp
 void add_report_command(Command& app, CommandContext& ctx);     // cmd_report.cpp
 void add_robot_command(Command& app, CommandContext& ctx);      // cmd_robot.cpp
