@@ -56,7 +56,8 @@ void edit_checkpoint(const fs::path& run, const std::string& last, const std::fu
     replace_file(run / "populations" / last, text);
 }
 
-// A checkpoint with no contentHash (a gait file's is optional): loaded, with the replay as proof.
+// A checkpoint in the format of the files today's runs in flight hold (issue 56):
+// version 1, no contentHash over the file; loaded, with the replay as proof.
 std::string old_format(std::string text) {
     text = std::regex_replace(text, std::regex(" contentHash=\"[0-9a-f]+\""), "");
     return std::regex_replace(text, std::regex(" version=\"2\""), " version=\"1\"", std::regex_constants::format_first_only);
@@ -154,8 +155,10 @@ TEST(RunHistory, ACheckpointThatDisagreesWithItsFolderIsRefused) {
     const std::string at0 = std::regex_replace(population, std::regex(" generation=\"2\""), " generation=\"0\"");
     replace_file(run / "population.xml", at0);
     expect_refused(dir, run, "--generations 2", "differs from the run's last checkpoint");
-    // ... and in its twin too (as an edit through the hard link does): it is not
-    // the checkpoint its name says.
+    // ... and in its twin too (written through the hard link): refused by the
+    // content hash, and in a file of the old format with none, by the folder.
+    edit_checkpoint(run, "gen-0002.xml", [&](std::string) { return at0; });
+    expect_refused(dir, run, "--generations 2", "does not match what the population file holds (edited by hand?)");
     edit_checkpoint(run, "gen-0002.xml", [&](std::string) { return old_format(at0); });
     expect_refused(dir, run, "--generations 2", "says it is number 0");
     // The evaluation counter edited in both: stats.csv's row disagrees.
