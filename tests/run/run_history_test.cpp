@@ -228,3 +228,55 @@ TEST(RunHistory, AnEditedHandoverIsRefused) {
     expect_refused(dir, run, "--set Gait.evaluations=80", "the HyperGP phase's last checkpoint");
     fs::remove_all(dir);
 }
+
+// The runs in flight hold checkpoints of format version 1 (written at f1f72c3):
+// they resume, their champion's replay the proof, to the bytes of an unbroken run.
+TEST(RunHistory, AnOldFormatCheckpointResumes) {
+    const fs::path dir = temp_dir("history-old");
+    const fs::path straight = run_of(dir, "straight", symreg(5)), part = run_of(dir, "part", symreg(3));
+    edit_checkpoint(part, "gen-0002.xml", [](std::string t) { return old_format(t); });
+    ASSERT_NE(read_text(part / "population.xml").find(" version=\"1\""), std::string::npos);
+    ASSERT_EQ(run_command("--quiet resume " + part.string() + " --until 5", dir / "r.log"), 0) << read_text(dir / "r.log");
+    EXPECT_EQ(file_hash(part / "population.xml"), file_hash(straight / "population.xml"));
+    const std::string gait = (fs::path(CIC_SOURCE_DIR) / "settings" / "r1_gait.xml").string();
+    auto gait_run = [&](const std::string& name, int evaluations) {
+        EXPECT_EQ(run_command("--quiet --settings " + gait + " --set Gait.populationSize=7 --set Gait.evaluations=" +
+                                  std::to_string(evaluations) +
+                                  " --set Simulator.sample_to=1 --set Simulator.delayed_start=0.5 --output " +
+                                  (dir / name).string(),
+                              dir / (name + ".log")),
+                  0);
+        return cic::testing::only_run(dir / name);
+    };
+    const fs::path g_straight = gait_run("g-straight", 28), g_part = gait_run("g-part", 14);
+    edit_checkpoint(g_part, "gen-0001.xml", [](std::string t) {   // version 1 with its own (older) hash gone
+        return old_format(t);
+    });
+    ASSERT_EQ(run_command("--quiet resume " + g_part.string() + " --set Gait.evaluations=28", dir / "g.log"), 0)
+        << read_text(dir / "g.log");
+    EXPECT_EQ(file_hash(g_part / "population.xml"), file_hash(g_straight / "population.xml"));
+    fs::remove_all(dir);
+}
+
+// An old gait checkpoint without <origin>, made on R2, in an R1 run's folder:
+// its champion does not replay on R1 (the origin could only note its absence).
+TEST(RunHistory, AnOldCheckpointOfAnotherRobotDoesNotReplay) {
+    const fs::path dir = temp_dir("history-robot");
+    const std::string gait = (fs::path(CIC_SOURCE_DIR) / "settings" / "r1_gait.xml").string();
+    auto gait_run = [&](const std::string& name, int robot) {
+        EXPECT_EQ(run_command("--quiet --settings " + gait + " --set Gait.populationSize=7 --set Gait.evaluations=14"
+                              " --set Simulator.robot_type=" + std::to_string(robot) +
+                                  " --set Simulator.sample_to=1 --set Simulator.delayed_start=0.5 --output " +
+                                  (dir / name).string(),
+                              dir / (name + ".log")),
+                  0);
+        return cic::testing::only_run(dir / name);
+    };
+    const fs::path r1 = gait_run("r1", 1), r2 = gait_run("r2", 2);
+    const std::string foreign =
+        std::regex_replace(old_format(read_text(r2 / "population.xml")), std::regex("\\s*<origin[\\s\\S]*?</origin>"), "");
+    ASSERT_EQ(foreign.find("<origin"), std::string::npos);
+    edit_checkpoint(r1, "gen-0001.xml", [&](std::string) { return foreign; });
+    expect_refused(dir, r1, "--set Gait.evaluations=21", "does not replay");
+    fs::remove_all(dir);
+}
