@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
     add_transfer_command(root, ctx);
     add_resume_command(root, ctx);
     add_export_command(root, ctx);
+    add_verify_command(root, ctx);
     add_eval_command(root, ctx);
     add_report_command(root, ctx);
     add_robot_command(root, ctx);

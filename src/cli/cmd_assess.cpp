@@ -52,6 +52,10 @@ void add_assess_command(Command& app, CommandContext& ctx) {
             }
             for (const std::string& input : inputs) {
                 const auto items = report::replay(input, opts->cell.empty() ? "best" : "cell:" + opts->cell, 1, 10.0, true);
+                if (const auto& item = items.at(0); item.replayed_fitness != item.stored_fitness)
+                    std::cerr << fmt::format("cic assess: warning: {}: {}'s stored fitness {:.17g} does not replay: "
+                                             "the replay gives {:.17g} (cic verify RUN checks every value)\n",
+                                             input, item.label, item.stored_fitness, item.replayed_fitness);
                 const report::GaitAssessment a = report::assess_gait(items.at(0), opts->shaking_above);
                 std::string duty;   // "foot:fraction" per foot, space-separated
                 for (std::size_t f = 0; f < a.foot_names.size(); ++f)

@@ -36,6 +36,7 @@ void add_export_command(Command& app, CommandContext& ctx) {
                     if (report::is_study_folder(i))
                         if (const std::string note = report::runs_missing_note(report::read_study_index(i)); !note.empty())
                             std::cerr << "cic export: " << note << '\n';
+            r.warn = [](const std::string& line) { std::cerr << "cic export: warning: " << line << '\n'; };
             const std::string csv = report::export_individuals(r);
             if (opts->out.empty()) {
                 std::cout << csv;

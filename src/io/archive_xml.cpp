@@ -12,13 +12,17 @@
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/sim/evaluate.hpp"
+#include "content_hash.hpp"
 #include "xml_numbers.hpp"
 
 namespace cic::io {
 namespace {
 
 constexpr const char* kFormat = "cic-archive";
-constexpr int kVersion = 1;
+// Version 2 (issue 56) adds <archive contentHash>, over every value the file
+// holds (counters, random state, origin, emitter state); version 1 files load
+// as before, their best elite's replay the proof of their fitness values.
+constexpr int kVersion = 2;
 
 using detail::attribute;
 using detail::exact;
@@ -65,9 +69,9 @@ ArchiveElite read_elite(const xml::Node& e, const gp::GridSpec& grid, bool& gait
         if (v < 0.0 || v > 1.0)
             throw e.error(fmt::format("<elite cell=\"{}\"> has parameter {} outside the unit box [0, 1]", a.cell, exact(v)));
     if (const auto h = e.attribute("hash"); h && *h != elite_hash(a))
-        throw e.error(fmt::format("<elite cell=\"{}\" hash=\"{}\"> does not match its fitness, descriptor and solution ({}; "
-                                  "edited by hand?): an archive's elites cannot be re-evaluated in place",
-                                  a.cell, *h, elite_hash(a)));
+        throw e.error(fmt::format("<elite cell=\"{}\" hash=\"{}\"> does not match its fitness, descriptor and solution "
+                                  "(edited by hand?): an archive's elites cannot be re-evaluated in place",
+                                  a.cell, *h));   // never the expected value: pasted in, it would make any edit pass
     return a;
 }
 
@@ -76,9 +80,11 @@ ArchiveFile read_archive(const xml::Document& doc) {
     const auto root = doc.root();
     if (root.name() != "archive" || root.attribute("format").value_or("") != kFormat)
         throw root.error("not a cic MAP-Elites archive (expected <archive format=\"cic-archive\">)");
-    if (attribute<int>(root, "version") != kVersion)
+    const int version = attribute<int>(root, "version");
+    if (version != 1 && version != kVersion)
         throw root.error("archive version " + *root.attribute("version") + " is not supported (this cic reads " +
-                         std::to_string(kVersion) + ")");
+                         "1 and " + std::to_string(kVersion) + ")");
+
     ArchiveFile a;
     a.line = root.line();
     a.experiment = root.attribute("experiment").value_or("");
@@ -142,6 +148,8 @@ ArchiveFile read_archive(const xml::Document& doc) {
     if (static_cast<long>(a.elites.size()) > a.evaluations - a.failed)
         throw root.error(fmt::format("<archive> holds {} elites but only {} successful evaluations (evaluations - failed)",
                                      a.elites.size(), a.evaluations - a.failed));
+    // Last: what is wrong with a value is said first, and a hand edit after.
+    if (version >= 2) detail::check_document_hash(root, "MAP-Elites archive");
     return a;
 }
 
@@ -205,6 +213,7 @@ std::string to_xml(const ArchiveFile& a) {
         auto em = root.add_child("emitter", a.emitter_state);
         em.set_attribute("name", a.emitter);
     }
+    root.set_attribute(detail::kContentHash, detail::document_hash(root));
     return doc.to_string();
 }
 

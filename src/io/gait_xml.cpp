@@ -12,13 +12,17 @@
 #include "cic/core/hash.hpp"
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
+#include "content_hash.hpp"
 #include "xml_numbers.hpp"
 
 namespace cic::io {
 namespace {
 
 constexpr const char* kFormat = "cic-gait";
-constexpr int kVersion = 1;
+// Version 2 (issue 56): contentHash is over every value the file holds (origin
+// and digest included) and required; version 1's, over the search's state
+// only and optional, is still checked in the files that have one.
+constexpr int kVersion = 2;
 
 using detail::attribute;
 using detail::exact;
@@ -69,7 +73,6 @@ std::string to_xml(const GaitFile& g) {
     root.set_attribute("generation", std::to_string(g.generation));
     root.set_attribute("evaluations", std::to_string(g.evaluations));
     root.set_attribute("dimension", std::to_string(g.dimension));
-    root.set_attribute("contentHash", content_hash(g));
     if (g.origin) write_origin(root, *g.origin);
     write_point(root, "champion", g.champion);
     auto list = root.add_element("candidates");
@@ -89,6 +92,7 @@ std::string to_xml(const GaitFile& g) {
         h.set_attribute("generation", std::to_string(g.handover->generation));
         h.set_attribute("evaluations", std::to_string(g.handover->evaluations));
     }
+    root.set_attribute(detail::kContentHash, detail::document_hash(root));
     return doc.to_string();
 }
 
@@ -100,9 +104,11 @@ GaitFile read_gait(const xml::Document& doc) {
     const auto root = doc.root();
     if (root.name() != "gaitRun" || root.attribute("format").value_or("") != kFormat)
         throw root.error("not a cic gait checkpoint (expected <gaitRun format=\"cic-gait\">)");
-    if (attribute<int>(root, "version") != kVersion)
+    const int version = attribute<int>(root, "version");
+    if (version != 1 && version != kVersion)
         throw root.error("gait checkpoint version " + *root.attribute("version") + " is not supported (this cic reads " +
-                         std::to_string(kVersion) + ")");
+                         "1 and " + std::to_string(kVersion) + ")");
+
     GaitFile g;
     g.optimizer = root.attribute("optimizer").value_or("");
     g.settings_digest = root.attribute("settingsDigest").value_or("");
@@ -185,9 +191,11 @@ GaitFile read_gait(const xml::Document& doc) {
         throw root.error("<restarts populationSize=\"" + std::to_string(g.restarts->population_size) + "\"> but " +
                          std::to_string(g.population.size()) + " candidates");
     // An edited point or history value would be believed on resume: refuse it.
-    if (const auto h = root.attribute("contentHash"); h && *h != content_hash(g))
-        throw root.error("<gaitRun contentHash=\"" + *h + "\"> does not match the champion, candidates and history (" +
-                         content_hash(g) + "; edited by hand?): a gait checkpoint cannot be re-evaluated in part");
+    if (version >= 2) detail::check_document_hash(root, "gait checkpoint");
+    if (const auto h = root.attribute("contentHash"); version == 1 && h && *h != content_hash(g))
+        // Never the expected value: pasted in, it would make any edit pass.
+        throw root.error("<gaitRun contentHash=\"" + *h + "\"> does not match the champion, candidates and history "
+                         "(edited by hand?): a gait checkpoint cannot be re-evaluated in part");
     return g;
 }
 

@@ -12,13 +12,19 @@
 #include "cic/io/strict_xml.hpp"
 #include "cic/io/xml.hpp"
 #include "cic/gp/dedup.hpp"
+#include "content_hash.hpp"
 #include "xml_numbers.hpp"
 
 namespace cic::io {
 namespace {
 
 constexpr const char* kFormat = "cic-population";
-constexpr int kVersion = 1;
+// Version 2 (issue 56) adds <population contentHash>, over every value but the
+// trees and offsets (an individual edited there is evaluated again, its own
+// hash tells it apart); version 1 files load as before, their champion's
+// replay (report/verify.hpp) the proof of their fitness values.
+constexpr int kVersion = 2;
+const std::initializer_list<std::string_view> kFreeText = {"tree", "offsets"};
 
 using detail::exact;
 
@@ -219,6 +225,7 @@ std::string to_xml(const PopulationFile& p) {
         for (const auto& t : ind->genotype) n.add_child("tree", t.to_string());
         if (!ind->direct.empty()) n.add_child("offsets", detail::exact_list(ind->direct));
     }
+    root.set_attribute(detail::kContentHash, detail::document_hash(root, kFreeText));
     return doc.to_string();
 }
 
@@ -234,9 +241,11 @@ PopulationFile read_population(const xml::Document& doc) {
     const auto root = doc.root();
     if (root.name() != "population" || root.attribute("format").value_or("") != kFormat)
         throw root.error("not a cic population file (expected <population format=\"cic-population\">)");
-    if (required<int>(root, "version") != kVersion)
+    const int version = required<int>(root, "version");
+    if (version != 1 && version != kVersion)
         throw root.error("population file version " + *root.attribute("version") + " is not supported (this cic reads " +
-                         std::to_string(kVersion) + ")");
+                         "1 and " + std::to_string(kVersion) + ")");
+
     PopulationFile p;
     p.experiment = required_text(root, "experiment");
     p.settings_digest = root.attribute("settingsDigest").value_or("");
@@ -329,6 +338,8 @@ PopulationFile read_population(const xml::Document& doc) {
     std::uint64_t max_id = 0;
     for (const auto& ind : p.population) max_id = std::max(max_id, ind->id);
     if (p.state.next_id <= max_id) p.state.next_id = max_id + 1;
+    // Last: what is wrong with a value is said first, and a hand edit after.
+    if (version >= 2) detail::check_document_hash(root, "population file", kFreeText);
     return p;
 }
 

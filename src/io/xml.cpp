@@ -208,9 +208,15 @@ Document::~Document() {
 Node Document::root() const { return Node(xmlDocGetRootElement(doc_)); }
 
 std::string read_file(const std::filesystem::path& path) {
+    // Refused by its size before it is read: a huge or sparse file would take the memory first.
+    constexpr std::uintmax_t kMaxXmlFileBytes = 256ull * 1024 * 1024;
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw InputError("cannot read: is a directory", path.string());
+    if (const auto size = std::filesystem::file_size(path, ec); !ec && size > kMaxXmlFileBytes)
+        throw InputError("cannot read: " + std::to_string(size) + " bytes, past the limit of " +
+                             std::to_string(kMaxXmlFileBytes) + " bytes (256 MiB) for an XML input",
+                         path.string());
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(std::string("cannot read: ") + std::strerror(errno), path.string());
     std::ostringstream ss;

@@ -20,6 +20,7 @@
 #include "cic/io/settings_io.hpp"
 #include "cic/report/plot.hpp"
 #include "cic/report/replay.hpp"
+#include "cic/report/verify.hpp"
 #include "cic/sim/evaluate.hpp"
 
 namespace cic::report {
@@ -188,6 +189,16 @@ void export_run(const fs::path& run, const std::string& label, const std::string
     }
 }
 
+// With --terms (replays asked for): the run's champion, replayed, or a line
+// saying that it does not give its stored fitness.
+void say_if_champion_disagrees(const fs::path& run, const ExportRequest& request) {
+    if (!request.terms || !request.warn || !fs::is_regular_file(run / "population.xml")) return;
+    const io::Settings s = io::read_settings(run / "settings.xml");
+    if (io::family_of(s) == io::ExperimentFamily::Symreg) return;
+    const std::string file = (run / "population.xml").string();
+    if (const auto c = replay_champion(s, file); c && !c->agrees()) request.warn(mismatch_text(*c, file));
+}
+
 } // namespace
 
 std::string export_individuals(const ExportRequest& request) {
@@ -196,12 +207,15 @@ std::string export_individuals(const ExportRequest& request) {
         if (is_study_folder(input)) {
             const StudyIndex index = read_study_index(input);
             for (const StudyRun& r : index.runs)
-                if (fs::exists(index.run_path(r) / "settings.xml"))
+                if (fs::exists(index.run_path(r) / "settings.xml")) {
                     export_run(index.run_path(r), (input / r.run_dir).string(), r.config, r.seed, request.terms, csv);
+                    say_if_champion_disagrees(index.run_path(r), request);
+                }
         } else {
             const io::Settings s = fs::is_regular_file(input / "settings.xml") ? io::read_settings(input / "settings.xml")
                                                                                : io::Settings{};
             export_run(input, input.string(), s.experiment.name, std::to_string(s.experiment.seed), request.terms, csv);
+            say_if_champion_disagrees(input, request);
         }
     }
     return csv;

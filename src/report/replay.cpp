@@ -26,9 +26,73 @@
 #include "cic/experiments/gait/setup.hpp"
 #include "cic/experiments/hypergp/model.hpp"
 #include "cic/experiments/registry.hpp"
+#include "replay_support.hpp"
 
 namespace cic::report {
 namespace fs = std::filesystem;
+
+namespace detail {
+
+int centre_body_of(const sim::RobotSpec& robot) {
+    const sim::BodyLayout layout = sim::make_body_layout(robot);
+    return layout.geoms[static_cast<std::size_t>(layout.chassis_geom[static_cast<std::size_t>(robot.centre)])].body;
+}
+
+// One gait vector of the settings' gait, walked and recorded.
+ReplayItem replay_point(const gait::Setup& setup, const std::vector<double>& x, double fps, bool trace,
+                        sim::Descriptor descriptor) {
+    const std::unique_ptr<sim::Controller> controller = setup.controller(x);
+    sim::EvalOptions opt;
+    opt.record_fps = fps;
+    opt.record_trace = trace;
+    opt.record_ground = trace || sim::needs_ground(descriptor);
+    sim::EvalResult r = sim::evaluate(setup.robot, *controller, setup.sim, opt);
+    ReplayItem item;
+    if (r.recording) item.recording = *r.recording;
+    item.trace = r.trace;
+    if (trace)
+        for (const auto& row : item.trace) item.raw_outputs.push_back(row.desired);   // open loop: the commands
+    item.replayed_fitness = r.fitness;
+    item.raw_fitness = r.fitness;   // no penalty on a gait
+    item.centre_body = centre_body_of(setup.robot);
+    item.joint_names = sim::joint_names(setup.robot);
+    fill_walk(item, setup.robot, r);
+    if (!r.failed) item.descriptor = sim::descriptor_of(descriptor, setup.robot, r);
+    return item;
+}
+
+// One HyperGP genotype (with its direct genes, if any), scored as the run's type
+// scores it (a registered type's own fitness), eq. 7.1 beside it, and recorded.
+ReplayItem replay_trees(const hypergp::Model& model, const io::Settings& settings, const tree::Forest& genotype,
+                        std::span<const double> offsets, double fps, bool trace, sim::Descriptor descriptor) {
+    sim::EvalOptions opt;
+    opt.record_fps = fps;
+    opt.record_trace = trace;
+    opt.record_ground = trace || sim::needs_ground(descriptor);
+    const hypergp::Outcome o = experiments::evaluate_as_type(model, settings, genotype, opt, trace, offsets);
+    ReplayItem item;
+    if (o.result.recording) item.recording = *o.result.recording;
+    item.trace = o.result.trace;
+    if (trace) {
+        const std::size_t j = o.control.joints;
+        for (std::size_t step = 0; step < o.control.steps(); ++step)
+            item.raw_outputs.emplace_back(o.control.outputs.begin() + static_cast<std::ptrdiff_t>(step * j),
+                                          o.control.outputs.begin() + static_cast<std::ptrdiff_t>((step + 1) * j));
+    }
+    item.replayed_fitness = o.fitness;
+    item.raw_fitness = o.distance_fitness;
+    item.centre_body = centre_body_of(model.robot);
+    item.joint_names = sim::joint_names(model.robot);
+    fill_walk(item, model.robot, o.result);
+    if (!o.failed) item.descriptor = sim::descriptor_of(descriptor, model.robot, o.result);
+    return item;
+}
+
+} // namespace detail
+
+using detail::replay_point;
+using detail::replay_trees;
+using detail::centre_body_of;
 
 namespace {
 
@@ -61,32 +125,6 @@ Source locate(const std::string& what) {
     return s;
 }
 
-int centre_body_of(const sim::RobotSpec& robot) {
-    const sim::BodyLayout layout = sim::make_body_layout(robot);
-    return layout.geoms[static_cast<std::size_t>(layout.chassis_geom[static_cast<std::size_t>(robot.centre)])].body;
-}
-
-// One gait vector of the settings' gait, walked and recorded.
-ReplayItem replay_point(const gait::Setup& setup, const std::vector<double>& x, double fps, bool trace) {
-    const std::unique_ptr<sim::Controller> controller = setup.controller(x);
-    sim::EvalOptions opt;
-    opt.record_fps = fps;
-    opt.record_trace = trace;
-    opt.record_ground = trace;
-    sim::EvalResult r = sim::evaluate(setup.robot, *controller, setup.sim, opt);
-    ReplayItem item;
-    if (r.recording) item.recording = *r.recording;
-    item.trace = r.trace;
-    if (trace)
-        for (const auto& row : item.trace) item.raw_outputs.push_back(row.desired);   // open loop: the commands
-    item.replayed_fitness = r.fitness;
-    item.raw_fitness = r.fitness;   // no penalty on a gait
-    item.centre_body = centre_body_of(setup.robot);
-    item.joint_names = sim::joint_names(setup.robot);
-    fill_walk(item, setup.robot, r);
-    return item;
-}
-
 std::map<std::string, CheckpointBestReader>& checkpoint_readers() {
     static std::map<std::string, CheckpointBestReader> r;
     return r;
@@ -99,32 +137,6 @@ std::string root_of(const fs::path& file) {
     } catch (const InputError&) {
         return {};   // the built-in readers say what is wrong with it
     }
-}
-
-// One HyperGP genotype (with its direct genes, if any), scored as the run's type
-// scores it (a registered type's own fitness), eq. 7.1 beside it, and recorded.
-ReplayItem replay_trees(const hypergp::Model& model, const io::Settings& settings, const tree::Forest& genotype,
-                        std::span<const double> offsets, double fps, bool trace) {
-    sim::EvalOptions opt;
-    opt.record_fps = fps;
-    opt.record_trace = trace;
-    opt.record_ground = trace;
-    const hypergp::Outcome o = experiments::evaluate_as_type(model, settings, genotype, opt, trace, offsets);
-    ReplayItem item;
-    if (o.result.recording) item.recording = *o.result.recording;
-    item.trace = o.result.trace;
-    if (trace) {
-        const std::size_t j = o.control.joints;
-        for (std::size_t step = 0; step < o.control.steps(); ++step)
-            item.raw_outputs.emplace_back(o.control.outputs.begin() + static_cast<std::ptrdiff_t>(step * j),
-                                          o.control.outputs.begin() + static_cast<std::ptrdiff_t>((step + 1) * j));
-    }
-    item.replayed_fitness = o.fitness;
-    item.raw_fitness = o.distance_fitness;
-    item.centre_body = centre_body_of(model.robot);
-    item.joint_names = sim::joint_names(model.robot);
-    fill_walk(item, model.robot, o.result);
-    return item;
 }
 
 // A checkpoint of a search registered from outside: its reader gives the best

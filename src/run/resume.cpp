@@ -15,6 +15,7 @@
 #include "cic/io/xml.hpp"
 #include "cic/run/provenance.hpp"
 #include "cic/run/run.hpp"
+#include "cic/run/run_history.hpp"
 #include "cic/run/self_path.hpp"
 #include "cic/run/settings_diff.hpp"
 
@@ -69,15 +70,20 @@ void check_budget_goes_on(const ResumeRequest& r, const io::Settings& ran, io::S
 } // namespace
 
 int resume_run(const ResumeRequest& r) {
-    const fs::path dir = fs::absolute(r.run_dir);
-    const fs::path settings_file = dir / "settings.xml", checkpoint_file = dir / "population.xml";
-    // A run killed before its first checkpoint has settings.xml but no
-    // population.xml: it starts again in its folder, as the unbroken run did.
-    if (!fs::is_regular_file(settings_file) ||
-        (!fs::is_regular_file(checkpoint_file) && fs::exists(dir / "summary.txt")))
+    std::error_code ec;
+    const fs::path dir = fs::absolute(r.run_dir, ec);
+    if (ec) throw InputError("cannot read the run folder: " + ec.message(), r.run_dir.string());
+    const fs::path settings_file = dir / "settings.xml";
+    if (!fs::exists(dir, ec) && !ec)
         throw InputError("not a run folder (settings.xml, and population.xml or no summary.txt yet): " + dir.string());
-    const std::optional<fs::path> checkpoint =
-        fs::is_regular_file(checkpoint_file) ? std::optional<fs::path>(checkpoint_file) : std::nullopt;
+    // The folder's checkpoints, read and checked against each other (a symbolic
+    // link loop or a folder that cannot be read is refused here, with its path).
+    const std::optional<ResumePoint> point = resume_point(dir);
+    // A run killed before its first checkpoint has settings.xml but no
+    // checkpoint: it starts again in its folder, as the unbroken run did.
+    if (!fs::is_regular_file(settings_file, ec) || (!point && fs::exists(dir / "summary.txt", ec)))
+        throw InputError("not a run folder (settings.xml, and population.xml or no summary.txt yet): " + dir.string());
+    const std::optional<fs::path> checkpoint = point ? std::optional<fs::path>(point->file) : std::nullopt;
     if (r.generations && r.until) throw InputError("--generations and --until: give one of them");
     const io::Settings ran = io::read_settings(settings_file);
     io::Settings asked = io::load_settings(settings_file, r.sets);
@@ -100,8 +106,12 @@ int resume_run(const ResumeRequest& r) {
 
     if (checkpoint) asked.control.population_load_from = checkpoint->string();
     PreparedRun prepared = prepare_run(asked);   // the checkpoint parsed and checked against the settings
-    if (prepared.resume) prepared.resume->check_goes_on(prepared.settings);
+    if (prepared.resume) {
+        prepared.resume->check_goes_on(prepared.settings);
+        check_agrees_with_folder(*prepared.resume, *point, dir);   // never rewrite the run's history
+    }
     // Every check has passed: from here on the folder is written.
+    remove_stale_temporaries(dir);
     if (prepared.resume) prepared.resume->search_note.clear();   // only the budget differs (checked above): said below
     const std::string budget = budget_line(ran, prepared.settings);
     io::Settings stored = prepared.settings;
@@ -109,13 +119,15 @@ int resume_run(const ResumeRequest& r) {
     io::xml::write_file_atomically(settings_file, io::write_settings(stored));
     {
         std::ofstream log(dir / "run.log", std::ios::app);
-        log << (checkpoint ? "resumed in place from population.xml\n"
+        log << (checkpoint ? "resumed in place from " + checkpoint->lexically_relative(dir).string() + "\n"
                            : "resumed in place: killed before its first checkpoint, the run starts again\n")
             << run_log_head(r.command_line, std::chrono::system_clock::now());
+        if (point && !point->note.empty()) log << point->note << '\n';
         if (!budget.empty()) log << budget << '\n';
         if (!log) throw std::runtime_error("cannot write " + (dir / "run.log").string());
     }
     if (!budget.empty() && !r.quiet) std::cerr << "cic: " << budget << '\n';
+    if (point && !point->note.empty() && !r.quiet) std::cerr << "cic: " << point->note << '\n';
     RunOptions opt;
     opt.run_dir = dir;
     opt.quiet = r.quiet;

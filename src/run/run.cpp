@@ -8,6 +8,7 @@
 #include "cic/core/error.hpp"
 #include "cic/experiments/experiment.hpp"
 #include "cic/io/stats_csv.hpp"
+#include "cic/report/verify.hpp"
 #include "cic/search/support.hpp"
 #include "run_support.hpp"
 
@@ -30,6 +31,10 @@ PreparedRun prepare_run(io::Settings s) {
     if (const std::string from = s.control.population_load_from; !from.empty()) {   // absolute: resolved when read
         try {
             p.resume = search::load_checkpoint(*p.search, s, from);
+            // Replay before you believe: the champion's fitness must be what its genotype gives.
+            report::refuse_unless_champion_replays(s, from);
+            if (const std::string problem = report::handover_problem(s, from); !problem.empty())
+                throw InputError(problem + "; the gait phase must start from the HyperGP phase's best");
         } catch (const InputError& e) {
             throw InputError("<Control> populationXmlLoadFrom: " + e.message(), e.file(), e.line());
         }

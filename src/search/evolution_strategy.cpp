@@ -46,6 +46,9 @@ std::unique_ptr<GaitCheckpoint> load_gait_checkpoint(const io::Settings& s, cons
     c->origin_note = io::check_origin(c->gait.origin, s, file);
     c->settings_digest = c->gait.settings_digest;
     c->generations = c->gait.generation + 1;
+    // A Switch-HybrID gait phase numbers on from its HyperGP phase (EvolutionStrategy::checkpoint).
+    c->number = (c->gait.handover ? c->gait.handover->generation + 1 : 0) + c->gait.generation;
+    c->evaluations = c->gait.evaluations + (c->gait.handover ? c->gait.handover->evaluations : 0);
     const gait::Setup setup = gait::Setup::from_settings(s);
     io::check_compatible(c->gait, s, setup.dimension(), file);
     // Replays: a checkpoint that does not is refused now.

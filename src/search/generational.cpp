@@ -50,6 +50,8 @@ std::unique_ptr<PopulationCheckpoint> load_population_checkpoint(const io::Setti
     c->origin_note = io::check_origin(c->population.origin, s, file);
     c->settings_digest = c->population.settings_digest;
     c->generations = c->population.population.generation + 1;
+    c->number = c->population.population.generation;
+    c->evaluations = c->population.state.evaluations;
     io::check_compatible(c->population, s, file);
     check_direct_offsets(c->population, s, file);
     return c;

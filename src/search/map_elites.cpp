@@ -80,6 +80,8 @@ std::unique_ptr<Checkpoint> load_archive_checkpoint(const io::Settings& s, const
     c->origin_note = io::check_origin(c->archive.origin, s, file);
     c->settings_digest = c->archive.settings_digest;
     c->generations = c->archive.batches;
+    c->number = c->archive.batches - 1;
+    c->evaluations = c->archive.evaluations;
     const bool vector = io::genotype_form(s) == io::GenotypeForm::Vector;
     std::optional<gait::Setup> setup;
     if (vector) setup = gait::Setup::from_settings(s);

@@ -170,6 +170,9 @@ public:
                                   h.generation, h.evaluations, why_, optimizer_name(s), best.id, best.fitness,
                                   s.gait.evaluations - h.evaluations));
         es_ = std::make_unique<EvolutionStrategy>(services_, nullptr, h, head_);
+        // The HyperGP phase is over: its worker processes go with it, so that
+        // each phase has Experiment.workers of them, not both phases' together.
+        gp_.reset();
         return *es_->start();   // a fresh gait phase evaluates its first generation
     }
 

@@ -10,6 +10,7 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -19,6 +20,7 @@
 
 #include "cic/run/provenance.hpp"
 #include "cic/run/run.hpp"
+#include "cic/run/run_history.hpp"
 #include "cic/run/run_status.hpp"
 #include "cic/run/settings_diff.hpp"
 #include "cic/study/sweep.hpp"
@@ -378,11 +380,18 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
     std::vector<std::string> extra;
     if (workers > 0) extra.push_back("Experiment.workers=" + std::to_string(workers));
     extra.push_back("Experiment.name=s" + std::to_string(task.seed));
-    const bool resume = fs::exists(dir / "population.xml") && fs::exists(dir / "settings.xml");
-    if (resume) extra.push_back("Control.populationXmlLoadFrom=" + (dir / "population.xml").string());
+    // The checkpoint it goes on from, checked against the folder's history (run_history.hpp).
+    const std::optional<run::ResumePoint> point =
+        fs::exists(dir / "settings.xml") ? run::resume_point(dir) : std::nullopt;
+    const bool resume = point.has_value();
+    if (resume) extra.push_back("Control.populationXmlLoadFrom=" + point->file.string());
 
     run::PreparedRun prepared = run::prepare_run(plan.settings(task, extra));
-    if (resume && prepared.resume) prepared.resume->search_note.clear();   // a task goes on with its own settings, or a raised budget only
+    if (resume && prepared.resume) {
+        prepared.resume->search_note.clear();   // a task goes on with its own settings, or a raised budget only
+        run::check_agrees_with_folder(*prepared.resume, *point, dir);
+        run::remove_stale_temporaries(dir);
+    }
     fs::remove(dir / "failed.txt");
     if (!resume)   // a fresh start: clear what a run killed before its first checkpoint left
         for (const auto& e : fs::directory_iterator(dir))
@@ -396,7 +405,10 @@ int run_task(const SweepPlan& plan, const SweepTask& task, int workers, bool qui
         const std::string command = fmt::format("cic sweep {} --task {} ({}, seed {})", plan.file.string(), task.index,
                                                 plan.configs[task.config].name, task.seed);
         std::ofstream(dir / "run.log", resume ? std::ios::app : std::ios::trunc)
-            << (resume ? "resumed in place from population.xml\n" : "") << run::run_log_head(command, std::chrono::system_clock::now());
+            << (resume ? "resumed in place from " + point->file.lexically_relative(dir).string() + "\n" +
+                             (point->note.empty() ? "" : point->note + "\n")
+                       : "")
+            << run::run_log_head(command, std::chrono::system_clock::now());
     }
     run::RunOptions opt;
     opt.run_dir = dir;

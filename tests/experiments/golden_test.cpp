@@ -58,7 +58,7 @@ std::string golden_ipop_settings(int workers) {
 </settings>
 )";
 }
-const std::string kGoldenIpop = "035d636ec06bcb02";   // golden_ipop_settings' final population.xml
+const std::string kGoldenIpop = "a12dd9cd8809fb02";   // golden_ipop_settings' final population.xml
 
 TEST(Golden, GaitCmaesWithIpopRestarts) {
     const fs::path run = expect_golden("ipop", golden_ipop_settings, kGoldenIpop);

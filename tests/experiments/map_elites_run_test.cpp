@@ -131,6 +131,9 @@ TEST(MapElitesRun, EveryGaitEmitterIsOneKeyAwayAndResumesBitForBit) {
     const auto at = archive.find("\ngeneration ");
     ASSERT_NE(at, std::string::npos);
     archive.insert(at + 12, "oops ");
+    // In a file of format version 1 (no contentHash, which would refuse the edit first).
+    archive.erase(archive.find(" contentHash=\""), 31);
+    archive.replace(archive.find(" version=\"2\""), 12, " version=\"1\"");
     write_text(dir / "edited.xml", archive);
     const std::string from = " --set Control.populationXmlLoadFrom=" + (dir / "edited.xml").string();
     write_text(dir / "resume.xml", settings("gait", 96, 1, "cma-me"));

@@ -12,7 +12,9 @@
 #include <fstream>
 #include <numbers>
 #include <regex>
+#include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "cic/experiments/gait/encoding.hpp"
 #include "cic/experiments/gait/search.hpp"
@@ -208,6 +210,48 @@ TEST(SwitchHybrid, OneRunHandsOverInOneFolderWithTheSameBytesForAnyWorkers) {
     const auto items = report::replay(one.run.string(), "best", 1, 0.0, false);
     ASSERT_EQ(items.size(), 1u);
     EXPECT_EQ(items[0].replayed_fitness, last.champion.fitness);
+    fs::remove_all(dir);
+}
+
+// The processes whose parent is `pid` (its worker processes).
+int children_of(pid_t pid) {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator("/proc")) {
+        const std::string name = e.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        std::ifstream in(e.path() / "stat");
+        std::string stat;
+        std::getline(in, stat);
+        const auto close = stat.rfind(')');
+        if (close == std::string::npos) continue;
+        std::istringstream rest(stat.substr(close + 2));
+        char state = 0;
+        pid_t parent = 0;
+        rest >> state >> parent;
+        n += parent == pid && state != 'Z';
+    }
+    return n;
+}
+
+// Issue 56: the gait phase runs with Experiment.workers worker processes, not
+// with the HyperGP phase's kept beside its own.
+TEST(SwitchHybrid, EachPhaseHasItsWorkersAndNoMore) {
+    const auto dir = temp_dir("switch-workers");
+    write_text(dir / "s.xml", switch_settings(400, 1, kPatience));
+    const pid_t pid = start_cic(dir / "s.xml", dir / "out", dir / "s.log", "");
+    ASSERT_GT(pid, 0);
+    int most = 0, samples = 0;
+    for (int status = 0; waitpid(pid, &status, WNOHANG) == 0;) {
+        fs::path run;
+        if (fs::exists(dir / "out")) run = only_run(dir / "out");
+        if (!run.empty() && read_text(run / "run.log").find("switch: HyperGP hands over") != std::string::npos) {
+            most = std::max(most, children_of(pid));
+            ++samples;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ASSERT_GT(samples, 0) << read_text(dir / "s.log");
+    EXPECT_EQ(most, 1) << "worker processes in the gait phase with workers=1";
     fs::remove_all(dir);
 }
 

@@ -146,8 +146,30 @@ TEST(ArchiveXml, AnEditedEliteIsRefusedByItsHash) {
     EXPECT_NE(e.find("a.xml:"), std::string::npos) << e;
     EXPECT_NE(e.find("<elite cell=\"24\" hash="), std::string::npos) << e;
     EXPECT_NE(e.find("edited by hand"), std::string::npos) << e;
+    // Issue 56: never the expected hash, which pasted in would make the edit pass.
+    for (auto elite : sample(false).elites)
+        if (elite.fitness == -0.25) {
+            elite.fitness = 99;
+            EXPECT_EQ(e.find(cic::io::elite_hash(elite)), std::string::npos) << e;
+        }
     EXPECT_NE(error_of(replaced(to_xml(sample(true)), "(gauss x1)", "(gauss x0)")).find("edited by hand"),
               std::string::npos);
+}
+
+// Issue 56: a version 2 archive's contentHash covers what no elite's hash does
+// (batches, evaluations, the random state, the origin); a version 1 file loads
+// without it, its best elite's replay the proof.
+TEST(ArchiveXml, TheContentHashCoversTheCounters) {
+    const std::string text = to_xml(sample(false));
+    ASSERT_NE(text.find(" version=\"2\""), std::string::npos);
+    const auto at = text.find(" batches=\"");
+    const std::string batches = text.substr(at, text.find('"', at + 10) + 1 - at);
+    const std::string e = error_of(replaced(text, batches, " batches=\"1\""));
+    EXPECT_NE(e.find("does not match what the MAP-Elites archive holds (edited by hand?)"), std::string::npos) << e;
+    const auto h = text.find(" contentHash=\"");
+    const std::string old = replaced(text.substr(0, h) + text.substr(h + 31), " version=\"2\"", " version=\"1\"");
+    EXPECT_EQ(error_of(old), "(no error)");
+    EXPECT_NE(error_of(replaced(old, " version=\"1\"", " version=\"2\"")).find("has no contentHash"), std::string::npos);
 }
 
 TEST(ArchiveXml, DescriptorsOutsideTheGridAndGenesOutsideTheBoxAreRefused) {

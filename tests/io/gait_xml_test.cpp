@@ -139,8 +139,9 @@ TEST(GaitXml, HandoverRoundTripsAndIsChecked) {
 }
 
 // Issue 39: an edited fitness (champion, candidate or history) would be
-// believed on resume; the content hash notices it. A file written before the
-// hash (no contentHash) loads as before.
+// believed on resume; the content hash notices it. Issue 56: a version 2 file
+// (today's) without one is refused; a version 1 file, written before the hash
+// (no contentHash), loads as before: its champion's replay is its proof.
 TEST(GaitXml, AnEditedStateIsRefusedByItsContentHash) {
     const std::string text = to_xml(sample());
     ASSERT_NE(text.find("contentHash=\""), std::string::npos);
@@ -150,13 +151,26 @@ TEST(GaitXml, AnEditedStateIsRefusedByItsContentHash) {
     EXPECT_NE(e.find("g.xml:2:"), std::string::npos) << e;
     EXPECT_NE(e.find("contentHash"), std::string::npos) << e;
     EXPECT_NE(e.find("edited by hand"), std::string::npos) << e;
+    // Issue 56: never the expected hash, which pasted in would make the edit pass.
+    cic::io::GaitFile faked = sample();
+    faked.champion.fitness = 99;
+    EXPECT_EQ(e.find(cic::io::content_hash(faked)), std::string::npos) << e;
     std::string legacy = text;
     const auto at = legacy.find(" contentHash=\"");
     legacy.erase(at, legacy.find('"', at + 14) + 1 - at);
+    EXPECT_NE(error_of(legacy).find("has no contentHash"), std::string::npos) << error_of(legacy);
+    legacy.replace(legacy.find(" version=\"2\""), 12, " version=\"1\"");
     EXPECT_EQ(error_of(legacy), "(no error)");
     edited = legacy;
     edited.replace(edited.find("fitness=\"2.25\""), 14, "fitness=\"99\"");
-    EXPECT_EQ(error_of(edited), "(no error)");   // nothing to check against: believed, as before
+    EXPECT_EQ(error_of(edited), "(no error)");   // nothing to check against here: the champion's replay refuses it
+    // Version 1's own hash, over the search's state, is still checked where a file has one.
+    std::string v1 = text;
+    v1.replace(v1.find(" version=\"2\""), 12, " version=\"1\"");
+    v1.replace(v1.find(" contentHash=\"") + 14, 16, cic::io::content_hash(sample()));
+    EXPECT_EQ(error_of(v1), "(no error)");
+    v1.replace(v1.find("fitness=\"2.25\""), 14, "fitness=\"99\"");
+    EXPECT_NE(error_of(v1).find("edited by hand"), std::string::npos);
 }
 
 TEST(GaitXml, TheOriginRoundTripsAndAnEditedOneIsRefused) {

@@ -258,3 +258,60 @@ TEST(PopulationXml, IncompatibleSettingsAreRefused) {
 
 } // namespace
 } // namespace cic::io
+
+namespace cic::io {
+namespace {
+
+std::string error_text(const std::string& text) {
+    try {
+        parse_population(text, "p.xml");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+// Issue 56: version 2 files hold a contentHash over every value but the trees
+// and offsets: a fitness, a counter, the generation or the origin edited by
+// hand is refused, without the expected value (pasted in, it would pass).
+TEST(PopulationXml, TheContentHashCoversEveryValueButTheTrees) {
+    const std::string text = to_xml(sample());
+    ASSERT_NE(text.find(" version=\"2\""), std::string::npos);
+    ASSERT_NE(text.find(" contentHash=\""), std::string::npos);
+    auto edited = [&](const std::string& from, const std::string& to) {
+        std::string t = text;
+        EXPECT_NE(t.find(from), std::string::npos) << from;
+        return t.replace(t.find(from), from.size(), to);
+    };
+    for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+             {"generation=\"7\"", "generation=\"6\""},
+             {"evaluations=\"321\"", "evaluations=\"300\""},
+             {"nextId=\"40\"", "nextId=\"41\""},
+             {"fitness=\"-0.33333333333333331\"", "fitness=\"45\""}}) {
+        const std::string t = edited(from, to);
+        const std::string e = error_text(t);
+        EXPECT_NE(e.find("does not match what the population file holds (edited by hand?)"), std::string::npos) << e;
+        // The hash the edited file would need: that of the same values written again.
+        std::string as_old = t;
+        as_old.replace(as_old.find(" version=\"2\""), 12, " version=\"1\"");
+        const std::string wanted = to_xml(parse_population(as_old, "old.xml"));
+        const auto at = wanted.find("contentHash=\"") + 13;
+        EXPECT_EQ(e.find(wanted.substr(at, 16)), std::string::npos) << e;
+    }
+    // Re-indenting changes no value; a tree edited by hand is still taken (evaluated again).
+    std::string spaced = text;
+    spaced.replace(spaced.find("<individuals"), 0, "\n\n  ");
+    EXPECT_NO_THROW(parse_population(spaced, "p.xml"));
+    const auto q = parse_population(edited("<tree>(sin -1)</tree>", "<tree>(sin 2)</tree>"), "p.xml");
+    EXPECT_TRUE(q.population[0].edited);
+    // A version 2 file without its hash is refused; version 1 (runs in flight) loads without one.
+    std::string unhashed = text;
+    const auto h = unhashed.find(" contentHash=\"");
+    unhashed.erase(h, 31);
+    EXPECT_NE(error_text(unhashed).find("has no contentHash"), std::string::npos) << error_text(unhashed);
+    unhashed.replace(unhashed.find(" version=\"2\""), 12, " version=\"1\"");
+    EXPECT_EQ(to_xml(parse_population(unhashed, "old.xml")), text);   // read as version 1, written as version 2
+}
+
+} // namespace
+} // namespace cic::io

@@ -130,3 +130,20 @@ TEST(Xml, ValidatesAgainstSchema) {
     EXPECT_THROW(good.validate(d / "broken.xsd"), InputError);
     fs::remove_all(d);
 }
+
+// Issue 56: a 2.2 GB sparse checkpoint took 4.25 GB of memory before "malformed
+// XML"; a file past the limit is refused by its size, before it is read.
+TEST(Xml, AHugeFileIsRefusedBeforeItIsRead) {
+    const fs::path dir = cic::testing::temp_dir("xml-huge");
+    const fs::path file = dir / "population.xml";
+    std::ofstream(file) << "<population>";
+    fs::resize_file(file, 300ull * 1024 * 1024);   // sparse: no disk taken
+    try {
+        Document::load_file(file);
+        FAIL() << "a 300 MB file was read";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("past the limit of 268435456 bytes"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+    }
+    fs::remove_all(dir);
+}

@@ -142,7 +142,9 @@ TEST(Resume, ACheckpointOfAnotherRobotIsRefused) {
     // Class 7: a budget of 16 is not whole generations of 7; said, not rounded down silently.
     EXPECT_HAS(read_text(r1 / "run.log"), "Gait.evaluations 16 is not a whole number of generations of 7 candidates; "
                                           "the run stops after 2 generations, at 14 evaluations");
+    // With its twin, the last gen-NNNN.xml, so that the folder agrees with itself and the origin is what refuses it.
     fs::copy_file(r2 / "population.xml", r1 / "population.xml", fs::copy_options::overwrite_existing);
+    fs::copy_file(r2 / "population.xml", r1 / "populations" / "gen-0001.xml", fs::copy_options::overwrite_existing);
     const std::string settings_before = read_text(r1 / "settings.xml"), log_before = read_text(r1 / "run.log");
     EXPECT_EQ(run_command("resume " + r1.string() + " --set Gait.evaluations=28", dir / "out.log"), 2);
     const std::string out = read_text(dir / "out.log");
@@ -213,7 +215,14 @@ TEST(Resume, AMapElitesRefusalWritesNothing) {
     archive.erase(archive.find(' ', x), archive.find(' ', archive.find(' ', x) + 1) - archive.find(' ', x));
     const auto h = archive.rfind(" hash=\"", x);
     archive.erase(h, archive.find('"', h + 7) + 1 - h);
+    // ... in a file of the old format (version 1: no contentHash over the file).
+    const auto c = archive.find(" contentHash=\"");
+    archive.erase(c, 31);
+    archive.replace(archive.find(" version=\"2\""), 12, " version=\"1\"");
     write_text(run / "population.xml", archive);
+    fs::path last;   // population.xml's twin, the last gen-NNNN.xml: the folder agrees with itself
+    for (const auto& e : fs::directory_iterator(run / "populations")) last = std::max(last, e.path());
+    write_text(last, archive);
     refused("--set MapElites.evaluations=72", "parameters, these settings make");
     fs::remove_all(dir);
 }

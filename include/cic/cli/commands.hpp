@@ -26,6 +26,7 @@ void add_assess_command(Command& app, CommandContext& ctx);     // cmd_assess.cp
 void add_transfer_command(Command& app, CommandContext& ctx);   // cmd_transfer.cpp
 void add_resume_command(Command& app, CommandContext& ctx);     // cmd_resume.cpp
 void add_export_command(Command& app, CommandContext& ctx);     // cmd_export.cpp
+void add_verify_command(Command& app, CommandContext& ctx);     // cmd_verify.cpp
 void add_eval_command(Command& app, CommandContext& ctx);       // cmd_eval.cpp
 void add_report_command(Command& app, CommandContext& ctx);     // cmd_report.cpp
 void add_robot_command(Command& app, CommandContext& ctx);      // cmd_robot.cpp

@@ -17,11 +17,17 @@
 #include <string>
 #include <vector>
 
+#include <functional>
+#include <string>
+
 namespace cic::report {
 
 struct ExportRequest {
     std::vector<std::filesystem::path> inputs;   // run folders or study folders
     bool terms = false;                          // replay for distance and elevation
+    // With terms: told when a run's champion (its last checkpoint's, verify.hpp)
+    // does not replay to its stored fitness, one line naming the file and both values.
+    std::function<void(const std::string&)> warn;
 };
 
 inline constexpr const char* kExportHeader =

@@ -41,6 +41,8 @@ struct ReplayItem {
     // of the time from the delayed start on that it touched the ground.
     std::vector<std::string> foot_names;
     std::vector<double> duty_factors;
+    // A MAP-Elites elite's behaviour descriptor as the replay gives it (verify.hpp); empty otherwise.
+    std::vector<double> descriptor;
 };
 
 // Eq. 7.1's two terms of an evaluation, m: the walk along the robot's

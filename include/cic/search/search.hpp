@@ -114,6 +114,12 @@ public:
     std::string settings_digest;   // of the settings it was made with
     std::string origin_note;       // io::check_origin's note (a file without <origin>)
     int generations = 0;           // generations (or batches) it holds evaluated
+    // Where it stands in its run's history, checked against the run folder on
+    // resume (run/run_history.hpp): the number N of the populations/gen-NNNN.xml
+    // it was saved as (stats.csv's row N) and stats.csv's evaluations there.
+    // -1: the search does not say (one built outside cic); then not checked.
+    int number = -1;
+    long evaluations = -1;
     // Set by the run (run/run.hpp's prepare_run): made with other search
     // settings, its fitness values hold (search_note); cleared by a resume in place.
     std::string search_note;
