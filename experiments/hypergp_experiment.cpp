@@ -35,7 +35,7 @@ public:
         std::unordered_map<std::string_view, std::size_t> queued;
         std::vector<std::string> bodies(todo.size());
         for (std::size_t i = 0; i < todo.size(); ++i) {
-            bodies[i] = job_kind_ + "\n" + hypergp::job_body(todo[i]->genotype, descriptor_, todo[i]->direct);
+            bodies[i] = job_kind_ + "\n" + hypergp::job_body(todo[i]->genotype, descriptor_, todo[i]->direct, body_);
             if (auto hit = cache_.find(bodies[i]); hit != cache_.end()) {
                 apply(*todo[i], hit->second);
                 job_of[i] = kCached;
@@ -80,6 +80,14 @@ public:
 
     const hypergp::Model& model() const { return model_; }
 
+    // A growing robot's next body: its jobs say which (hypergp::job_body), so
+    // a result is never reused across bodies.
+    void use_body(std::size_t body) {
+        body_robot_ = model_.on_body(body).robot;
+        body_ = body;
+    }
+    const sim::RobotSpec& robot() const { return body_ == 0 ? model_.robot : body_robot_; }
+
 private:
     static constexpr std::size_t kCached = static_cast<std::size_t>(-1);
 
@@ -96,6 +104,8 @@ private:
     std::function<void(const std::string&)> warn_;
     std::unique_ptr<JobRunner> pool_;
     sim::Descriptor descriptor_;   // asked of every job (MAP-Elites), else None
+    std::size_t body_ = 0;         // a growing robot's current body (0 = the robot)
+    sim::RobotSpec body_robot_;    // that body, when not 0
     std::unordered_map<std::string, sim::EvalReply> cache_;   // job text -> reply, for this session
     long simulated_ = 0, reused_ = 0;
 };
@@ -105,11 +115,18 @@ public:
     HypergpExperiment(const Context& ctx, std::string job_kind) : eval_(ctx, std::move(job_kind)) {}
     gp::Evaluator& evaluator() override { return eval_; }
     std::string describe(const gp::Individual& ind) const override {
-        return fmt::format("robot {} ({} modules)", eval_.model().robot.name, eval_.model().robot.modules.size()) +
+        const auto& m = eval_.model();
+        std::string bodies;   // several bodies in one fitness (bodies.hpp)
+        for (const auto& r : m.extra_robots) bodies += (bodies.empty() ? "" : ", ") + r.name;
+        if (!bodies.empty())
+            bodies = fmt::format(" and {} ({} of the bodies' fitnesses)", bodies,
+                                 m.aggregate == io::BodiesAggregate::Min ? "minimum" : "mean");
+        return fmt::format("robot {} ({} modules){}", eval_.robot().name, eval_.robot().modules.size(), bodies) +
                (ind.failed ? " [failed: " + ind.failure + "]" : "");
     }
     std::string session_note() const override { return eval_.session_note(); }
     gp::DirectGenes direct_genes() const override { return hypergp::direct_offset_genes(eval_.model()); }
+    void use_body(std::size_t body) override { eval_.use_body(body); }
 
 private:
     HypergpEvaluator eval_;

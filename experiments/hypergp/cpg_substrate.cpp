@@ -12,7 +12,7 @@ namespace cic::hypergp {
 sim::CpgSpec cpg_spec(const sim::RobotSpec& robot, const tree::Forest& genotype, const nn::NeuralConfig& cfg,
                       double control_step) {
     if (genotype.empty()) throw std::invalid_argument("cpg substrate: empty genotype (no trees)");
-    const nn::Geometry g = substrate_geometry(robot);
+    const nn::Geometry g = substrate_geometry(robot, cfg);
     const std::size_t n = g.joints.size();
     sim::CpgSpec spec;
     spec.control_step = control_step;

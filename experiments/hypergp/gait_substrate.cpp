@@ -24,7 +24,7 @@ struct Units {
 Units units(const sim::RobotSpec& robot, const tree::Forest& genotype, const nn::NeuralConfig& cfg,
             std::span<const double> offsets) {
     if (genotype.empty()) throw std::invalid_argument("gait substrate: empty genotype (no trees)");
-    const nn::Geometry g = substrate_geometry(robot);
+    const nn::Geometry g = substrate_geometry(robot, cfg);
     const std::size_t n = g.joints.size(), trees = genotype.size();
     if (!offsets.empty() && offsets.size() != n)
         throw std::invalid_argument("gait substrate: " + std::to_string(offsets.size()) + " direct offsets for " +

@@ -31,6 +31,18 @@ Model Model::from_settings(const io::Settings& s) {
     m.robot.validate();
     m.sim = s.sim;
     m.neural = s.neural;
+    for (const auto& file : s.robot.extra_robot_files) m.extra_robots.push_back(io::read_robot_file(file));
+    m.aggregate = s.robot.bodies_aggregate;
+    for (const auto& file : s.robot.grow_robot_files) m.grow_robots.push_back(io::read_robot_file(file));
+    return m;
+}
+
+Model Model::on_body(std::size_t body) const {
+    if (body > grow_robots.size())
+        throw std::out_of_range(fmt::format("body {} of a robot that grows through {} bodies", body,
+                                            grow_robots.size() + 1));
+    Model m = *this;
+    if (body > 0) m.robot = grow_robots[body - 1];
     return m;
 }
 
@@ -49,25 +61,50 @@ void check_first_step(const sim::RobotSpec& robot, const sim::SimConfig& config,
                          "test evaluation with every joint held at 0): " + r.failure, where);
 }
 
+namespace {
+
+// One body's checks: at least one joint, physics that starts, a substrate
+// within the limits.
+void check_body(const Model& m, const io::Settings& s, const std::string& where);
+
+} // namespace
+
 void check_inputs(const io::Settings& s) {
-    const Model m = [&] {
+    // Each robot file on its own first, so that an error names its key.
+    auto read = [](const std::string& file, const std::string& key) {
         try {
-            return Model::from_settings(s);
+            io::read_robot_file(file).validate();
         } catch (const InputError& e) {
-            if (s.robot.robot_file.empty()) throw;
-            throw InputError("<Simulator> robotFile: " + e.message(), e.file(), e.line());
+            throw InputError("<Simulator> " + key + ": " + e.message(), e.file(), e.line());
         }
-    }();
+    };
+    if (!s.robot.robot_file.empty()) read(s.robot.robot_file, "robotFile");
+    for (const auto& f : s.robot.extra_robot_files) read(f, "extraRobotFiles");
+    for (const auto& f : s.robot.grow_robot_files) read(f, "growRobotFiles");
+    const Model m = Model::from_settings(s);
     const std::string where = s.robot.robot_file.empty()
         ? "<Simulator> robot_type = " + std::to_string(s.robot.robot_type)
         : s.robot.robot_file + ": <Simulator> robotFile";
+    check_body(m, s, where);
+    for (std::size_t i = 0; i < m.extra_robots.size(); ++i) {
+        Model body = m;
+        body.robot = m.extra_robots[i];
+        check_body(body, s, s.robot.extra_robot_files[i] + ": <Simulator> extraRobotFiles");
+    }
+    for (std::size_t k = 1; k <= m.grow_robots.size(); ++k)
+        check_body(m.on_body(k), s, s.robot.grow_robot_files[k - 1] + ": <Simulator> growRobotFiles");
+}
+
+namespace {
+
+void check_body(const Model& m, const io::Settings& s, const std::string& where) {
     if (m.robot.actuated().empty())
         throw InputError("robot '" + m.robot.name + "' has no joint (every module is fixed): HyperGP needs at "
                          "least one module with axis x, y or z", where);
     check_first_step(m.robot, m.sim, where);
     if (s.map_elites.enabled) (void)experiments::map_elites_grid(s, m.robot);
     if (m.neural.substrate != "network") return;   // the limits below are the network's
-    const nn::NeuronLayout layout = nn::make_neuron_layout(substrate_geometry(m.robot), m.neural);
+    const nn::NeuronLayout layout = nn::make_neuron_layout(substrate_geometry(m.robot, m.neural), m.neural);
     const std::size_t in = layout.input.size(), hidden = layout.hidden.size(), out = layout.output.size();
     if (in + hidden + out > limits::kMaxNeurons)
         throw InputError("robot '" + m.robot.name + "' gives a substrate of " + std::to_string(in + hidden + out) +
@@ -81,6 +118,8 @@ void check_inputs(const io::Settings& s) {
         throw InputError("robot '" + m.robot.name + "' gives a substrate of " + std::to_string(synapses) +
                          " potential synapses, past the limit of " + std::to_string(limits::kMaxSynapses), where);
 }
+
+} // namespace
 
 Outcome run(const Model& m, const tree::Forest& genotype, const sim::EvalOptions& options, bool record_control) {
     return run(m, genotype, {}, options, record_control);
@@ -143,10 +182,12 @@ void check_offsets(const Model& m, std::span<const double> offsets, const std::s
                              file);
 }
 
-std::string job_body(const tree::Forest& genotype, sim::Descriptor descriptor, std::span<const double> offsets) {
+std::string job_body(const tree::Forest& genotype, sim::Descriptor descriptor, std::span<const double> offsets,
+                     std::size_t robot_body) {
     std::string body;
     for (const auto& t : genotype) body += t.to_string() + "\n";
     if (!offsets.empty()) body += fmt::format("offsets {}\n", fmt::join(offsets, " "));
+    if (robot_body > 0) body += fmt::format("body {}\n", robot_body);
     if (descriptor != sim::Descriptor::None) body += "descriptor " + sim::to_string(descriptor) + "\n";
     return body;
 }
@@ -160,6 +201,7 @@ Job parse_job_body(const std::string& body) {
         if (line.starts_with("offsets ")) {   // after the trees, before a descriptor
             if (job.genotype.empty()) throw std::invalid_argument("hypergp job: offsets before the trees");
             if (!job.offsets.empty()) throw std::invalid_argument("hypergp job: two lines of offsets");
+            if (job.body > 0) throw std::invalid_argument("hypergp job: offsets after the body");
             std::istringstream items(line.substr(8));
             std::string item;
             while (items >> item) {
@@ -172,8 +214,17 @@ Job parse_job_body(const std::string& body) {
             if (job.offsets.empty()) throw std::invalid_argument("hypergp job: an empty line of offsets");
             continue;
         }
-        if (!job.offsets.empty() && !line.starts_with("descriptor "))
-            throw std::invalid_argument("hypergp job: a tree after the offsets");
+        if (line.starts_with("body ")) {   // after the trees and offsets, before a descriptor
+            if (job.genotype.empty()) throw std::invalid_argument("hypergp job: a body before the trees");
+            if (job.body > 0) throw std::invalid_argument("hypergp job: two lines of body");
+            const std::string item = line.substr(5);
+            const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), job.body);
+            if (ec != std::errc() || end != item.data() + item.size() || job.body == 0)
+                throw std::invalid_argument("hypergp job: bad body '" + item + "' (a number >= 1)");
+            continue;
+        }
+        if ((!job.offsets.empty() || job.body > 0) && !line.starts_with("descriptor "))
+            throw std::invalid_argument("hypergp job: a tree after the offsets or the body");
         if (line.starts_with("descriptor ")) {   // the last line, when present
             if (job.genotype.empty()) throw std::invalid_argument("hypergp job: a descriptor before the trees");
             job.descriptor = sim::descriptor_from(line.substr(11));
@@ -214,21 +265,25 @@ std::function<std::string(const std::string&)> make_job_handler(std::function<io
                                                                  Score score, WalkNeeds needs) {
     struct Loaded {
         io::Settings settings;
-        Model model;
+        std::vector<Model> bodies;   // by growing body; one when the robot does not grow
     };
     auto loaded = std::make_shared<std::optional<Loaded>>();
     return [loaded, settings = std::move(settings), score = std::move(score), needs](const std::string& body) {
         if (!*loaded) {
             io::Settings s = settings();
-            Model m = Model::from_settings(s);
-            loaded->emplace(Loaded{std::move(s), std::move(m)});
+            const Model m = Model::from_settings(s);
+            std::vector<Model> bodies;
+            for (std::size_t k = 0; k <= m.grow_robots.size(); ++k) bodies.push_back(m.on_body(k));
+            loaded->emplace(Loaded{std::move(s), std::move(bodies)});
         }
         const Job job = parse_job_body(body);
-        Outcome o = run((*loaded)->model, job.genotype, job.offsets, options_for(needs, job.descriptor));
-        apply_score(o, score, (*loaded)->model, (*loaded)->settings);
+        if (job.body >= (*loaded)->bodies.size())
+            throw std::invalid_argument(fmt::format("hypergp job: body {}, but the settings' robot has {}", job.body,
+                                                    (*loaded)->bodies.size()));
+        const Model& m = (*loaded)->bodies[job.body];
+        const Outcome o = evaluate_job(m, (*loaded)->settings, job, score, needs);
         return sim::format_eval_reply(
-            to_reply((*loaded)->model, o, o.failed ? std::vector<double>{}
-                                 : sim::descriptor_of(job.descriptor, (*loaded)->model.robot, o.result)));
+            to_reply(m, o, o.failed ? std::vector<double>{} : sim::descriptor_of(job.descriptor, m.robot, o.result)));
     };
 }
 

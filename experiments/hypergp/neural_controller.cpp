@@ -73,7 +73,7 @@ NeuralController make_neural_controller(const sim::RobotSpec& robot, const tree:
                                         const nn::NeuralConfig& cfg) {
     nn::NeuralConfig c = cfg;
     if (c.evolve_clock) c.clock_period = 1.0 / evolved_frequency(genotype, c);
-    auto layout = nn::make_neuron_layout(substrate_geometry(robot), c);
+    auto layout = nn::make_neuron_layout(substrate_geometry(robot, c), c);
     auto network = nn::build_network(layout, genotype, c);
     return NeuralController(std::move(network), std::move(layout), c);
 }

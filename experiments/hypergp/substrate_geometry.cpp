@@ -18,7 +18,9 @@ double normalise(int v, int lo, int hi) {
 
 } // namespace
 
-nn::Geometry substrate_geometry(const sim::RobotSpec& robot) {
+nn::Geometry substrate_geometry(const sim::RobotSpec& robot) { return substrate_geometry(robot, nn::NeuralConfig{}); }
+
+nn::Geometry substrate_geometry(const sim::RobotSpec& robot, const nn::NeuralConfig& cfg) {
     robot.validate();
     const auto actuated = robot.actuated();
     if (actuated.empty())
@@ -31,7 +33,16 @@ nn::Geometry substrate_geometry(const sim::RobotSpec& robot) {
         y_lo = std::min(y_lo, m.cell.y);
         y_hi = std::max(y_hi, m.cell.y);
     }
+    // Absolute: measured from the centre module, so that mirrored cells get
+    // exactly opposite coordinates here too, and a body's size moves nothing.
+    const sim::Cell origin = robot.modules[static_cast<std::size_t>(robot.centre)].cell;
+    const bool absolute = cfg.substrate_layout == nn::SubstrateLayout::Absolute;
+    if (absolute && !(cfg.substrate_unit > 0.0))
+        throw std::invalid_argument("substrate_geometry: substrateUnit must be > 0");
     auto point = [&](const sim::Cell& c) {
+        if (absolute)
+            return nn::Point{static_cast<double>(c.x - origin.x) / cfg.substrate_unit,
+                             static_cast<double>(c.y - origin.y) / cfg.substrate_unit};
         return nn::Point{normalise(c.x, x_lo, x_hi), normalise(c.y, y_lo, y_hi)};
     };
 

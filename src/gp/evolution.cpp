@@ -327,6 +327,11 @@ void BloatControl::end_generation(Population& pop, EvolutionState& st) {
     st.bloat = dl.state();
 }
 
+void BloatControl::restart_best(const Population& evaluated, EvolutionState& st) const {
+    if (!cfg_.enabled) return;
+    st.bloat.best_fitness = evaluated.best().fitness;
+}
+
 // -------------------------------------------------------------------- evolve
 
 Generations::Generations(const GpConfig& gp, const BloatConfig& bloat, const tree::PrimitiveSet& ps,
@@ -367,6 +372,19 @@ void Generations::step() {
         evaluate_.apply(pop_, state_);
         control_.filter(pop_, state_, slots);
     }
+    control_.end_generation(pop_, state_);
+}
+
+void Generations::reevaluate() {
+    gen_start_ = Clock::now();
+    for (auto& ind : pop_.individuals) {   // fresh copies: a pointer may be shared with the bred-from generation
+        auto again = std::make_shared<Individual>(*ind);
+        again->evaluated = false;
+        ind = std::move(again);
+    }
+    ++pop_.generation;
+    evaluate_.apply(pop_, state_);
+    control_.restart_best(pop_, state_);
     control_.end_generation(pop_, state_);
 }
 

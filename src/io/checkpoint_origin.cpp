@@ -11,10 +11,12 @@
 
 #include "cic/core/error.hpp"
 #include "cic/core/hash.hpp"
+#include "cic/io/bodies.hpp"
 #include "cic/io/experiment_types.hpp"
 #include "cic/io/robot_xml.hpp"
 #include "cic/io/settings_table.hpp"
 #include "cic/tree/primitives.hpp"
+#include "settings_values.hpp"
 
 namespace cic::io {
 namespace {
@@ -92,6 +94,25 @@ std::string token_differences(const std::string& had, const std::string& want) {
     return out;
 }
 
+// Several bodies in one fitness: the aggregate and every other body, by
+// content; a growing robot: its whole schedule, each body with the share and
+// the generation it takes over at (io/bodies.hpp).
+void add_body_parts(CheckpointOrigin& o, const Settings& s) {
+    if (several_bodies(s)) {
+        std::string text = "aggregate " + find_setting("Simulator", "bodiesAggregate")->get(s) + ":";
+        for (const auto& f : s.robot.extra_robot_files) text += " " + robot_origin_text(read_robot_file(f)) + ";";
+        o.parts.push_back({"bodies", text});
+    }
+    if (grows(s)) {
+        std::string text;
+        for (std::size_t k = 1; k < growing_bodies(s); ++k)
+            text += fmt::format("{}at {} (generation {}): {};", text.empty() ? "" : " ",
+                                detail::format_double(s.robot.grow_at[k - 1]),
+                                grow_generation(s, k), robot_origin_text(read_robot_file(s.robot.grow_robot_files[k - 1])));
+        o.parts.push_back({"growth", text});
+    }
+}
+
 } // namespace
 
 std::string CheckpointOrigin::digest() const {
@@ -123,8 +144,12 @@ CheckpointOrigin origin_of(const Settings& s, const sim::RobotSpec& robot) {
     o.parts.push_back({"experiment", s.experiment.type});
     if (family != ExperimentFamily::Symreg) {
         o.parts.push_back({"robot", robot_origin_text(robot)});
-        // The robot keys are in the robot's part, by content.
-        o.parts.push_back({"simulator", section_text(s, "Simulator", {"robotFile", "robot_type", "generatePovrayFiles"})});
+        // The robot keys are in the robot's part, by content, and the other
+        // bodies' in parts of their own (absent with one body).
+        o.parts.push_back({"simulator", section_text(s, "Simulator", {"robotFile", "robot_type", "generatePovrayFiles",
+                                                                     "extraRobotFiles", "bodiesAggregate",
+                                                                     "growRobotFiles", "growAt"})});
+        add_body_parts(o, s);
     }
     if (family == ExperimentFamily::Gait) {
         // The encoding: what a parameter vector means. The optimiser, its
@@ -197,7 +222,7 @@ std::string check_origin(const std::optional<CheckpointOrigin>& loaded, const Se
         if (it == had.end()) {
             add(fmt::format("{}: checkpoint (none), settings {}", p.name, p.text.empty() ? "(defaults)" : p.text));
         } else if (it->second != p.text) {
-            if (p.name == "robot" || p.name == "experiment")
+            if (p.name == "robot" || p.name == "experiment" || p.name == "bodies" || p.name == "growth")
                 add(fmt::format("{}: checkpoint {}, settings {}", p.name, it->second, p.text));
             else
                 add(p.name + ": " + token_differences(it->second, p.text));

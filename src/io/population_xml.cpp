@@ -199,6 +199,7 @@ std::string to_xml(const PopulationFile& p) {
         clock.set_attribute("bestFitness", exact(p.switch_clock->best));
         clock.set_attribute("bestGeneration", std::to_string(p.switch_clock->best_generation));
     }
+    if (p.body) root.add_element("body").set_attribute("index", std::to_string(*p.body));
     auto list = root.add_element("individuals");
     list.set_attribute("count", std::to_string(p.population.size()));
     for (const auto& ind : p.population) {
@@ -305,6 +306,8 @@ PopulationFile read_population(const xml::Document& doc) {
                 clock.best_generation > p.population.generation)
                 throw c.error("<switch> needs a finite bestFitness and bestGeneration in [0, generation]");
             p.switch_clock = clock;
+        } else if (nm == "body") {
+            p.body = required<std::size_t>(c, "index");
         } else if (nm == "individuals") {
             have_list = true;
             list_node = c;
@@ -325,7 +328,7 @@ PopulationFile read_population(const xml::Document& doc) {
                                   " appears twice");
             }
         } else {
-            throw c.error("unknown element <" + std::string(nm) + "> in <population>; allowed: origin, genotype, rng, counters, bloat, switch, individuals");
+            throw c.error("unknown element <" + std::string(nm) + "> in <population>; allowed: origin, genotype, rng, counters, bloat, switch, body, individuals");
         }
     }
     if (!have_shape) throw root.error("missing <genotype> element");

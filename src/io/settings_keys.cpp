@@ -25,6 +25,7 @@ std::string_view type_name(ValueType t) {
     case ValueType::NameList: return "names";
     case ValueType::DoubleList: return "numbers";
     case ValueType::IntList: return "integers";
+    case ValueType::PathList: return "paths";
     }
     return "?";
 }
@@ -85,6 +86,8 @@ std::string describe_allowed(const SettingKey& k) {
             s += ", at most " + std::to_string(k.max_items);
         return s + (k.min_items == 0 ? " (may be empty)" : "");
     }
+    case ValueType::PathList:
+        return std::string("space-separated file paths, none with a space") + (k.min_items == 0 ? " (may be empty)" : "");
     }
     return {};
 }

@@ -136,7 +136,7 @@ std::size_t table_index(const SettingKey* k) { return static_cast<std::size_t>(k
 
 void check_item_count(const Assignment& a) {
     const SettingKey& k = *a.key;
-    bool list = k.type == ValueType::NameList || k.type == ValueType::DoubleList || k.type == ValueType::IntList;
+    const bool list = is_list(k.type);
     if (a.value.empty()) {
         if (k.min_items == 0) return;
         throw value_error(a, "empty value");
@@ -163,6 +163,14 @@ void apply_layer(Settings& s, std::vector<Assignment> layer, detail::Locations& 
         std::string value = a.value;
         if (a.key->type == ValueType::Path && base_dir && !value.empty() && fs::path(value).is_relative())
             value = fs::absolute(*base_dir / value).lexically_normal().string();
+        if (a.key->type == ValueType::PathList && base_dir) {   // each item as a Path
+            std::vector<std::string> items;
+            for (auto item : detail::split_items(value))
+                items.push_back(fs::path(item).is_relative()
+                                    ? fs::absolute(*base_dir / item).lexically_normal().string()
+                                    : std::string(item));
+            value = detail::join(items);
+        }
         try {
             a.key->set(s, value);
         } catch (const ValueError& e) {

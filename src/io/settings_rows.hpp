@@ -145,6 +145,20 @@ inline SettingKey double_list_row(std::string sec, std::string key, Bounds b, st
     return k;
 }
 
+// Space-separated file paths (read as ValueType::Path items); may be empty.
+template <class F>
+inline SettingKey path_list_row(std::string sec, std::string key, std::string doc, F ref) {
+    auto k = row(std::move(sec), std::move(key), ValueType::PathList, std::move(doc));
+    k.min_items = 0;
+    k.get = [ref](const Settings& s) { return join(field(ref, s)); };
+    k.set = [ref](Settings& s, std::string_view t) {
+        std::vector<std::string> items;
+        for (auto item : split_items(t)) items.emplace_back(item);
+        ref(s) = std::move(items);
+    };
+    return k;
+}
+
 // The SimConfig member that f describes, found by name in s.sim.
 template <class T>
 auto sim_member(std::string_view name) {

@@ -115,6 +115,18 @@ void beyond_thesis_neural_rows(std::vector<SettingKey>& t) {
                            "gait: Switch-HybrID: hand over once HyperGP has spent this share of Gait.evaluations "
                            "(whichever of switchPatience and switchShare comes first); 0 = no fixed share",
                            FIELD(neural.switch_share)));
+    t.push_back(enum_row<nn::SubstrateLayout>(
+        "Neural", "substrateLayout",
+        {{nn::SubstrateLayout::Normalised, {"normalised"}}, {nn::SubstrateLayout::Absolute, {"absolute"}}},
+        "Where the substrate's neurons sit (the CPPF's x and y): normalised = each axis of the robot's bounding box "
+        "mapped onto [-1, 1] (the thesis's; a bigger body squeezes its legs closer); absolute = cells from the "
+        "centre module divided by substrateUnit (a bigger body keeps the spacing of its legs and is queried beyond "
+        "the smaller one's range)",
+        FIELD(neural.substrate_layout)));
+    t.push_back(double_row("Neural", "substrateUnit", kPositive,
+                           "substrateLayout absolute: the number of module cells that make one unit of the CPPF's "
+                           "coordinates, on both axes",
+                           FIELD(neural.substrate_unit)));
     for (std::size_t i = first; i < t.size(); ++i) t[i].digest_at_default = false;
 }
 

@@ -92,6 +92,7 @@ void key_element(Node all, const SettingKey& k) {
     case ValueType::NameList: list_type(e, k, [&](Node l) { enumeration(l, all_spellings(k)); }); break;
     case ValueType::DoubleList: list_type(e, k, [&](Node l) { number_type(l, k, false); }); break;
     case ValueType::IntList: list_type(e, k, [&](Node l) { number_type(l, k, true); }); break;
+    case ValueType::PathList: list_type(e, k, [](Node l) { l.set_attribute("itemType", "xs:string"); }); break;
     }
 }
 

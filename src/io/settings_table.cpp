@@ -228,6 +228,34 @@ void gp_rows(std::vector<SettingKey>& t) {
                                       FIELD(gp.forest_depth)));
 }
 
+// Evolving for transfer (issue 55; docs/hypergp.md): several bodies in one
+// fitness, and a growing robot. Out of the digest at their defaults (one body),
+// so that older runs keep theirs.
+void transfer_rows(std::vector<SettingKey>& t) {
+    const std::size_t first = t.size();
+    t.push_back(path_list_row("Simulator", "extraRobotFiles",
+                              "Several bodies in one fitness (HyperGP, generational search): each genotype is also "
+                              "scored on these robot files, beside the robot, and its fitness is bodiesAggregate of "
+                              "the bodies' fitnesses; empty = the robot alone",
+                              FIELD(robot.extra_robot_files)));
+    t.push_back(enum_row<BodiesAggregate>(
+        "Simulator", "bodiesAggregate", {{BodiesAggregate::Mean, {"mean"}}, {BodiesAggregate::Min, {"min"}}},
+        "How the bodies' fitnesses (eq. 7.1 after any penalty) make one with extraRobotFiles: their mean or their "
+        "minimum",
+        FIELD(robot.bodies_aggregate)));
+    t.push_back(path_list_row("Simulator", "growRobotFiles",
+                              "A growing robot (HyperGP, generational search): the bodies after the robot, in "
+                              "order; the population moves to the next at each share of growAt and is evaluated "
+                              "again there; empty = one body for the whole run",
+                              FIELD(robot.grow_robot_files)));
+    t.push_back(double_list_row("Simulator", "growAt", Bounds{0.0, 1.0, true, false}, 0,
+                              "The shares of the budget (Control.maximumIterations) at which each body of "
+                              "growRobotFiles takes over, increasing, one per file: body k's first generation is "
+                              "ceil(share x maximumIterations), the population re-evaluated",
+                              FIELD(robot.grow_at)));
+    for (std::size_t i = first; i < t.size(); ++i) t[i].digest_at_default = false;
+}
+
 // Simulator: SimConfig's fields as sim::for_each_field describes them, with
 // the robot's keys where the thesis's files have them.
 void simulator_rows(std::vector<SettingKey>& t) {
@@ -245,6 +273,7 @@ void simulator_rows(std::vector<SettingKey>& t) {
                                 FIELD(robot.robot_type)));
             t.push_back(string_row("Simulator", "robotFile", ValueType::Path, true,
                                    "Robot description XML; overrides robot_type when set", FIELD(robot.robot_file)));
+            transfer_rows(t);
         }
         if (f.name == "step_divider")
             t.push_back(bool_row("Simulator", "generatePovrayFiles",

@@ -1,6 +1,7 @@
 // Cross-field checks of Settings, run once after all layers are applied.
 // Single-key checks (type, range) happen in the table's setters.
 #include "cic/core/error.hpp"
+#include "cic/io/bodies.hpp"
 #include "cic/io/emitter_names.hpp"
 #include "cic/io/experiment_types.hpp"
 #include "cic/io/settings_table.hpp"
@@ -41,13 +42,54 @@ private:
     const Locations& locs_;
 };
 
+// Evolving for transfer (io/bodies.hpp): several bodies, or a growing robot,
+// are built for the generational HyperGP search on whole bodies; anything else
+// is refused, not ignored.
+void check_bodies(const Settings& s, const Checker& c) {
+    const auto& r = s.robot;
+    c.require(!several_bodies(s) || !grows(s), {"Simulator.extraRobotFiles", "Simulator.growRobotFiles"},
+              "several bodies in one fitness and a growing robot do not combine (allowed: one of the two empty)");
+    const std::pair<const char*, bool> keys[] = {{"Simulator.extraRobotFiles", several_bodies(s)},
+                                                 {"Simulator.growRobotFiles", grows(s)}};
+    for (const auto& [key, given] : keys) {
+        if (!given) continue;
+        c.require(family_of(s) == ExperimentFamily::HyperGP, {key, "Experiment.type"},
+                  "other bodies score HyperGP genotypes, which fit any robot (allowed: a hypergp-family type)");
+        c.require(s.experiment.search == "auto" || s.experiment.search == "generational", {key, "Experiment.search"},
+                  "other bodies are built for the generational search (allowed: Experiment.search = auto | "
+                  "generational)");
+        c.require(!s.map_elites.enabled, {key, "MapElites.enabled"},
+                  "other bodies are built for the generational search, not MAP-Elites (allowed: MapElites.enabled = 0)");
+        c.require(!s.neural.switches(), {key, "Neural.switchPatience", "Neural.switchShare"},
+                  "Switch-HybrID's gait phase has one parameter per hinge of one robot (allowed: "
+                  "Neural.switchPatience = 0 and Neural.switchShare = 0)");
+        c.require(!s.neural.direct_offsets, {key, "Neural.directOffsets"},
+                  "Offset-HybrID's offsets are one per hinge of one robot (allowed: Neural.directOffsets = 0)");
+    }
+    c.require(r.grow_at.size() == r.grow_robot_files.size(), {"Simulator.growAt", "Simulator.growRobotFiles"},
+              "give one share of the budget per body of growRobotFiles (" + std::to_string(r.grow_robot_files.size()) +
+                  ")");
+    if (!grows(s) || r.grow_at.size() != r.grow_robot_files.size()) return;
+    int previous = 0;
+    for (std::size_t body = 1; body <= r.grow_at.size(); ++body) {
+        const int first = grow_generation(s, body);
+        c.require(first > previous && first < s.control.maximum_iterations,
+                  {"Simulator.growAt", "Control.maximumIterations"},
+                  "each body needs a generation of its own: body " + std::to_string(body) + " would start at generation " +
+                      std::to_string(first) + " (ceil(share x maximumIterations)), which must be after body " +
+                      std::to_string(body - 1) + "'s first (" + std::to_string(previous) +
+                      ") and before the last generation (" + std::to_string(s.control.maximum_iterations - 1) + ")");
+        previous = first;
+    }
+}
+
 } // namespace
 
 void validate(const Settings& s, const Locations& locs) {
     Checker c(s, locs);
     // Text goes into settings.xml and population files: refuse what XML cannot hold.
     for (const auto& k : settings_table())
-        if (k.type == ValueType::String || k.type == ValueType::Path)
+        if (k.type == ValueType::String || k.type == ValueType::Path || k.type == ValueType::PathList)
             if (auto why = xml::unholdable(k.get(s))) {
                 const std::string full = k.section + "." + k.key;
                 c.require(false, {full.c_str()}, "contains " + *why + ", which an XML file cannot hold");
@@ -145,6 +187,8 @@ void validate(const Settings& s, const Locations& locs) {
         c.require(s.gait.population_size <= s.gait.evaluations, {"Gait.populationSize", "Gait.evaluations"},
                   "the budget does not cover one generation");
     }
+
+    check_bodies(s, c);
 
     c.require(s.symreg.range_min < s.symreg.range_max,
               {"SymbolicRegression.rangeMin", "SymbolicRegression.rangeMax"}, "the sampled range is empty");

@@ -390,7 +390,9 @@ std::vector<ReplayItem> replay(const std::string& source, const std::string& ind
         if (chosen.empty()) throw InputError(fmt::format("no individual with id {} in this population", id), src.population.string());
     }
 
-    const hypergp::Model model = hypergp::Model::from_settings(settings);
+    // A growing robot's population is replayed on the body it was evaluated on;
+    // with several bodies, on the robot alone (its eq. 7.1, beside the aggregate).
+    const hypergp::Model model = hypergp::Model::from_settings(settings).on_body(pop.body.value_or(0));
     std::vector<ReplayItem> items;
     for (const auto& ind : chosen) {
         ReplayItem item = replay_trees(model, settings, ind->genotype, ind->direct, fps, trace);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <iterator>
 
 #include <fmt/format.h>
@@ -18,6 +19,18 @@ bool same_file_contents(const std::filesystem::path& a, const std::filesystem::p
     std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
     if (!fa || !fb) return false;
     return std::string(std::istreambuf_iterator<char>(fa), {}) == std::string(std::istreambuf_iterator<char>(fb), {});
+}
+
+// Two path lists naming files of the same bytes, item by item.
+bool same_files_contents(const std::string& a, const std::string& b) {
+    std::istringstream ia(a), ib(b);
+    std::string x, y;
+    while (true) {
+        const bool more_a = static_cast<bool>(ia >> x), more_b = static_cast<bool>(ib >> y);
+        if (more_a != more_b) return false;
+        if (!more_a) return true;
+        if (x != y && !same_file_contents(x, y)) return false;
+    }
 }
 
 } // namespace
@@ -36,7 +49,9 @@ std::vector<std::string> settings_differences(const io::Settings& ran_settings, 
     std::vector<std::string> out;
     for (const auto& k : io::settings_table()) {
         const std::string a = k.get(ran), b = k.get(asked);
-        if (io::same_result(k, a, b) || (k.type == io::ValueType::Path && same_file_contents(a, b))) continue;
+        if (io::same_result(k, a, b) || (k.type == io::ValueType::Path && same_file_contents(a, b)) ||
+            (k.type == io::ValueType::PathList && same_files_contents(a, b)))
+            continue;
         out.push_back(fmt::format("{}.{}: ran '{}', {} asks '{}'", k.section, k.key, a, asker, b));
     }
     return out;

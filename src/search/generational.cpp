@@ -13,6 +13,7 @@
 
 #include "cic/core/error.hpp"
 #include "cic/experiments/hypergp/model.hpp"
+#include "cic/io/bodies.hpp"
 #include "cic/io/checkpoint_origin.hpp"
 #include "cic/io/experiment_types.hpp"
 #include "cic/report/replay.hpp"
@@ -37,6 +38,25 @@ void check_direct_offsets(const io::PopulationFile& loaded, const io::Settings& 
                                      loaded.offset_limit, want.limit), file);
 }
 
+// A growing robot's checkpoint names its body (io/bodies.hpp): the one its
+// generation is evaluated on under these settings.
+void check_body(const io::PopulationFile& loaded, const io::Settings& s, const std::string& file) {
+    if (!io::grows(s)) {
+        if (loaded.body)
+            throw InputError("population is of a growing robot (<body>), but these settings have one body "
+                             "(Simulator.growRobotFiles is empty); use the settings it was made with", file);
+        return;
+    }
+    const std::size_t want = io::body_of_generation(s, loaded.population.generation);
+    if (!loaded.body || *loaded.body != want)
+        throw InputError(fmt::format("population at generation {} is on body {}, but these settings' growing robot "
+                                     "(Simulator.growRobotFiles, growAt) is on body {} there; use the settings it "
+                                     "was made with",
+                                     loaded.population.generation,
+                                     loaded.body ? std::to_string(*loaded.body) : std::string("(none given)"), want),
+                         file);
+}
+
 } // namespace
 
 void PopulationCheckpoint::check_goes_on(const io::Settings& s) const {
@@ -54,6 +74,7 @@ std::unique_ptr<PopulationCheckpoint> load_population_checkpoint(const io::Setti
     c->evaluations = c->population.state.evaluations;
     io::check_compatible(c->population, s, file);
     check_direct_offsets(c->population, s, file);
+    check_body(c->population, s, file);
     return c;
 }
 
@@ -89,6 +110,8 @@ std::optional<Row> Generational::start() {
                               header_.experiment, state.seed, workers, workers == 1 ? "" : "s",
                               services_.run_dir.string()));
     experiment_ = experiments::make_experiment(services_.context);
+    body_ = io::body_of_generation(s, population ? population->generation : 0);   // the checkpoint's, checked
+    if (body_ != 0) experiment_->use_body(body_);
     gp_.direct = experiment_->direct_genes();   // Offset-HybrID's offsets, else none
     header_.offsets = gp_.direct.count;
     header_.offset_limit = gp_.direct.count > 0 ? gp_.direct.limit : 0.0;
@@ -159,11 +182,29 @@ CheckpointText Generational::checkpoint() const {
     io::PopulationFile file = header_;
     file.population = generations_->population();
     file.state = generations_->state();
+    if (io::grows(services_.settings)) file.body = body_;
     if (hooks_.annotate) hooks_.annotate(file);
     return {file.population.generation, io::to_xml(file)};
 }
 
 Row Generational::step() {
+    // A growing robot moves to its next body at the generation its share of
+    // the budget gives (io/bodies.hpp): that generation is the population
+    // evaluated again there, no breeding, so the change costs one generation
+    // of the budget and the stored fitness is always the current body's.
+    const int next = generations_->population().generation + 1;
+    if (const std::size_t body = io::body_of_generation(services_.settings, next); body != body_) {
+        body_ = body;
+        experiment_->use_body(body);
+        const long before = generations_->state().evaluations;
+        generations_->reevaluate();
+        services_.say(fmt::format("generation {}: the robot grows to body {} ({}): the population is evaluated "
+                                  "again there, {} evaluations",
+                                  next, body, services_.settings.robot.grow_robot_files[body - 1],
+                                  generations_->state().evaluations - before));
+        record_ = generations_->record(maximum_iterations_);
+        return row_of(record_);
+    }
     generations_->step();
     record_ = generations_->record(maximum_iterations_);
     return row_of(record_);

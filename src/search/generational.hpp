@@ -72,6 +72,7 @@ private:
     bool first_check_ = true;
     long evaluations_before_ = 0;
     int first_generation_ = 0;
+    std::size_t body_ = 0;   // a growing robot's current body (io/bodies.hpp); 0 = the robot
 };
 
 } // namespace cic::search

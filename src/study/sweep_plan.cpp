@@ -27,8 +27,14 @@ std::string resolved_path(const std::string& value, const fs::path& folder) {
 
 std::string xml_value(const std::string& v) { return io::xml::trim(v); }
 
-bool is_scalar(const io::SettingKey& k) {
-    return k.type != io::ValueType::NameList && k.type != io::ValueType::DoubleList && k.type != io::ValueType::IntList;
+bool is_scalar(const io::SettingKey& k) { return !io::is_list(k.type); }
+
+// Each item of a path list resolved as a path value is.
+std::string resolved_paths(const std::string& value, const fs::path& folder) {
+    std::string out;
+    std::istringstream items(value);
+    for (std::string item; items >> item;) out += (out.empty() ? "" : " ") + resolved_path(item, folder);
+    return out;
 }
 
 // "Section.key=value" naming a real key, a path value resolved. A scalar value
@@ -57,6 +63,7 @@ std::string checked_override(const io::xml::Node& n, const std::string& text, co
         }
     }
     if (k->type == io::ValueType::Path) return text.substr(0, eq + 1) + resolved_path(text.substr(eq + 1), folder);
+    if (k->type == io::ValueType::PathList) return text.substr(0, eq + 1) + resolved_paths(value, folder);
     return text;
 }
 

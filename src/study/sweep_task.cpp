@@ -258,6 +258,13 @@ std::string path_fingerprint(const std::string& path) {
     return "bytes " + hex16(fnv1a_64(std::string(std::istreambuf_iterator<char>(in), {})));
 }
 
+std::string paths_fingerprint(const std::string& paths) {
+    std::string out;
+    std::istringstream items(paths);
+    for (std::string item; items >> item;) out += (out.empty() ? "" : " ") + path_fingerprint(item);
+    return out;
+}
+
 // The fingerprint of a run: cic's version and every key whose value differs
 // from its default, but for those that change no result (the run's name,
 // output folder, worker count, resume file). Keys at their defaults are left
@@ -269,7 +276,11 @@ std::string run_fingerprint(const io::Settings& settings) {
     std::string text = std::string("cic ") + CIC_VERSION + "\n";
     for (const auto& k : io::settings_table())
         if (const std::string v = k.get(s); !io::computes_as_default(k, v))
-            text += k.section + "." + k.key + "=" + (k.type == io::ValueType::Path ? path_fingerprint(v) : v) + "\n";
+            text += k.section + "." + k.key + "=" + (k.type == io::ValueType::Path       ? path_fingerprint(v)
+                                                     : k.type == io::ValueType::PathList ? paths_fingerprint(v)
+                                                                                         : v) +
+                    "
+";
     return hex16(fnv1a_64(text));
 }
 

@@ -2,10 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "cic/core/error.hpp"
 #include "cic/experiments/hypergp/substrate_geometry.hpp"
+#include "cic/sim/centipede.hpp"
 
 using cic::nn::Point;
 using cic::sim::Axis;
@@ -66,4 +68,50 @@ TEST(SubstrateGeometry, BadRobotsThrow) {
     r = small_robot();
     r.modules[3].cell = r.modules[1].cell;   // overlapping cells
     EXPECT_THROW(cic::hypergp::substrate_geometry(r), cic::InputError);
+}
+
+// Neural.substrateLayout absolute: cells from the centre module over
+// substrateUnit, whatever the body's size; the default is the normalised layout.
+TEST(SubstrateGeometry, AbsoluteLayoutCountsCellsFromTheCentreModule) {
+    cic::nn::NeuralConfig cfg;
+    EXPECT_EQ(cfg.substrate_layout, cic::nn::SubstrateLayout::Normalised);
+    EXPECT_EQ(cic::hypergp::substrate_geometry(small_robot(), cfg).joints,
+              cic::hypergp::substrate_geometry(small_robot()).joints);
+    cfg.substrate_layout = cic::nn::SubstrateLayout::Absolute;
+    cfg.substrate_unit = 2.0;
+    auto r = small_robot();
+    const auto g = cic::hypergp::substrate_geometry(r, cfg);
+    EXPECT_EQ(g.joints, (std::vector<Point>{{0.5, 0}, {1, 0}}));
+    EXPECT_EQ(g.hidden, (std::vector<Point>{{0, 0}, {0.5, 0}, {0, 0.5}, {1, 0}}));
+    for (auto& m : r.modules) m.cell.x += 5;   // the whole body moved: no neuron moves
+    EXPECT_EQ(cic::hypergp::substrate_geometry(r, cfg).joints, g.joints);
+    cfg.substrate_unit = 0.0;
+    EXPECT_THROW(cic::hypergp::substrate_geometry(r, cfg), std::invalid_argument);
+}
+
+// A bigger centipede keeps its legs' spacing in the absolute layout (and is
+// queried past [-1, 1]), where the normalised layout squeezes them; mirrored
+// legs keep exactly opposite coordinates in both.
+TEST(SubstrateGeometry, AbsoluteLayoutKeepsTheSpacingOfABiggerBody) {
+    cic::nn::NeuralConfig absolute;
+    absolute.substrate_layout = cic::nn::SubstrateLayout::Absolute;
+    absolute.substrate_unit = 3.0;
+    auto spacing = [](const cic::nn::Geometry& g) {   // the smallest y step between two joints
+        double step = 1e9;
+        for (const auto& a : g.joints)
+            for (const auto& b : g.joints)
+                if (a.y != b.y) step = std::min(step, std::abs(a.y - b.y));
+        return step;
+    };
+    const auto small = cic::sim::centipede(2, false), big = cic::sim::centipede(8, false);
+    EXPECT_EQ(spacing(cic::hypergp::substrate_geometry(small, absolute)),
+              spacing(cic::hypergp::substrate_geometry(big, absolute)));
+    EXPECT_GT(spacing(cic::hypergp::substrate_geometry(small)), spacing(cic::hypergp::substrate_geometry(big)));
+    const auto g = cic::hypergp::substrate_geometry(big, absolute);
+    double reach = 0;
+    for (const auto& p : g.hidden) {
+        reach = std::max(reach, std::abs(p.y));
+        EXPECT_NE(std::find(g.hidden.begin(), g.hidden.end(), Point{-p.x, p.y}), g.hidden.end());
+    }
+    EXPECT_GT(reach, 1.0);
 }

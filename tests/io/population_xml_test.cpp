@@ -256,6 +256,18 @@ TEST(PopulationXml, IncompatibleSettingsAreRefused) {
     }
 }
 
+// A growing robot's body (io/bodies.hpp): <body index>, only when given.
+TEST(PopulationXml, AGrowingRobotsBodyRoundTrips) {
+    PopulationFile p = sample();
+    EXPECT_EQ(to_xml(p).find("<body"), std::string::npos);
+    EXPECT_FALSE(parse_population(to_xml(p), "p.xml").body.has_value());
+    p.body = 2;
+    const PopulationFile back = parse_population(to_xml(p), "p.xml");
+    ASSERT_TRUE(back.body.has_value());
+    EXPECT_EQ(*back.body, 2u);
+    EXPECT_EQ(to_xml(back), to_xml(p));
+}
+
 } // namespace
 } // namespace cic::io
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "cic/core/job_runner.hpp"
@@ -44,6 +45,12 @@ public:
     // Genes the genotype holds beside its trees (gp::GpConfig::direct): none
     // unless the experiment reads some (HyperGP-gait's Neural.directOffsets).
     virtual gp::DirectGenes direct_genes() const { return {}; }
+    // A growing robot (Simulator.growRobotFiles, io/bodies.hpp): evaluate on
+    // body `body` (0 = the robot) from now on. Only types whose settings may
+    // grow (the hypergp family; settings validation refuses the others) are asked.
+    virtual void use_body(std::size_t body) {
+        if (body != 0) throw std::logic_error("this experiment type has one body");
+    }
 };
 
 std::unique_ptr<Experiment> make_experiment(const Context& ctx);

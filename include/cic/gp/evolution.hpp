@@ -129,6 +129,10 @@ public:
     void filter(Population& pop, EvolutionState& st, std::span<const std::size_t> slots);
     // Heavy variants may lower the limit; marks individuals over it illegal.
     void end_generation(Population& pop, EvolutionState& st);
+    // The problem changed (Generations::reevaluate): the best so far is the
+    // re-evaluated population's best, since older fitness is not comparable;
+    // the limit stays.
+    void restart_best(const Population& evaluated, EvolutionState& st) const;
 private:
     const GpConfig& gp_;
     const BloatConfig& cfg_;
@@ -171,6 +175,11 @@ public:
     // The current generation's record (its failed count taken: call once per generation).
     GenerationRecord record(int max_generations);
     void step();
+    // Instead of a step, when the evaluator's problem has changed (a growing
+    // robot's next body): the next generation is this population unchanged,
+    // every individual evaluated again (counted in the evaluations), with
+    // Dynamic Limits' best so far restarted from it. Uses no random numbers.
+    void reevaluate();
     const Population& population() const { return pop_; }
     const EvolutionState& state() const { return state_; }
     // The population and state, moved out: the object is spent.

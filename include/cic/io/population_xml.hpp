@@ -36,6 +36,9 @@ struct PopulationFile {
         int best_generation = 0;
     };
     std::optional<SwitchClock> switch_clock;
+    // A growing robot's body this population is evaluated on (io/bodies.hpp):
+    // <body index>, in the files of a growing run only.
+    std::optional<std::size_t> body;
     // Where it came from (checkpoint_origin.hpp); none in files written before origins.
     std::optional<CheckpointOrigin> origin;
     std::map<std::uint64_t, int> lines;   // individual id -> line of its <individual> (files read)

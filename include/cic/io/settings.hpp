@@ -6,6 +6,7 @@
 #include <map>
 #include <utility>
 #include <string>
+#include <vector>
 
 #include "cic/gp/config.hpp"
 #include "cic/nn/config.hpp"
@@ -34,10 +35,24 @@ struct ControlConfig {
     bool autonomous = true;              // isAutonomousExperiment; 0 shows the best at the end
 };
 
+// How the fitnesses of several bodies make one (Simulator.bodiesAggregate).
+enum class BodiesAggregate { Mean, Min };
+
 struct RobotConfig {
     int robot_type = 1;                  // 0, 1, 2 (R0, R1, R2)
     std::string robot_file;              // overrides robot_type when set
     bool generate_povray = false;        // generatePovrayFiles
+    // Evolving for transfer (issue 55; docs/hypergp.md, "Evolving for
+    // transfer"). The defaults keep one body for the whole run.
+    // Several bodies in one fitness: each genotype is scored on the robot and
+    // on each of these, and the fitnesses (eq. 7.1 after any penalty) combine
+    // by bodies_aggregate.
+    std::vector<std::string> extra_robot_files;
+    BodiesAggregate bodies_aggregate = BodiesAggregate::Mean;
+    // A growing robot: the bodies after the robot, in order; body k takes over
+    // once the share grow_at[k-1] of the budget is spent (io/bodies.hpp).
+    std::vector<std::string> grow_robot_files;
+    std::vector<double> grow_at;
 };
 
 // Settings of the symbolic-regression experiment (thesis 6.2.1); plain data

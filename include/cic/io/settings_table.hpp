@@ -26,7 +26,14 @@ enum class ValueType {
     NameList,    // space-separated names from `choices`, no duplicates
     DoubleList,  // space-separated numbers, each within [min, max]
     IntList,     // space-separated integers, each within [min, max]
+    PathList,    // space-separated file paths (none with spaces), each resolved as a Path
 };
+
+// Whether a value of this type is a space-separated list of items.
+constexpr bool is_list(ValueType t) {
+    return t == ValueType::NameList || t == ValueType::DoubleList || t == ValueType::IntList ||
+           t == ValueType::PathList;
+}
 
 std::string_view type_name(ValueType t);
 

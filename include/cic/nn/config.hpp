@@ -12,6 +12,9 @@ inline constexpr int kSynapseTypes = 5;
 enum class WeightRule { Raw, Scaled };          // raw CPPF value, or SharpNEAT-style rescale to +-max_weight
 enum class NeuronModel { Tanh, Integrating };   // thesis eq. 7.2-7.3
 enum class OscillationPenalty { None, Frequency, CommandChange };
+// Where the substrate's neurons sit (Neural.substrateLayout; the HyperGP
+// experiments compute the geometry, experiments/hypergp/substrate_geometry.hpp).
+enum class SubstrateLayout { Normalised, Absolute };
 
 struct NeuralConfig {
     double threshold = 0.2;                 // synopsisThreshold: |w| < threshold -> no synapse
@@ -56,6 +59,11 @@ struct NeuralConfig {
     int switch_patience = 0;
     double switch_share = 0.0;
     bool switches() const { return switch_patience > 0 || switch_share > 0; }
+    // Normalised: the robot's bounding box onto [-1, 1] per axis (the
+    // thesis's); Absolute: cells from the robot's centre module divided by
+    // substrate_unit, so the coordinates do not depend on the body's size.
+    SubstrateLayout substrate_layout = SubstrateLayout::Normalised;
+    double substrate_unit = 3.0;   // cells per unit, for Absolute
 };
 
 } // namespace cic::nn

@@ -23,9 +23,19 @@ struct Model {
     sim::RobotSpec robot;
     sim::SimConfig sim;
     nn::NeuralConfig neural;
+    // Several bodies in one fitness (Simulator.extraRobotFiles; bodies.hpp):
+    // the bodies scored beside `robot`, and how their fitnesses make one.
+    std::vector<sim::RobotSpec> extra_robots;
+    io::BodiesAggregate aggregate = io::BodiesAggregate::Mean;
+    // A growing robot (Simulator.growRobotFiles): the bodies after `robot`.
+    std::vector<sim::RobotSpec> grow_robots;
 
-    // The robot file if set, otherwise the robot_type preset with useMiddleLegs.
+    // The robot file if set, otherwise the robot_type preset with useMiddleLegs;
+    // the other bodies from their files.
     static Model from_settings(const io::Settings& s);
+    // This model on body `body` of a growing robot (0 = `robot`): its robot is
+    // that body. Throws std::out_of_range past the last body.
+    Model on_body(std::size_t body) const;
 };
 
 struct Outcome {
@@ -36,6 +46,9 @@ struct Outcome {
     std::size_t synapses = 0;       // the controller's connections (controller.hpp)
     sim::EvalResult result;         // recording / trace when asked for
     ControlRecord control;          // raw outputs and commands when asked for
+    // Several bodies (Model::extra_robots): each body's fitness, the robot
+    // first; `fitness` is their aggregate, the other fields the robot's.
+    std::vector<double> body_fitness;
 };
 
 // Every input a HyperGP run reads, checked before the run starts: the robot
@@ -66,17 +79,19 @@ void check_offsets(const Model& m, std::span<const double> offsets, const std::s
 
 // Worker protocol: the job body is the trees, one S-expression per line, then,
 // with direct offsets, a line "offsets D1 D2 ..." (shortest round-trip
-// decimals: the exact doubles), and, for MAP-Elites, a last line
-// "descriptor NAME"; the reply is sim's evaluation
+// decimals: the exact doubles), on a growing robot's later bodies a line
+// "body K" (K >= 1, Model::on_body; absent = body 0), and, for MAP-Elites, a
+// last line "descriptor NAME"; the reply is sim's evaluation
 // reply (sim/job_text.hpp), the same for every runner, with the descriptor's
 // values when one was asked for.
 struct Job {
     tree::Forest genotype;
     std::vector<double> offsets;
+    std::size_t body = 0;
     sim::Descriptor descriptor = sim::Descriptor::None;
 };
 std::string job_body(const tree::Forest& genotype, sim::Descriptor descriptor = sim::Descriptor::None,
-                     std::span<const double> offsets = {});
+                     std::span<const double> offsets = {}, std::size_t body = 0);
 Job parse_job_body(const std::string& body);   // throws std::invalid_argument
 // The reply of an evaluation of `m`'s robot: eq. 7.1's terms come from the walk,
 // whatever score the fitness is.
@@ -102,6 +117,13 @@ sim::EvalOptions options_for(const WalkNeeds& needs, sim::Descriptor descriptor 
 // fails it with the failure fitness); leaves eq. 7.1 when `score` is empty.
 // The worker jobs and every replay (view, assess, trace, Python's simulate) call it.
 void apply_score(Outcome& o, const Score& score, const Model& m, const io::Settings& s);
+
+// One job as a worker evaluates it, `m` being the model of its body
+// (Model::on_body(job.body)): run, scored by `score`, and with extra bodies
+// on each of them alike, the fitnesses aggregated (bodies.hpp). Replays of
+// one body call run() instead.
+Outcome evaluate_job(const Model& m, const io::Settings& s, const Job& job, const Score& score = {},
+                     const WalkNeeds& needs = {});
 
 // The "hypergp" job kind of a worker (and a registered type's, with its own
 // `score`): `settings` is called once, on the first job (a worker reads the

@@ -1,6 +1,7 @@
 #pragma once
 // Robot description -> substrate geometry (thesis 3.3, fig. 3.1): the neurons
 // sit where the modules are, so any robot file gets a matching network.
+#include "cic/nn/config.hpp"
 #include "cic/nn/geometry.hpp"
 #include "cic/sim/robot.hpp"
 
@@ -16,5 +17,10 @@ namespace cic::hypergp {
 // Throws cic::InputError (via RobotSpec::validate) for an invalid robot and
 // std::invalid_argument for a robot without actuated modules.
 nn::Geometry substrate_geometry(const sim::RobotSpec& robot);
+// The same in the layout Neural.substrateLayout names: normalised (the above,
+// the default) or absolute: (x - x_c, y - y_c) / substrateUnit, cells counted
+// from the robot's centre module c, so that a bigger body keeps the spacing
+// between neighbouring legs and is queried beyond the smaller one's range.
+nn::Geometry substrate_geometry(const sim::RobotSpec& robot, const nn::NeuralConfig& cfg);
 
 } // namespace cic::hypergp
