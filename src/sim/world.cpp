@@ -169,21 +169,27 @@ void World::collect_callback(void* data, dGeomID a, dGeomID b) {
 
 // Sweep: the simple space's own pairs, found without testing every pair. The
 // ground goes first, through the simple space as with kCollisionSimple (that
-// also brings every geom's bounding box up to date). Then each robot geom's box
-// is swept along the axis where the boxes' centres spread most; a pair whose
-// boxes overlap on all three axes (bounds touching count, as in ODE's
+// also brings every geom's bounding box up to date). Then the robot geoms'
+// boxes are swept along the axis where the boxes' centres spread most; a pair
+// whose boxes overlap on all three axes (bounds touching count, as in ODE's
 // collideAABBs) on two bodies is a candidate, exactly the pairs the simple
 // space would offer. They are called back in the simple space's order: by
-// their place in its geom list, the earlier geom first.
+// their place in its geom list (which ODE reorders as bodies move), the
+// earlier geom first. Every step is linear in the geoms and pairs: the sweep
+// order is last step's, repaired by insertion, and the pairs are put in order
+// by counting on their first rank.
 void World::sweep_self_pairs() {
     const int n = dSpaceGetNumGeoms(robot_space_);
-    boxes_.resize(static_cast<std::size_t>(n));
+    boxes_.resize(geoms_.size());
+    by_rank_.resize(static_cast<std::size_t>(n));
     double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
     for (int i = 0; i < n; ++i) {
-        Box& b = boxes_[static_cast<std::size_t>(i)];
-        b.geom = dSpaceGetGeom(robot_space_, i);
+        const dGeomID g = dSpaceGetGeom(robot_space_, i);
+        Box& b = boxes_[reinterpret_cast<std::uintptr_t>(dGeomGetData(g)) - 1];
+        b.geom = g;
         b.rank = i;
-        dGeomGetAABB(b.geom, b.aabb.data());
+        by_rank_[static_cast<std::size_t>(i)] = g;
+        dGeomGetAABB(g, b.aabb.data());
         for (int k = 0; k < 3; ++k) {
             const double c = 0.5 * (b.aabb[2 * k] + b.aabb[2 * k + 1]);
             lo[k] = std::min(lo[k], c);
@@ -193,32 +199,67 @@ void World::sweep_self_pairs() {
     int axis = 0;
     for (int k = 1; k < 3; ++k)
         if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
-    std::sort(boxes_.begin(), boxes_.end(), [axis](const Box& a, const Box& b) {
-        return a.aabb[2 * axis] < b.aabb[2 * axis] || (a.aabb[2 * axis] == b.aabb[2 * axis] && a.rank < b.rank);
-    });
-    pairs_.clear();
-    for (std::size_t i = 0; i < boxes_.size(); ++i) {
-        const Box& a = boxes_[i];
-        for (std::size_t j = i + 1; j < boxes_.size() && !(boxes_[j].aabb[2 * axis] > a.aabb[2 * axis + 1]); ++j) {
-            const Box& b = boxes_[j];
+    sort_sweep_order(axis);
+
+    // Any order by lower bound finds every overlapping pair: the later box of a
+    // pair starts inside the earlier one's extent along the axis.
+    rank_pairs_.clear();
+    const std::size_t count = sweep_order_.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        const Box& a = boxes_[static_cast<std::size_t>(sweep_order_[i])];
+        for (std::size_t j = i + 1; j < count; ++j) {
+            const Box& b = boxes_[static_cast<std::size_t>(sweep_order_[j])];
+            if (b.aabb[2 * axis] > a.aabb[2 * axis + 1]) break;
             bool overlap = true;
             for (int k = 0; k < 3 && overlap; ++k)
                 overlap = !(a.aabb[2 * k] > b.aabb[2 * k + 1] || a.aabb[2 * k + 1] < b.aabb[2 * k]);
             if (!overlap) continue;
             const dBodyID ba = dGeomGetBody(a.geom), bb = dGeomGetBody(b.geom);
             if (ba == bb && ba) continue;
-            if (a.rank < b.rank) pairs_.emplace_back(a.geom, b.geom);
-            else pairs_.emplace_back(b.geom, a.geom);
+            rank_pairs_.emplace_back(std::min(a.rank, b.rank), std::max(a.rank, b.rank));
         }
     }
-    rank_.resize(geoms_.size());
-    for (const Box& b : boxes_) rank_[reinterpret_cast<std::uintptr_t>(dGeomGetData(b.geom)) - 1] = b.rank;
-    const auto rank_of = [this](dGeomID g) { return rank_[reinterpret_cast<std::uintptr_t>(dGeomGetData(g)) - 1]; };
-    std::sort(pairs_.begin(), pairs_.end(), [&rank_of](const auto& p, const auto& q) {
-        const int pa = rank_of(p.first), qa = rank_of(q.first);
-        return pa != qa ? pa < qa : rank_of(p.second) < rank_of(q.second);
-    });
-    for (const auto& [a, b] : pairs_) self_callback(this, a, b);
+    // Counting sort on the first rank; then insertion sort, which only moves a
+    // pair within its (short) run of one first rank, orders by the second.
+    const auto at = [](auto& v, int i) -> auto& { return v[static_cast<std::size_t>(i)]; };
+    pair_start_.assign(static_cast<std::size_t>(n) + 1, 0);
+    for (const auto& p : rank_pairs_) ++at(pair_start_, p.first + 1);
+    for (int r = 0; r < n; ++r) at(pair_start_, r + 1) += at(pair_start_, r);
+    sorted_pairs_.resize(rank_pairs_.size());
+    for (const auto& p : rank_pairs_) at(sorted_pairs_, at(pair_start_, p.first)++) = p;
+    for (std::size_t i = 1; i < sorted_pairs_.size(); ++i)
+        for (std::size_t j = i; j > 0 && sorted_pairs_[j] < sorted_pairs_[j - 1]; --j)
+            std::swap(sorted_pairs_[j], sorted_pairs_[j - 1]);
+    for (const auto& [first, second] : sorted_pairs_) self_callback(this, at(by_rank_, first), at(by_rank_, second));
+}
+
+// Layout geoms by lower bound along `axis`: last step's order repaired by
+// insertion (bodies move a few millimetres per step, so it is nearly sorted),
+// from scratch when the axis changes or the repair grows long.
+void World::sort_sweep_order(int axis) {
+    const auto low = [this, axis](int g) { return boxes_[static_cast<std::size_t>(g)].aabb[2 * axis]; };
+    const auto by_low = [&low](int a, int b) { return low(a) < low(b); };
+    if (axis != sweep_axis_ || sweep_order_.size() != boxes_.size()) {
+        sweep_order_.resize(boxes_.size());
+        for (std::size_t g = 0; g < sweep_order_.size(); ++g) sweep_order_[g] = static_cast<int>(g);
+        std::sort(sweep_order_.begin(), sweep_order_.end(), by_low);
+        sweep_axis_ = axis;
+        return;
+    }
+    std::size_t moves = 0;
+    const std::size_t budget = 8 * sweep_order_.size();
+    for (std::size_t i = 1; i < sweep_order_.size(); ++i) {
+        const int g = sweep_order_[i];
+        const double v = low(g);
+        std::size_t j = i;
+        for (; j > 0 && low(sweep_order_[j - 1]) > v; --j) sweep_order_[j] = sweep_order_[j - 1];
+        sweep_order_[j] = g;
+        moves += i - j;
+        if (moves > budget) {
+            std::sort(sweep_order_.begin(), sweep_order_.end(), by_low);
+            return;
+        }
+    }
 }
 
 // Sap: the space only finds the candidate pairs; they are sorted and handed to

@@ -67,15 +67,25 @@ private:
     int max_contacts_ = 4;
     bool self_collision_ = true;
     int collision_space_ = kCollisionSimple;
-    // Sweep and sap: the candidate pairs of one step, before they are put in order.
+    // Sap: the candidate pairs of one step, before they are put in order.
     std::vector<std::pair<dGeomID, dGeomID>> pairs_;
     std::vector<int> rank_;            // per layout geom: its place in the order pairs are sorted by
-    struct Box {                       // sweep: a geom's bounding box and place in the space's list
+    // Sweep: per layout geom, its bounding box and place (rank) in the space's
+    // list; the geoms kept sorted along the sweep axis from one step to the
+    // next (they move little per step, so re-sorting is about linear); the
+    // candidate pairs as ranks, earlier first, and their start per first rank.
+    struct Box {
         std::array<dReal, 6> aabb;
         dGeomID geom;
         int rank;
     };
     std::vector<Box> boxes_;
+    std::vector<int> sweep_order_;
+    int sweep_axis_ = -1;
+    std::vector<dGeomID> by_rank_;
+    std::vector<std::pair<int, int>> rank_pairs_, sorted_pairs_;
+    std::vector<int> pair_start_;
+    void sort_sweep_order(int axis);
     // Body pairs joined by a hinge (key: lower index << 32 | higher), so that a
     // pair of geoms is checked in constant time: ODE's dAreConnectedExcluding
     // walks a body's joint list, and a centipede's torso carries 2P hinges.
