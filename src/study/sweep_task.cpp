@@ -279,8 +279,7 @@ std::string run_fingerprint(const io::Settings& settings) {
             text += k.section + "." + k.key + "=" + (k.type == io::ValueType::Path       ? path_fingerprint(v)
                                                      : k.type == io::ValueType::PathList ? paths_fingerprint(v)
                                                                                          : v) +
-                    "
-";
+                    "\n";
     return hex16(fnv1a_64(text));
 }
 
