@@ -177,30 +177,37 @@ def report():
     for r in read_csv(SCRATCH):
         scratch.setdefault((r["study"].replace("compare-", ""), r["config"]), []).append(float(r["raw_fitness"]))
     raw = read_csv(RAW)
-    cells = {}
+    groups = {}
     for r in raw:
-        src = r["study"].replace("source-", "")
-        cells.setdefault((src, r["target"], int(r["hinges"])), {}).setdefault(r["config"], []).append(r)
+        groups.setdefault((r["study"], r["config"], r["target"], int(r["hinges"])), []).append(r)
     lines = ["# Zero-shot transfer (issue 55)", "",
              "Written by `scripts/transfer.py report` from `zero-shot-raw.csv` (each finished source run's best",
              "genotype replayed unchanged by `cic transfer`: HyperGP-gait's trees queried at the bigger body's",
              "substrate, the best direct method's gait tiled leg pair by leg pair). Raw eq. 7.1, m. *Share*: the",
              "cell's median over the from-scratch median at the target size (issue 38's comparison, seeds 1..10,",
-             "2,500 evaluations; — where no from-scratch runs exist). The test: HyperGP-gait transferred against",
-             "the tiled direct gait, two-sided Mann-Whitney U with Holm over every row, A12 (the chance a",
-             "HyperGP-gait genotype walks farther) and the ratio of medians, bootstrap 95 % intervals.", "",
-             "| evolved on | target | hinges | HyperGP-gait n | median | IQR | walking | share of scratch HyperGP-gait "
+             "2,500 evaluations; — where no from-scratch runs exist). The test: the transferred HyperGP genotypes",
+             "against the tiled direct gait evolved on the same small robot (centipede-2 for the several-bodies",
+             "and absolute-layout sources), two-sided Mann-Whitney U with Holm over every row, A12 (the chance a",
+             "HyperGP genotype walks farther) and the ratio of medians, bootstrap 95 % intervals.", "",
+             "| evolved | target | hinges | n | median | IQR | walking | share of scratch HyperGP-gait "
              "| share of scratch direct | tiled direct median | p | p (Holm) | A12 [95 %] | ratio [95 %] | verdict |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     rows, ps = [], []
-    for (src, target, hinges), by in sorted(cells.items(), key=lambda kv: (kv[0][0], kv[0][2], kv[0][1])):
-        h = [float(r["raw_fitness"]) for r in by.get("hypergp-gait", [])]
-        d = [float(r["raw_fitness"]) for r in by.get("direct.sepcmaes-s0.15", [])]
+    for (study, config, target, hinges), hr in sorted(groups.items(), key=lambda kv: (kv[0][0], kv[0][1], kv[0][3],
+                                                                                      kv[0][2])):
+        if config == "direct.sepcmaes-s0.15":
+            continue
+        base = "source-centipede-2" if study == "source-bodies" else study
+        label = {"hypergp-gait": base.replace("source-", "") + ", HyperGP-gait",
+                 "bodies-mean": "centipede-2 + centipede-4 (mean), HyperGP-gait",
+                 "absolute": "centipede-2, HyperGP-gait, absolute layout"}.get(config, f"{study} {config}")
+        h = [float(r["raw_fitness"]) for r in hr]
+        d = [float(r["raw_fitness"]) for r in groups.get((base, "direct.sepcmaes-s0.15", target, hinges), [])]
         p = ss.mann_whitney_p(h, d) if len(h) > 1 and len(d) > 1 else None
-        rows.append((src, target, hinges, h, d, by.get("hypergp-gait", [])))
+        rows.append((label, target, hinges, h, d, hr))
         ps.append(p)
     holm = ss.holm(ps)
-    for (src, target, hinges, h, d, hr), p, ph in zip(rows, ps, holm):
+    for (label, target, hinges, h, d, hr), p, ph in zip(rows, ps, holm):
         sh = scratch.get((target, "hypergp-gait"))
         sd = scratch.get((target, "direct.sepcmaes-s0.15"))
         mh = st.median(h) if h else None
@@ -211,13 +218,13 @@ def report():
             rl, rh = ratio_interval(h, d) if st.median(d) > 0 else (None, None)
             a_text = f"{a:.2f} [{lo:.2f}, {hi:.2f}]"
             r_text = f"{mh / st.median(d):.2f} [{f2(rl)}, {f2(rh)}]" if st.median(d) > 0 else "—"
-            verdict = ("no difference shown at n = %d" % len(h)) if ph >= 0.05 else \
-                ("HyperGP-gait farther" if mh > st.median(d) else "tiled direct farther")
+            verdict = ("no difference shown at n = %d and %d" % (len(h), len(d))) if ph >= 0.05 else \
+                ("HyperGP farther" if mh > st.median(d) else "tiled direct farther")
         else:
             a_text = r_text = "—"
             verdict = "runs to go"
         q = ss.quartiles(h) if h else None
-        lines.append(f"| {src} | {target} | {hinges} | {len(h)} | {f2(mh)} | "
+        lines.append(f"| {label} | {target} | {hinges} | {len(h)} | {f2(mh)} | "
                      f"{'[%s, %s]' % (f2(q[0]), f2(q[1])) if q else '—'} | {walking} of {len(h)} | "
                      f"{f2(mh / st.median(sh)) if h and sh else '—'} | {f2(mh / st.median(sd)) if h and sd else '—'} | "
                      f"{f2(st.median(d)) if d else '—'} | {pval(p)} | {pval(ph)} | {a_text} | {r_text} | {verdict} |")

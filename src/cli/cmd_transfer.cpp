@@ -91,7 +91,7 @@ void add_transfer_command(Command& app, CommandContext& ctx) {
             for (const auto& src : sources) {
                 report::TransferTarget own;
                 own.robot = src.robot;
-                own.file = src.settings.robot.robot_file;
+                own.file = src.robot_file;
                 own.preset = src.settings.robot.robot_type;
                 own.middle_legs = src.settings.neural.middle_legs;
                 std::vector<report::TransferTarget> all{own};

@@ -85,6 +85,7 @@ RunGenotype read_run_genotype(const std::string& run_dir, SwitchPhase phase) {
     RunGenotype g;
     g.run = run_dir;
     g.settings = io::read_settings(dir / "settings.xml");
+    g.robot_file = g.settings.robot.robot_file;
     const io::Settings& s = g.settings;
     if (!io::walks_a_robot(s))
         throw InputError("a symbolic-regression run: only robot runs have a genotype to walk", run_dir);
@@ -103,7 +104,10 @@ RunGenotype read_run_genotype(const std::string& run_dir, SwitchPhase phase) {
     if (pop.population.individuals.empty()) throw InputError("the population is empty", checkpoint.string());
     const auto best = *std::min_element(pop.population.individuals.begin(), pop.population.individuals.end(),
                                         [](const auto& a, const auto& b) { return gp::better(*a, *b); });
-    g.robot = hypergp::Model::from_settings(s).robot;
+    // A growing robot's population was last scored on the body its checkpoint names.
+    const std::size_t body = pop.body.value_or(0);
+    g.robot = hypergp::Model::from_settings(s).on_body(body).robot;
+    if (body > 0) g.robot_file = s.robot.grow_robot_files.at(body - 1);
     g.trees = best->genotype;
     g.offsets = best->direct;
     g.stored_fitness = best->fitness;

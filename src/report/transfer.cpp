@@ -145,6 +145,10 @@ ReplayItem replay_transferred(const TransferSource& source, const TransferTarget
                               double fps, bool trace, std::string* how) {
     io::Settings s = source.settings;
     s.robot.robot_file = target.file;
+    // One body: the target alone (not the source run's other bodies or growth schedule).
+    s.robot.extra_robot_files.clear();
+    s.robot.grow_robot_files.clear();
+    s.robot.grow_at.clear();
     if (target.file.empty()) {
         if (target.preset < 0 || target.preset > 2)
             throw std::invalid_argument("replay_transferred: a target without a file needs a preset 0..2");

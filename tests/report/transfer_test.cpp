@@ -131,7 +131,7 @@ TEST_F(TransferReplay, TreesGiveTheirOwnFitnessAndTheTargetsBits) {
                                                    "--set Control.maximumIterations=2 --set GP.generatedPopulationSize=8");
     const report::TransferSource src = report::read_transfer_source(r.string());
     ASSERT_FALSE(src.trees.empty());
-    report::TransferTarget own{src.robot, src.settings.robot.robot_file};
+    report::TransferTarget own{src.robot, src.robot_file};
     const auto home = report::replay_transferred(src, own, report::OffsetRule::Interpolate, 0, false);
     EXPECT_EQ(home.replayed_fitness, src.stored_fitness);
 
@@ -152,7 +152,7 @@ TEST_F(TransferReplay, DirectGaitIsTiled) {
     const fs::path r = run("r1_gait_ipop.xml", "--set Gait.evaluations=24");
     const report::TransferSource src = report::read_transfer_source(r.string());
     ASSERT_TRUE(src.trees.empty());
-    report::TransferTarget own{src.robot, src.settings.robot.robot_file};
+    report::TransferTarget own{src.robot, src.robot_file};
     EXPECT_EQ(report::replay_transferred(src, own, report::OffsetRule::None, 0, false).replayed_fitness,
               src.stored_fitness);
     report::TransferTarget big{io::read_robot_file(robot_file("centipede-4.xml")),
@@ -230,7 +230,24 @@ TEST_F(TransferReplay, SwitchHybridGivesItsHyperGpPhasesTrees) {
     EXPECT_NE(src.what.find("Switch-HybrID's HyperGP phase"), std::string::npos) << src.what;
     // The gait it went on with is what the run's latest genotype is.
     EXPECT_TRUE(report::read_run_genotype(r.string(), report::SwitchPhase::Latest).trees.empty());
-    report::TransferTarget own{src.robot, src.settings.robot.robot_file};
+    report::TransferTarget own{src.robot, src.robot_file};
     EXPECT_EQ(report::replay_transferred(src, own, report::OffsetRule::None, 0, false).replayed_fitness,
               src.stored_fitness);
+}
+
+// A genotype evolved on several bodies walks the target alone: not the mean
+// with the run's other body.
+TEST_F(TransferReplay, SeveralBodiesRunWalksTheTargetAlone) {
+    const fs::path r = run("r1_switch_hybrid.xml", "--set Neural.switchPatience=0 --set Neural.switchShare=0 "
+                                                   "--set Control.maximumIterations=2 --set GP.generatedPopulationSize=6 "
+                                                   "--set Simulator.extraRobotFiles=" +
+                                                       robot_file("centipede-4.xml").string());
+    const report::TransferSource src = report::read_transfer_source(r.string());
+    report::TransferTarget big{io::read_robot_file(robot_file("centipede-8.xml")),
+                               robot_file("centipede-8.xml").string()};
+    const auto there = report::replay_transferred(src, big, report::OffsetRule::None, 0, false);
+    io::Settings s = src.settings;
+    s.robot.robot_file = big.file;
+    s.robot.extra_robot_files.clear();
+    EXPECT_EQ(there.replayed_fitness, hypergp::run(hypergp::Model::from_settings(s), src.trees).fitness);
 }

@@ -20,7 +20,8 @@ enum class SwitchPhase { Latest, HyperGP };
 struct RunGenotype {
     std::string run;                // as given
     io::Settings settings;          // the run's own
-    sim::RobotSpec robot;           // the robot it was evolved on
+    sim::RobotSpec robot;           // the robot it was evolved on (a growing run's current body)
+    std::string robot_file;         // that robot's file; empty for a preset (settings' robot_type)
     tree::Forest trees;             // HyperGP trees; empty for a direct gait
     std::vector<double> offsets;    // Offset-HybrID's direct genes beside the trees; empty otherwise
     std::vector<double> gait;       // a direct gait as the run stored it (its layout); empty beside trees
