@@ -132,7 +132,8 @@ def zero_shot():
     """`cic transfer` of every finished source run, cached by (study, config, seed, best_ever)."""
     cache = read_csv(RAW)
     have = {(r["study"], r["config"], r["seed"], r["best_ever"]) for r in cache}
-    for r in ledger().values():
+    # Seed by seed, every method of a seed together: an interrupted pass leaves comparable cells.
+    for r in sorted(ledger().values(), key=lambda r: (r["study"], int(r["seed"]), r["config"])):
         key = (r["study"], r["config"], r["seed"], r["best_ever"])
         if not r["study"].startswith("source-") or r["status"] != "done" or key in have:
             continue
