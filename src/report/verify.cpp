@@ -58,7 +58,12 @@ public:
             return c;
         }
         if (io::walks_a_robot(s_)) {
-            if (!model_) model_.emplace(hypergp::Model::from_settings(s_));
+            // A growing robot's population was scored on the body its checkpoint names.
+            const std::size_t body = pop.body.value_or(0);
+            if (!model_ || body_ != body) {
+                model_.emplace(hypergp::Model::from_settings(s_).on_body(body));
+                body_ = body;
+            }
             c.replayed = detail::replay_trees(*model_, s_, ind.genotype, ind.direct, 0.0, false).replayed_fitness;
             return c;
         }
@@ -80,6 +85,7 @@ private:
     const io::Settings& s_;
     std::string file_;
     std::optional<hypergp::Model> model_;
+    std::size_t body_ = 0;   // the body model_ walks
     std::unique_ptr<experiments::Context> context_;
     std::unique_ptr<experiments::Experiment> experiment_;
 };
