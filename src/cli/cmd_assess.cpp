@@ -40,16 +40,7 @@ void add_assess_command(Command& app, CommandContext& ctx) {
             csv << "input,fitness,dominant_hz,mean_height,min_height,final_up,flipped,shaking,raw_fitness,distance,"
                    "elevation,verdict,duty_factors\n";
             // A study folder (index.csv) stands for its finished runs, as in plot, export and compare.
-            std::vector<std::string> inputs;
-            for (const std::string& input : opts->inputs) {
-                if (!report::is_study_folder(input)) {
-                    inputs.push_back(input);
-                    continue;
-                }
-                const report::StudyIndex index = report::read_study_index(input);
-                for (const report::StudyRun& run : index.runs)
-                    if (run.status == "done") inputs.push_back(index.run_path(run).string());
-            }
+            const std::vector<std::string> inputs = report::finished_runs_of(opts->inputs);
             for (const std::string& input : inputs) {
                 const auto items = report::replay(input, opts->cell.empty() ? "best" : "cell:" + opts->cell, 1, 10.0, true);
                 if (const auto& item = items.at(0); item.replayed_fitness != item.stored_fitness)

@@ -73,16 +73,7 @@ void add_transfer_command(Command& app, CommandContext& ctx) {
             const auto rule = opts->offsets == "none" ? report::OffsetRule::None : report::OffsetRule::Interpolate;
             std::vector<report::TransferTarget> targets;
             for (const auto& r : opts->robots) targets.push_back(target_named(r));   // all checked before any replay
-            std::vector<std::string> inputs;
-            for (const std::string& input : opts->inputs) {
-                if (!report::is_study_folder(input)) {
-                    inputs.push_back(input);
-                    continue;
-                }
-                const report::StudyIndex index = report::read_study_index(input);
-                for (const report::StudyRun& run : index.runs)
-                    if (run.status == "done") inputs.push_back(index.run_path(run).string());
-            }
+            const std::vector<std::string> inputs = report::finished_runs_of(opts->inputs);
             std::vector<report::TransferSource> sources;
             for (const auto& input : inputs) sources.push_back(report::read_transfer_source(input));
             std::ostringstream csv;

@@ -197,6 +197,20 @@ bool is_study_folder(const std::filesystem::path& path) {
     return std::filesystem::is_directory(path, ec) && std::filesystem::is_regular_file(path / "index.csv", ec);
 }
 
+std::vector<std::string> finished_runs_of(const std::vector<std::string>& inputs) {
+    std::vector<std::string> out;
+    for (const std::string& input : inputs) {
+        if (!is_study_folder(input)) {
+            out.push_back(input);
+            continue;
+        }
+        const StudyIndex index = read_study_index(input);
+        for (const StudyRun& run : index.runs)
+            if (run.status == "done") out.push_back(index.run_path(run).string());
+    }
+    return out;
+}
+
 std::vector<std::filesystem::path> runs_missing_from_index(const StudyIndex& index) {
     namespace fs = std::filesystem;
     std::set<fs::path> listed;

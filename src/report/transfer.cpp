@@ -67,19 +67,23 @@ std::map<std::tuple<int, int>, ByRow> by_place(const std::vector<Place>& ps, con
     return out;
 }
 
-// Where a row lies along the body, normalised to [-1, 1] over the robot's
+// Where rows lie along the body, normalised to [-1, 1] over the robot's
 // extent along the preferred axis (the substrate's normalisation).
-double along(const sim::RobotSpec& r, int row) {
+struct Along {
     int lo = 0, hi = 0;
-    bool first = true;
-    for (const auto& m : r.modules) {
-        const int v = r.preferred == sim::Axis::Y ? m.cell.y : m.cell.x;
-        lo = first ? v : std::min(lo, v);
-        hi = first ? v : std::max(hi, v);
-        first = false;
+    explicit Along(const sim::RobotSpec& r) {
+        bool first = true;
+        for (const auto& m : r.modules) {
+            const int v = r.preferred == sim::Axis::Y ? m.cell.y : m.cell.x;
+            lo = first ? v : std::min(lo, v);
+            hi = first ? v : std::max(hi, v);
+            first = false;
+        }
     }
-    return hi == lo ? 0.0 : static_cast<double>(2 * row - lo - hi) / static_cast<double>(hi - lo);
-}
+    double operator()(int row) const {
+        return hi == lo ? 0.0 : static_cast<double>(2 * row - lo - hi) / static_cast<double>(hi - lo);
+    }
+};
 
 const ByRow& counterparts(const std::map<std::tuple<int, int>, ByRow>& source, const sim::RobotSpec& target,
                           std::size_t joint, const Place& p, const sim::RobotSpec& source_robot) {
@@ -117,13 +121,14 @@ std::vector<JointBlend> interpolate_joints(const sim::RobotSpec& source, const s
     const auto sp = places(source), tp = places(target);
     const auto srows = rows_of(sp);
     const auto src = by_place(sp, srows);
+    const Along along_source(source), along_target(target);
     std::vector<JointBlend> out;
     for (std::size_t j = 0; j < tp.size(); ++j) {
         const ByRow& rows = counterparts(src, target, j, tp[j], source);
-        const double u = along(target, tp[j].row);
+        const double u = along_target(tp[j].row);
         // The source hinges at this place, by where they lie along the body.
         std::vector<std::pair<double, std::size_t>> line;
-        for (const auto& [row, joint] : rows) line.emplace_back(along(source, srows[row]), joint);
+        for (const auto& [row, joint] : rows) line.emplace_back(along_source(srows[row]), joint);
         JointBlend b;
         if (u <= line.front().first) {
             b.a = b.b = line.front().second;

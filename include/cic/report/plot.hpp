@@ -86,6 +86,9 @@ struct StudyIndex {
 };
 // A folder that holds an index.csv.
 bool is_study_folder(const std::filesystem::path& path);
+// The inputs with each study folder replaced by its finished runs (status
+// done), as assess and transfer take them; other inputs as they are.
+std::vector<std::string> finished_runs_of(const std::vector<std::string>& inputs);
 // Reads STUDY/index.csv; columns are found by name. Throws cic::InputError with
 // the file and line: missing file or column, a wrong number of cells, an unknown
 // status, a non-numeric number cell, an empty run_dir or config.
